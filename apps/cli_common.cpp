@@ -1,0 +1,83 @@
+#include "cli_common.hpp"
+
+#include <algorithm>
+#include <iostream>
+#include <map>
+
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/cmml.hpp"
+#include "foldkit/io/fold_format.hpp"
+#include "foldkit/io/pmml.hpp"
+#include "foldkit/io/svg.hpp"
+
+namespace foldkit::apps {
+
+FileKind kind_of(const std::string& path) {
+  const auto dot = path.rfind('.');
+  if (dot == std::string::npos) return FileKind::Unknown;
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == "pmml") return FileKind::Pmml;
+  if (ext == "cmml") return FileKind::Cmml;
+  if (ext == "fold") return FileKind::Fold;
+  if (ext == "svg") return FileKind::Svg;
+  return FileKind::Unknown;
+}
+
+LoadedPattern load_pattern(const std::string& path, const geometry::BuildOptions& options) {
+  switch (kind_of(path)) {
+    case FileKind::Pmml: return {io::read_pmml(path, options), std::nullopt, {}};
+    case FileKind::Fold: {
+      io::FoldImport f = io::read_fold(path, options);
+      return {std::move(f.pattern), std::move(f.state), std::move(f.warnings)};
+    }
+    default: throw UsageError(path + ": a crease pattern must be a .pmml or .fold file");
+  }
+}
+
+void save_pattern(const std::string& path, const geometry::CreasePattern& pattern,
+                  const std::optional<geometry::FoldState>& state, bool joint_ids) {
+  std::string text;
+  switch (kind_of(path)) {
+    case FileKind::Pmml: text = io::write_pmml(pattern); break;
+    case FileKind::Fold: text = io::write_fold(pattern, {state, {}}); break;
+    case FileKind::Svg: {
+      io::SvgOptions svg;
+      svg.joint_ids = joint_ids;
+      svg.state = state ? &*state : nullptr;
+      text = io::write_svg(pattern, svg);
+      break;
+    }
+    case FileKind::Cmml:
+      if (!state) throw UsageError(path + ": a .cmml output needs fold angles, and this input has none");
+      text = io::write_cmml(geometry::sequence_to(pattern, *state, 30.0 * M_PI / 180.0, pattern.title()));
+      break;
+    case FileKind::Unknown: throw UsageError(path + ": unknown output type (use .pmml, .cmml, .fold or .svg)");
+  }
+  io::write_file_atomic(path, text);
+}
+
+void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; }
+
+nlohmann::json pattern_summary(const geometry::CreasePattern& p) {
+  std::size_t triangles = 0;
+  for (const auto& a : p.actors()) triangles += a.triangles.size();
+  std::map<std::size_t, int> degrees;
+  for (const auto& star : p.interior_vertices()) ++degrees[star.joints.size()];
+  nlohmann::json degree_json = nlohmann::json::object();
+  for (const auto& [d, n] : degrees) degree_json[std::to_string(d)] = n;
+  Eigen::AlignedBox2d box;
+  for (const auto& v : p.vertices()) box.extend(v);
+  return {{"title", p.title()},
+          {"actors", p.actors().size()},
+          {"joints", p.joints().size()},
+          {"triangles", triangles},
+          {"vertices", p.vertices().size()},
+          {"interior_vertices", p.vertices().size() - p.boundary_vertex_count()},
+          {"boundary_vertices", p.boundary_vertex_count()},
+          {"boundary_edges", p.boundary_edges().size()},
+          {"interior_vertex_degrees", degree_json},
+          {"bounds", {{box.min().x(), box.min().y()}, {box.max().x(), box.max().y()}}}};
+}
+
+}  // namespace foldkit::apps

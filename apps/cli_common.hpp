@@ -1,0 +1,55 @@
+#pragma once
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "foldkit/geometry/crease_pattern.hpp"
+#include "foldkit/geometry/fold_sequence.hpp"
+
+namespace foldkit::apps {
+
+// Exit codes of DEVELOPERS.md.
+enum Exit : int { kOk = 0, kInvalidInput = 1, kUsage = 2, kInvalidSequence = 3, kNoPlan = 4 };
+
+// A subcommand and what runs when it was chosen; run() returns the exit code.
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+Command add_validate(CLI::App& root);
+Command add_info(CLI::App& root);
+Command add_generate(CLI::App& root);
+Command add_convert(CLI::App& root);
+Command add_demo(CLI::App& root);
+
+// Usage errors (bad parameters the parser could not catch) are thrown as UsageError → exit 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+enum class FileKind { Pmml, Cmml, Fold, Svg, Unknown };
+FileKind kind_of(const std::string& path);
+
+// A crease pattern from .pmml or .fold (throws ParseError; UsageError for other extensions).
+struct LoadedPattern {
+  geometry::CreasePattern pattern;
+  std::optional<geometry::FoldState> state;  // fold angles a FOLD file carried
+  geometry::Diagnostics warnings;
+};
+LoadedPattern load_pattern(const std::string& path, const geometry::BuildOptions& options = {});
+
+// Writes by the extension of `path` (.pmml, .fold, .svg; .cmml needs a state), atomically.
+void save_pattern(const std::string& path, const geometry::CreasePattern& pattern,
+                  const std::optional<geometry::FoldState>& state = std::nullopt, bool joint_ids = false);
+
+// One JSON object on stdout.
+void print_json(const nlohmann::json& j);
+
+// Facts `foldkit info` reports, shared with the demo.
+nlohmann::json pattern_summary(const geometry::CreasePattern& pattern);
+
+}  // namespace foldkit::apps

@@ -1,0 +1,65 @@
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/cmml.hpp"
+#include "foldkit/io/fold_format.hpp"
+#include "foldkit/io/parse_error.hpp"
+#include "foldkit/io/svg.hpp"
+
+namespace foldkit::apps {
+namespace {
+
+struct Options {
+  std::string input, output, pattern;
+  bool joint_ids = false;
+};
+
+// A CMML is meaningful only with its pattern: FOLD gets one frame per event, SVG the end state.
+int convert_sequence(const Options& opt) {
+  if (opt.pattern.empty()) throw UsageError("converting a .cmml needs --pattern PMML");
+  const geometry::CreasePattern pattern = load_pattern(opt.pattern).pattern;
+  const geometry::FoldSequence seq = io::read_cmml(opt.input);
+  const geometry::Diagnostics problems = geometry::check_sequence(pattern, seq);
+  if (geometry::has_errors(problems)) {
+    for (const auto& d : problems) std::cerr << geometry::format(d, opt.input) << '\n';
+    return kInvalidInput;
+  }
+  std::vector<geometry::FoldState> states = geometry::event_states(pattern, seq);
+  switch (kind_of(opt.output)) {
+    case FileKind::Cmml: io::write_file_atomic(opt.output, io::write_cmml(seq)); break;
+    case FileKind::Fold: {
+      io::FoldExport extra;
+      extra.state = states.back();
+      extra.frames.assign(states.begin() + 1, states.end());
+      io::write_file_atomic(opt.output, io::write_fold(pattern, extra));
+      break;
+    }
+    case FileKind::Svg: save_pattern(opt.output, pattern, states.back(), opt.joint_ids); break;
+    default: throw UsageError(opt.output + ": a .cmml converts to .cmml, .fold or .svg");
+  }
+  return kOk;
+}
+
+int run(const Options& opt) {
+  if (kind_of(opt.input) == FileKind::Cmml) return convert_sequence(opt);
+  LoadedPattern loaded = load_pattern(opt.input);
+  for (const auto& w : loaded.warnings) std::cerr << geometry::format(w, opt.input) << '\n';
+  save_pattern(opt.output, loaded.pattern, loaded.state, opt.joint_ids);
+  std::cerr << opt.input << " -> " << opt.output << '\n';
+  return kOk;
+}
+
+}  // namespace
+
+Command add_convert(CLI::App& root) {
+  auto opt = std::make_shared<Options>();
+  CLI::App* app = root.add_subcommand("convert", "Convert between .pmml, .cmml, .fold and .svg by file extension");
+  app->add_option("input", opt->input, "Input file (.pmml, .fold, or .cmml with --pattern)")->required();
+  app->add_option("output", opt->output, "Output file (.pmml, .cmml, .fold or .svg)")->required();
+  app->add_option("--pattern", opt->pattern, "The crease pattern a .cmml input folds");
+  app->add_flag("--joint-ids", opt->joint_ids, "Label joints with their IDs in SVG output");
+  return {app, [opt] { return run(*opt); }};
+}
+
+}  // namespace foldkit::apps

@@ -1,0 +1,97 @@
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/cmml.hpp"
+#include "foldkit/io/fold_format.hpp"
+#include "foldkit/io/parse_error.hpp"
+#include "foldkit/io/pmml.hpp"
+
+namespace foldkit::apps {
+namespace {
+
+using geometry::Diagnostic;
+using geometry::Diagnostics;
+using geometry::Severity;
+
+struct Options {
+  std::vector<std::string> files;
+  std::string pattern;
+  bool auto_joints = false;
+  bool json = false;
+};
+
+// Every finding about one file; a ParseError stops the reading of that file only.
+Diagnostics check_file(const std::string& path, const Options& opt, const std::optional<geometry::CreasePattern>& pattern,
+                       std::string& summary) {
+  geometry::BuildOptions build;
+  build.auto_joints = opt.auto_joints;
+  try {
+    switch (kind_of(path)) {
+      case FileKind::Pmml: {
+        geometry::BuildResult r = geometry::build_pattern(io::read_pmml_spec(path), build);
+        if (r.pattern)
+          summary = std::to_string(r.pattern->actors().size()) + " actors, " + std::to_string(r.pattern->joints().size()) +
+                    " joints";
+        return r.diagnostics;
+      }
+      case FileKind::Cmml: {
+        const geometry::FoldSequence seq = io::read_cmml(path);
+        std::size_t folds = 0;
+        for (const auto& e : seq.events) folds += e.folds.size();
+        summary = std::to_string(seq.events.size()) + " events, " + std::to_string(folds) + " folds";
+        if (!pattern) {
+          summary += " (not checked against a pattern: give --pattern)";
+          return {};
+        }
+        return geometry::check_sequence(*pattern, seq);
+      }
+      case FileKind::Fold: {
+        io::FoldImport f = io::read_fold(path, build);
+        summary = std::to_string(f.pattern.actors().size()) + " actors, " + std::to_string(f.pattern.joints().size()) +
+                  " joints";
+        return f.warnings;
+      }
+      default:
+        return {{Severity::Error, 0, "unknown file type (expected .pmml, .cmml or .fold)"}};
+    }
+  } catch (const io::ParseError& e) {
+    return {{Severity::Error, e.line(), e.message()}};
+  }
+}
+
+int run(const Options& opt) {
+  std::optional<geometry::CreasePattern> pattern;
+  if (!opt.pattern.empty()) pattern = load_pattern(opt.pattern).pattern;
+  bool all_ok = true;
+  nlohmann::json files = nlohmann::json::array();
+  for (const std::string& path : opt.files) {
+    std::string summary;
+    const Diagnostics found = check_file(path, opt, pattern, summary);
+    const bool ok = !geometry::has_errors(found);
+    all_ok = all_ok && ok;
+    nlohmann::json errors = nlohmann::json::array(), warnings = nlohmann::json::array();
+    for (const Diagnostic& d : found) {
+      std::cerr << geometry::format(d, path) << '\n';
+      (d.severity == Severity::Error ? errors : warnings).push_back({{"line", d.line}, {"message", d.message}});
+    }
+    if (ok) std::cerr << path << ": ok" << (summary.empty() ? "" : " (" + summary + ")") << '\n';
+    files.push_back({{"file", path}, {"ok", ok}, {"errors", errors}, {"warnings", warnings}});
+  }
+  if (opt.json) print_json({{"ok", all_ok}, {"files", files}});
+  return all_ok ? kOk : kInvalidInput;
+}
+
+}  // namespace
+
+Command add_validate(CLI::App& root) {
+  auto opt = std::make_shared<Options>();
+  CLI::App* app = root.add_subcommand("validate", "Check PMML, CMML and FOLD files; print every problem as FILE:LINE: message");
+  app->add_option("files", opt->files, "Files to check (.pmml, .cmml, .fold)")->required();
+  app->add_option("--pattern", opt->pattern, "Crease pattern (.pmml or .fold) to check CMML files against");
+  app->add_flag("--auto-joints", opt->auto_joints, "Treat an edge shared by two actors without a joint as a joint");
+  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  return {app, [opt] { return run(*opt); }};
+}
+
+}  // namespace foldkit::apps

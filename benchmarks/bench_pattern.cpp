@@ -1,0 +1,55 @@
+// Loading a crease pattern: what `foldkit info` does, and the overlap check inside it side by
+// side with the all-pairs check a plain implementation would run.
+#include <benchmark/benchmark.h>
+
+#include "foldkit/geometry/generators.hpp"
+#include "foldkit/geometry/triangle_overlap.hpp"
+#include "foldkit/io/pmml.hpp"
+
+namespace {
+
+using namespace foldkit;
+
+geometry::PatternSpec miura(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  return geometry::generators::miura(n, n);
+}
+
+std::vector<geometry::Tri2> triangles_of(const geometry::PatternSpec& spec) {
+  std::vector<geometry::Tri2> tris;
+  for (const auto& a : spec.actors)
+    for (const auto& t : a.triangles) tris.push_back(t.corners);
+  return tris;
+}
+
+void BM_ParseAndBuildPmml(benchmark::State& state) {
+  const std::string text = io::write_pmml(miura(state));
+  for (auto _ : state) {
+    auto built = geometry::build_pattern(io::parse_pmml(text, "miura.pmml"));
+    benchmark::DoNotOptimize(built.pattern);
+  }
+  state.counters["actors"] = static_cast<double>(state.range(0) * state.range(0));
+}
+BENCHMARK(BM_ParseAndBuildPmml)->Arg(10)->Arg(20)->Arg(40)->Arg(100)->Unit(benchmark::kMillisecond);
+
+void BM_Overlap_RTree(benchmark::State& state) {
+  const auto tris = triangles_of(miura(state));
+  for (auto _ : state) benchmark::DoNotOptimize(geometry::overlapping_pairs(tris, 1e-9));
+}
+BENCHMARK(BM_Overlap_RTree)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMillisecond);
+
+// The generic way: test every pair of triangles.
+void BM_Overlap_AllPairs(benchmark::State& state) {
+  const auto tris = triangles_of(miura(state));
+  for (auto _ : state) {
+    std::size_t found = 0;
+    for (std::size_t i = 0; i < tris.size(); ++i)
+      for (std::size_t j = i + 1; j < tris.size(); ++j) found += geometry::triangles_overlap(tris[i], tris[j], 1e-9);
+    benchmark::DoNotOptimize(found);
+  }
+}
+BENCHMARK(BM_Overlap_AllPairs)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,64 @@
+#include "foldkit/geometry/fold_sequence.hpp"
+
+#include <algorithm>
+#include <map>
+#include <unordered_map>
+
+namespace foldkit::geometry {
+
+FoldSequence make_sequence(std::string title, std::vector<std::pair<int, FoldCommand>> numbered_folds) {
+  std::map<int, FoldEvent> events;
+  for (auto& [number, fold] : numbered_folds) {
+    FoldEvent& e = events[number];
+    e.number = number;
+    e.folds.push_back(fold);
+  }
+  FoldSequence seq{std::move(title), {}};
+  for (auto& [number, e] : events) seq.events.push_back(std::move(e));
+  return seq;
+}
+
+Diagnostics check_sequence(const CreasePattern& pattern, const FoldSequence& sequence) {
+  Diagnostics out;
+  for (const FoldEvent& e : sequence.events) {
+    std::unordered_map<int, int> seen;
+    for (const FoldCommand& f : e.folds) {
+      if (!pattern.joint_index(f.joint_id))
+        out.push_back({Severity::Error, f.line, "fold names joint " + std::to_string(f.joint_id) + ", which the pattern does not have"});
+      auto [it, fresh] = seen.emplace(f.joint_id, f.line);
+      if (!fresh)
+        out.push_back({Severity::Error, f.line,
+                       "joint " + std::to_string(f.joint_id) + " is folded twice in event " + std::to_string(e.number) +
+                           " (also at line " + std::to_string(it->second) + ")"});
+    }
+  }
+  return out;
+}
+
+std::vector<FoldState> event_states(const CreasePattern& pattern, const FoldSequence& sequence) {
+  std::vector<FoldState> states{FoldState::flat(pattern)};
+  for (const FoldEvent& e : sequence.events) {
+    FoldState next = states.back();
+    for (const FoldCommand& f : e.folds)
+      if (auto j = pattern.joint_index(f.joint_id)) next.angles[*j] = f.angle;
+    states.push_back(std::move(next));
+  }
+  return states;
+}
+
+FoldState end_state(const CreasePattern& pattern, const FoldSequence& sequence) {
+  return event_states(pattern, sequence).back();
+}
+
+FoldSequence sequence_to(const CreasePattern& pattern, const FoldState& state, double velocity, std::string title) {
+  FoldSequence seq{std::move(title), {}};
+  FoldEvent event{1, {}};
+  for (std::size_t j = 0; j < pattern.joints().size(); ++j) {
+    const double angle = state.angles[static_cast<Eigen::Index>(j)];
+    if (angle != 0.0) event.folds.push_back({pattern.joints()[j].id, angle, velocity, 0});
+  }
+  if (!event.folds.empty()) seq.events.push_back(std::move(event));
+  return seq;
+}
+
+}  // namespace foldkit::geometry

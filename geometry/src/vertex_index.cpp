@@ -1,0 +1,26 @@
+#include "vertex_index.hpp"
+
+namespace foldkit::geometry::detail {
+
+std::optional<int> VertexIndex::find(const Vec2& p) const {
+  std::optional<int> best;
+  double best_d = tolerance_;
+  for (auto it = tree_.qbegin(bgi::intersects(box_around(p, tolerance_))); it != tree_.qend(); ++it) {
+    const double d = (points_[it->second] - p).norm();
+    if (d <= best_d) {
+      best_d = d;
+      best = it->second;
+    }
+  }
+  return best;
+}
+
+int VertexIndex::insert(const Vec2& p) {
+  if (auto found = find(p)) return *found;
+  const int id = static_cast<int>(points_.size());
+  points_.push_back(p);
+  tree_.insert({BPoint(p.x(), p.y()), id});
+  return id;
+}
+
+}  // namespace foldkit::geometry::detail

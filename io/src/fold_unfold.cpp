@@ -1,0 +1,297 @@
+#include "fold_unfold.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <unordered_map>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+namespace foldkit::io::fold_detail {
+namespace {
+
+std::uint64_t side_key(int a, int b) {
+  const auto lo = static_cast<std::uint32_t>(std::min(a, b));
+  const auto hi = static_cast<std::uint32_t>(std::max(a, b));
+  return (std::uint64_t{lo} << 32U) | hi;
+}
+
+double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+double orient(const Vec2& a, const Vec2& b, const Vec2& c) { return cross2(b - a, c - a); }
+
+// Rigid motion of the plane (no reflection: faces keep their orientation).
+struct Motion {
+  Eigen::Matrix2d rotation = Eigen::Matrix2d::Identity();
+  Vec2 translation = Vec2::Zero();
+  Vec2 operator()(const Vec2& p) const { return rotation * p + translation; }
+};
+
+// Carries segment (la, lb) onto (pa, pb); midpoints coincide so that a small length mismatch
+// is split between both ends instead of piling up at one.
+Motion align(const Vec2& la, const Vec2& lb, const Vec2& pa, const Vec2& pb) {
+  const Vec2 dl = lb - la;
+  const Vec2 dp = pb - pa;
+  const double angle = std::atan2(dp.y(), dp.x()) - std::atan2(dl.y(), dl.x());
+  Motion m;
+  m.rotation = Eigen::Rotation2Dd(angle).toRotationMatrix();
+  m.translation = 0.5 * (pa + pb) - m.rotation * (0.5 * (la + lb));
+  return m;
+}
+
+std::string vertex_text(int v) { return "vertex " + std::to_string(v); }
+
+}  // namespace
+
+Vec3 newell_normal(const std::vector<Vec3>& points, const Face& face) {
+  Vec3 n = Vec3::Zero();
+  const std::size_t k = face.size();
+  for (std::size_t i = 0; i < k; ++i) n += points[face[i]].cross(points[face[(i + 1) % k]]);
+  return n;
+}
+
+double signed_area(const std::vector<Vec2>& points, const Face& face) {
+  double twice = 0.0;
+  const std::size_t k = face.size();
+  for (std::size_t i = 0; i < k; ++i) twice += cross2(points[face[i]], points[face[(i + 1) % k]]);
+  return 0.5 * twice;
+}
+
+std::array<Vec3, 2> in_plane_basis(const Vec3& unit_normal) {
+  Vec3 u = Vec3::UnitX() - Vec3::UnitX().dot(unit_normal) * unit_normal;
+  if (u.norm() < 1e-6) u = Vec3::UnitY() - Vec3::UnitY().dot(unit_normal) * unit_normal;
+  u.normalize();
+  return {u, unit_normal.cross(u)};
+}
+
+Plane fit_plane(const std::vector<Vec3>& points) {
+  Plane plane;
+  if (points.empty()) return plane;
+  Vec3 centroid = Vec3::Zero();
+  for (const Vec3& p : points) centroid += p;
+  centroid /= static_cast<double>(points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : points) covariance += (p - centroid) * (p - centroid).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  plane.normal = solver.eigenvectors().col(0).normalized();  // eigenvalues ascend
+  const auto basis = in_plane_basis(plane.normal);
+  plane.u = basis[0];
+  plane.v = basis[1];
+  for (const Vec3& p : points)
+    plane.max_distance = std::max(plane.max_distance, std::abs((p - centroid).dot(plane.normal)));
+  return plane;
+}
+
+Plane flipped(const Plane& plane) {
+  Plane f = plane;
+  f.normal = -plane.normal;
+  const auto basis = in_plane_basis(f.normal);
+  f.u = basis[0];
+  f.v = basis[1];
+  return f;
+}
+
+double dihedral(const Vec3& n1, const Vec3& n2, const Vec3& e) {
+  return std::atan2(n1.cross(n2).dot(e), n1.dot(n2));
+}
+
+Unfolding unfold(const std::vector<Vec3>& points, const std::vector<Face>& faces, double tolerance) {
+  Unfolding out;
+  out.coords.assign(points.size(), Vec2::Zero());
+  if (faces.empty()) return out;
+
+  std::unordered_map<std::uint64_t, std::vector<int>> faces_by_side;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const Face& face = faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i)
+      faces_by_side[side_key(face[i], face[(i + 1) % face.size()])].push_back(static_cast<int>(f));
+  }
+
+  std::vector<char> placed_vertex(points.size(), 0);
+  std::vector<char> placed_face(faces.size(), 0);
+
+  // Coordinates of a face's corners in its own plane, orientation kept (u × v = its normal).
+  auto local_coords = [&](int f, std::vector<Vec2>& local) -> bool {
+    const Vec3 n = newell_normal(points, faces[f]);
+    if (n.norm() <= 0.0) return false;
+    const auto basis = in_plane_basis(n.normalized());
+    local.clear();
+    for (int w : faces[f]) local.emplace_back(points[w].dot(basis[0]), points[w].dot(basis[1]));
+    return true;
+  };
+
+  std::vector<Vec2> local;
+  if (!local_coords(0, local)) {
+    out.error = GeometryError{"face has no area", 0, -1};
+    return out;
+  }
+  for (std::size_t i = 0; i < faces[0].size(); ++i) {
+    out.coords[faces[0][i]] = local[i];
+    placed_vertex[faces[0][i]] = 1;
+  }
+  placed_face[0] = 1;
+
+  std::deque<int> queue{0};
+  while (!queue.empty()) {
+    const int f = queue.front();
+    queue.pop_front();
+    const Face& face = faces[f];
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const int a = face[i];
+      const int b = face[(i + 1) % face.size()];
+      for (int g : faces_by_side[side_key(a, b)]) {
+        if (placed_face[g]) continue;
+        if (!local_coords(g, local)) {
+          out.error = GeometryError{"face has no area", g, -1};
+          return out;
+        }
+        const Face& other = faces[g];
+        const auto at = [&](int vertex) {
+          return local[static_cast<std::size_t>(std::find(other.begin(), other.end(), vertex) - other.begin())];
+        };
+        const Vec2 la = at(a);
+        const Vec2 lb = at(b);
+        const Vec2& pa = out.coords[a];
+        const Vec2& pb = out.coords[b];
+        if (std::abs((lb - la).norm() - (pb - pa).norm()) > tolerance) {
+          out.error = GeometryError{"not developable: the side " + vertex_text(a) + "–" + std::to_string(b) +
+                                        " has different lengths in faces " + std::to_string(f) + " and " +
+                                        std::to_string(g),
+                                    g, -1};
+          return out;
+        }
+        const Motion motion = align(la, lb, pa, pb);
+        for (std::size_t k = 0; k < other.size(); ++k) {
+          const int w = other[k];
+          const Vec2 q = motion(local[k]);
+          if (!placed_vertex[w]) {
+            out.coords[w] = q;
+            placed_vertex[w] = 1;
+          } else if ((q - out.coords[w]).norm() > tolerance) {
+            out.error = GeometryError{"not developable: " + vertex_text(w) + " lands " +
+                                          std::to_string((q - out.coords[w]).norm()) +
+                                          " away from where the faces unfolded before face " + std::to_string(g) +
+                                          " put it",
+                                      g, -1};
+            return out;
+          }
+        }
+        placed_face[g] = 1;
+        queue.push_back(g);
+      }
+    }
+  }
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (!placed_face[f]) {
+      out.error = GeometryError{"is not connected to face 0; a folded form must be one piece to unfold",
+                                static_cast<int>(f), -1};
+      return out;
+    }
+  }
+  return out;
+}
+
+TracedFaces trace_faces(const std::vector<Vec2>& points, const std::vector<std::array<int, 2>>& edges) {
+  TracedFaces out;
+  // Half-edge h runs along edge h/2, from edges[h/2][h%2] to the other end.
+  const std::size_t half_count = 2 * edges.size();
+  auto from = [&](std::size_t h) { return edges[h / 2][h % 2]; };
+  auto to = [&](std::size_t h) { return edges[h / 2][1 - h % 2]; };
+
+  std::vector<std::vector<std::pair<double, std::size_t>>> around(points.size());
+  for (std::size_t h = 0; h < half_count; ++h) {
+    const Vec2 d = points[to(h)] - points[from(h)];
+    around[from(h)].emplace_back(std::atan2(d.y(), d.x()), h);
+  }
+  std::vector<std::size_t> slot(half_count, 0);
+  for (std::size_t v = 0; v < around.size(); ++v) {
+    auto& star = around[v];
+    std::sort(star.begin(), star.end());
+    if (star.size() == 1) {
+      out.error = GeometryError{"dangling edge: its vertex " + std::to_string(v) +
+                                    " has no other edge, so no faces can be derived",
+                                -1, static_cast<int>(star[0].second / 2)};
+      return out;
+    }
+    for (std::size_t i = 0; i < star.size(); ++i) {
+      slot[star[i].second] = i;
+      if (i > 0 && star[i].first - star[i - 1].first < 1e-12) {
+        out.error = GeometryError{"overlaps edge " + std::to_string(star[i - 1].second / 2) + " at vertex " +
+                                      std::to_string(v),
+                                  -1, static_cast<int>(star[i].second / 2)};
+        return out;
+      }
+    }
+  }
+  // The face left of h continues along the edge next clockwise from h's twin around h's head.
+  auto next = [&](std::size_t h) {
+    const auto& star = around[to(h)];
+    const std::size_t twin = h ^ 1U;
+    return star[(slot[twin] + star.size() - 1) % star.size()].second;
+  };
+
+  std::vector<char> visited(half_count, 0);
+  for (std::size_t start = 0; start < half_count; ++start) {
+    if (visited[start]) continue;
+    Face face;
+    std::vector<std::size_t> cycle;
+    std::size_t h = start;
+    while (!visited[h]) {
+      visited[h] = 1;
+      cycle.push_back(h);
+      face.push_back(from(h));
+      h = next(h);
+    }
+    for (std::size_t c : cycle) {
+      if (visited[c ^ 1U] && std::find(cycle.begin(), cycle.end(), c ^ 1U) != cycle.end()) {
+        out.error = GeometryError{"is a bridge (the same region lies on both sides), so no faces can be derived",
+                                  -1, static_cast<int>(c / 2)};
+        return out;
+      }
+    }
+    if (signed_area(points, face) > 0.0) out.faces.push_back(std::move(face));
+  }
+  return out;
+}
+
+std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& points, const Face& face) {
+  std::vector<std::array<int, 3>> triangles;
+  if (face.size() < 3) return triangles;
+  Eigen::AlignedBox2d box;
+  for (int v : face) box.extend(points[v]);
+  const double scale = box.diagonal().norm();
+  const double eps = 1e-12 * scale * scale;
+
+  std::vector<int> ring = face;
+  while (ring.size() > 3) {
+    const std::size_t k = ring.size();
+    bool clipped = false;
+    for (std::size_t i = 0; i < k && !clipped; ++i) {
+      const int a = ring[(i + k - 1) % k];
+      const int b = ring[i];
+      const int c = ring[(i + 1) % k];
+      const Vec2 &pa = points[a], &pb = points[b], &pc = points[c];
+      if (orient(pa, pb, pc) <= eps) continue;  // reflex or straight corner: not an ear
+      bool blocked = false;
+      for (int w : ring) {
+        if (w == a || w == b || w == c) continue;
+        const Vec2& p = points[w];
+        if (orient(pa, pb, p) >= -eps && orient(pb, pc, p) >= -eps && orient(pc, pa, p) >= -eps) {
+          blocked = true;
+          break;
+        }
+      }
+      if (blocked) continue;
+      triangles.push_back({a, b, c});
+      ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i));
+      clipped = true;
+    }
+    if (!clipped) return {};
+  }
+  if (orient(points[ring[0]], points[ring[1]], points[ring[2]]) <= eps) return {};
+  triangles.push_back({ring[0], ring[1], ring[2]});
+  return triangles;
+}
+
+}  // namespace foldkit::io::fold_detail

@@ -1,0 +1,100 @@
+#include "foldkit/io/number_format.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <system_error>
+
+namespace foldkit::io {
+
+std::string format_number(double value) {
+  if (value == 0.0) return "0";  // also turns -0 into 0: files never carry a signed zero
+  char buf[32];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
+  return ec == std::errc() ? std::string(buf, end) : std::string("nan");
+}
+
+double degrees_to_radians(double degrees) { return degrees * (M_PI / 180.0); }
+
+namespace {
+
+// Fewest significant digits whose reading maps back to exactly `radians`, if any does. The
+// preimage need not be the rounded product radians·180/π itself, so its neighbours are tried.
+std::optional<std::string> exact_degrees(double radians) {
+  const double degrees = radians * (180.0 / M_PI);
+  std::vector<double> candidates{degrees};
+  for (double up = degrees, down = degrees; candidates.size() < 9;) {
+    candidates.push_back(up = std::nextafter(up, HUGE_VAL));
+    candidates.push_back(down = std::nextafter(down, -HUGE_VAL));
+  }
+  for (int digits = 1; digits <= 17; ++digits) {
+    for (double d : candidates) {
+      char buf[40];
+      auto [end, ec] = std::to_chars(buf, buf + sizeof buf, d, std::chars_format::general, digits);
+      if (ec != std::errc()) continue;
+      double back = 0.0;
+      std::from_chars(buf, end, back);
+      if (degrees_to_radians(back) == radians) return format_number(back);
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string format_degrees(double radians) {
+  if (radians == 0.0) return "0";
+  // "30" read from a file is written as "30" again. Not every double in radians is d·π/180 for
+  // a decimal d: those are written as the degrees of the nearest value that is, which then
+  // reads back to itself, so a written file is stable under read and write.
+  if (auto exact = exact_degrees(radians)) return *exact;
+  const double nearest = degrees_to_radians(radians * (180.0 / M_PI));
+  if (auto exact = exact_degrees(nearest)) return *exact;
+  return format_number(radians * (180.0 / M_PI));
+}
+
+NumberList parse_numbers(std::string_view text) {
+  NumberList out;
+  std::size_t i = 0;
+  auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+  while (i < text.size()) {
+    while (i < text.size() && is_space(text[i])) ++i;
+    if (i == text.size()) break;
+    std::size_t j = i;
+    while (j < text.size() && !is_space(text[j])) ++j;
+    const std::string_view token = text.substr(i, j - i);
+    double value = 0.0;
+    // from_chars accepts "nan"/"inf" and a leading '+' is not accepted: allow '+' explicitly.
+    const std::string_view digits = token.size() > 1 && token[0] == '+' ? token.substr(1) : token;
+    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (ec == std::errc::result_out_of_range) {
+      out.error = "number '" + std::string(token) + "' is out of range";
+      return out;
+    }
+    if (ec != std::errc() || end != digits.data() + digits.size()) {
+      out.error = "'" + std::string(token.substr(0, 40)) + "' is not a number";
+      return out;
+    }
+    if (!std::isfinite(value)) {
+      out.error = "'" + std::string(token) + "' is not a finite number";
+      return out;
+    }
+    out.values.push_back(value);
+    i = j;
+  }
+  return out;
+}
+
+std::optional<int> parse_int(std::string_view text) {
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t' || text.front() == '\n' || text.front() == '\r'))
+    text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\n' || text.back() == '\r'))
+    text.remove_suffix(1);
+  if (text.empty()) return std::nullopt;
+  int value = 0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+}  // namespace foldkit::io

@@ -1,0 +1,158 @@
+#include "foldkit/io/pmml.hpp"
+
+#include <cstring>
+#include <sstream>
+
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/number_format.hpp"
+#include "foldkit/io/parse_error.hpp"
+#include "xml_reader.hpp"
+
+namespace foldkit::io {
+namespace {
+
+using geometry::Assignment;
+using tinyxml2::XMLElement;
+
+std::vector<double> numbers(const detail::XmlInput& in, const XMLElement& e, std::size_t count) {
+  NumberList list = parse_numbers(in.leaf_text(e));
+  if (!list.error.empty()) in.fail(e, std::string("<") + e.Name() + ">: " + list.error);
+  if (list.values.size() != count)
+    in.fail(e, std::string("<") + e.Name() + "> needs " + std::to_string(count) + " numbers, found " +
+                   std::to_string(list.values.size()));
+  return list.values;
+}
+
+int integer(const detail::XmlInput& in, const XMLElement& e) {
+  const std::string text = in.leaf_text(e);
+  auto v = parse_int(text);
+  if (!v) in.fail(e, std::string("<") + e.Name() + "> must be an integer, found '" + text.substr(0, 40) + "'");
+  return *v;
+}
+
+double scalar(const detail::XmlInput& in, const XMLElement& e) { return numbers(in, e, 1)[0]; }
+
+Assignment assignment(const detail::XmlInput& in, const XMLElement& e) {
+  const std::string t = in.leaf_text(e);
+  if (t == "M") return Assignment::Mountain;
+  if (t == "V") return Assignment::Valley;
+  if (t == "F") return Assignment::Flat;
+  if (t == "U") return Assignment::Unassigned;
+  in.fail(e, "<Assignment> must be M, V, F or U, found '" + t.substr(0, 40) + "'");
+}
+
+bool is(const XMLElement* e, const char* tag) { return std::strcmp(e->Name(), tag) == 0; }
+
+geometry::ActorSpec read_actor(const detail::XmlInput& in, const XMLElement& e) {
+  geometry::ActorSpec actor;
+  actor.line = e.GetLineNum();
+  actor.id = integer(in, in.only_child(e, "ID"));
+  for (const XMLElement* c : in.children(e)) {
+    if (is(c, "ID")) continue;
+    if (!is(c, "Triangle")) in.fail(*c, std::string("unknown element <") + c->Name() + "> in <Actor>");
+    const auto v = numbers(in, *c, 6);
+    actor.triangles.push_back({{geometry::Vec2(v[0], v[1]), geometry::Vec2(v[2], v[3]), geometry::Vec2(v[4], v[5])}, c->GetLineNum()});
+  }
+  if (actor.triangles.empty()) in.fail(e, "<Actor> " + std::to_string(actor.id) + " has no <Triangle>");
+  return actor;
+}
+
+geometry::JointSpec read_joint(const detail::XmlInput& in, const XMLElement& e) {
+  static const char* const known[] = {"ID", "Coords", "ActorIDs", "SpringConst", "DampConst", "Assignment"};
+  for (const XMLElement* c : in.children(e)) {
+    bool ok = false;
+    for (const char* k : known) ok = ok || is(c, k);
+    if (!ok) in.fail(*c, std::string("unknown element <") + c->Name() + "> in <Joint>");
+  }
+  geometry::JointSpec joint;
+  joint.line = e.GetLineNum();
+  joint.id = integer(in, in.only_child(e, "ID"));
+  const auto c = numbers(in, in.only_child(e, "Coords"), 4);
+  joint.coords = {geometry::Vec2(c[0], c[1]), geometry::Vec2(c[2], c[3])};
+  const XMLElement& ids = in.only_child(e, "ActorIDs");
+  std::istringstream tokens(in.leaf_text(ids));
+  std::string token;
+  std::vector<int> actor_ids;
+  while (tokens >> token) {
+    auto v = parse_int(token);
+    if (!v) in.fail(ids, "<ActorIDs> must hold two integer actor IDs, found '" + token.substr(0, 40) + "'");
+    actor_ids.push_back(*v);
+  }
+  if (actor_ids.size() != 2)
+    in.fail(ids, "<ActorIDs> must hold two actor IDs, found " + std::to_string(actor_ids.size()));
+  joint.actor_ids = {actor_ids[0], actor_ids[1]};
+  joint.spring = scalar(in, in.only_child(e, "SpringConst"));
+  joint.damping = scalar(in, in.only_child(e, "DampConst"));
+  for (const XMLElement* ch : in.children(e))
+    if (is(ch, "Assignment")) joint.assignment = assignment(in, in.only_child(e, "Assignment"));
+  return joint;
+}
+
+}  // namespace
+
+geometry::PatternSpec parse_pmml(const std::string& text, const std::string& name) {
+  detail::XmlInput in(text, name);
+  const XMLElement& root = in.root("PMML");
+  geometry::PatternSpec spec;
+  bool titled = false;
+  for (const XMLElement* c : in.children(root)) {
+    if (is(c, "Title")) {
+      if (titled) in.fail(*c, "<PMML> has more than one <Title>");
+      titled = true;
+      spec.title = in.leaf_text(*c);
+    } else if (is(c, "Actor")) {
+      spec.actors.push_back(read_actor(in, *c));
+    } else if (is(c, "Joint")) {
+      spec.joints.push_back(read_joint(in, *c));
+    } else {
+      in.fail(*c, std::string("unknown element <") + c->Name() + "> in <PMML>");
+    }
+  }
+  if (spec.actors.empty()) in.fail(root, "<PMML> has no <Actor>");
+  return spec;
+}
+
+geometry::PatternSpec read_pmml_spec(const std::string& path) { return parse_pmml(read_file(path), path); }
+
+geometry::CreasePattern read_pmml(const std::string& path, const geometry::BuildOptions& options) {
+  const geometry::PatternSpec spec = read_pmml_spec(path);
+  geometry::BuildResult built = geometry::build_pattern(spec, options);
+  if (built.pattern) return std::move(*built.pattern);
+  std::size_t errors = 0;
+  const geometry::Diagnostic* first = nullptr;
+  for (const auto& d : built.diagnostics)
+    if (d.severity == geometry::Severity::Error && ++errors == 1) first = &d;
+  std::string message = first->message;
+  if (errors > 1) message += " (and " + std::to_string(errors - 1) + " more errors: run 'foldkit validate' to list them)";
+  throw ParseError(path, first->line, message);
+}
+
+std::string write_pmml(const geometry::PatternSpec& spec) {
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<PMML>\n";
+  out << "  <Title>" << detail::escape_xml(spec.title) << "</Title>\n";
+  for (const auto& a : spec.actors) {
+    out << "  <Actor>\n    <ID>" << a.id << "</ID>\n";
+    for (const auto& t : a.triangles) {
+      out << "    <Triangle>";
+      for (int k = 0; k < 3; ++k)
+        out << (k ? " " : "") << format_number(t.corners[k].x()) << ' ' << format_number(t.corners[k].y());
+      out << "</Triangle>\n";
+    }
+    out << "  </Actor>\n";
+  }
+  for (const auto& j : spec.joints) {
+    out << "  <Joint>\n    <ID>" << j.id << "</ID>\n    <Coords>" << format_number(j.coords[0].x()) << ' '
+        << format_number(j.coords[0].y()) << ' ' << format_number(j.coords[1].x()) << ' ' << format_number(j.coords[1].y())
+        << "</Coords>\n    <ActorIDs>" << j.actor_ids[0] << ' ' << j.actor_ids[1] << "</ActorIDs>\n    <SpringConst>"
+        << format_number(j.spring) << "</SpringConst>\n    <DampConst>" << format_number(j.damping) << "</DampConst>\n";
+    if (j.assignment != Assignment::Unassigned) out << "    <Assignment>" << geometry::to_string(j.assignment) << "</Assignment>\n";
+    out << "  </Joint>\n";
+  }
+  out << "</PMML>\n";
+  return out.str();
+}
+
+std::string write_pmml(const geometry::CreasePattern& pattern) { return write_pmml(pattern.to_spec()); }
+
+}  // namespace foldkit::io

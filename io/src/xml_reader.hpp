@@ -1,0 +1,39 @@
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <tinyxml2.h>
+
+namespace foldkit::io::detail {
+
+// A strictly read XML file: every problem is a ParseError at the line of the offending node.
+class XmlInput {
+ public:
+  XmlInput(const std::string& text, std::string name);
+
+  // The root element, which must be named `expected`.
+  const tinyxml2::XMLElement& root(const char* expected) const;
+
+  [[noreturn]] void fail(int line, const std::string& message) const;
+  [[noreturn]] void fail(const tinyxml2::XMLNode& at, const std::string& message) const;
+
+  // Text of an element that holds only text (no child elements, no attributes).
+  std::string leaf_text(const tinyxml2::XMLElement& e) const;
+
+  // Child elements of a container in order, after rejecting attributes and stray text.
+  std::vector<const tinyxml2::XMLElement*> children(const tinyxml2::XMLElement& e) const;
+
+  // The one child named `tag` (missing or repeated is an error).
+  const tinyxml2::XMLElement& only_child(const tinyxml2::XMLElement& parent, const char* tag) const;
+
+  const std::string& name() const { return name_; }
+
+ private:
+  tinyxml2::XMLDocument doc_;
+  std::string name_;
+};
+
+std::string escape_xml(const std::string& text);
+
+}  // namespace foldkit::io::detail

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages foldkit builds against, when any is missing.
+# OMPL's CMake config links Boost.Serialization/Filesystem/System and ODE, which libompl-dev
+# does not pull in, so they are listed explicitly.
+set -euo pipefail
+
+packages=(
+  cmake g++ make
+  libeigen3-dev libboost-dev libboost-graph-dev
+  libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
+  libtinyxml2-dev nlohmann-json3-dev libcli11-dev
+  libompl-dev libode-dev libfcl-dev libccd-dev
+  libbenchmark-dev libgtest-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present" >&2
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}" >&2
+if [ "$(id -u)" -eq 0 ]; then
+  sudo=()
+elif command -v sudo >/dev/null; then
+  sudo=(sudo)
+else
+  echo "install-deps: missing packages and not root (no sudo): ${missing[*]}" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2

@@ -1,0 +1,190 @@
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "test_paths.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using foldkit::test::cli_path;
+using foldkit::test::data_path;
+using foldkit::test::temp_dir;
+
+struct CliResult {
+  int exit = -1;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// Runs `foldkit ARGS` with a 60 s limit (a hang fails the test instead of blocking it).
+CliResult foldkit(const std::vector<std::string>& args) {
+  static const std::string dir = temp_dir();
+  std::string cmd = "timeout 60 " + quote(cli_path());
+  for (const auto& a : args) cmd += " " + quote(a);
+  cmd += " >" + dir + "/out 2>" + dir + "/err";
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir + "/out"), slurp(dir + "/err")};
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(foldkit({}).exit, 2);
+  EXPECT_EQ(foldkit({"fly"}).exit, 2);
+  EXPECT_EQ(foldkit({"info"}).exit, 2);
+  EXPECT_EQ(foldkit({"generate", "miura", "--rows", "0", "-o", "x.pmml"}).exit, 2);
+  EXPECT_EQ(foldkit({"generate", "single-vertex", "--sectors", "90,90,90", "-o", "x.pmml"}).exit, 2);
+  EXPECT_EQ(foldkit({"convert", "a.pmml", "b.txt"}).exit, 1);  // a.pmml does not exist
+  const CliResult help = foldkit({"--help"});
+  EXPECT_EQ(help.exit, 0);
+  EXPECT_NE(help.out.find("validate"), std::string::npos);
+  EXPECT_EQ(foldkit({"generate", "--help"}).exit, 0);
+}
+
+TEST(Cli, GenerateInfoJson) {
+  const std::string dir = temp_dir();
+  const CliResult gen = foldkit({"generate", "miura", "--rows", "3", "--cols", "4", "-o", dir + "/m.pmml", "--json"});
+  ASSERT_EQ(gen.exit, 0) << gen.err;
+  EXPECT_EQ(nlohmann::json::parse(gen.out)["actors"], 12);
+  const CliResult info = foldkit({"info", dir + "/m.pmml", "--json"});
+  ASSERT_EQ(info.exit, 0) << info.err;
+  const auto j = nlohmann::json::parse(info.out);  // exactly one JSON object on stdout
+  EXPECT_EQ(j["actors"], 12);
+  EXPECT_EQ(j["joints"], 3 * 3 + 4 * 2);
+  EXPECT_EQ(j["vertices"], 4 * 5);
+  EXPECT_EQ(j["interior_vertices"], 2 * 3);
+  EXPECT_EQ(j["boundary_vertices"], 14);
+  EXPECT_EQ(j["interior_vertex_degrees"]["4"], 6);
+}
+
+TEST(Cli, EveryGeneratorValidates) {
+  const std::string dir = temp_dir();
+  const std::vector<std::vector<std::string>> kinds = {
+      {"single-vertex", "--degree", "8"},
+      {"single-vertex", "--degree", "12", "--seed", "3"},
+      {"single-vertex", "--sectors", "100,80,80,100"},
+      {"strip", "--panels", "5"},
+      {"grid", "--rows", "3", "--cols", "2"},
+      {"circular", "--rings", "2", "--spokes", "6"},
+      {"miura", "--rows", "4", "--cols", "4", "--angle", "70"},
+      {"waterbomb", "--units", "3", "--rows", "2"},
+      {"boat"},
+      {"cube-sheet", "--cubes", "3"}};
+  for (const auto& k : kinds) {
+    std::vector<std::string> args = {"generate"};
+    args.insert(args.end(), k.begin(), k.end());
+    const std::string out = dir + "/" + k[0] + ".pmml";
+    args.insert(args.end(), {"-o", out});
+    const CliResult g = foldkit(args);
+    ASSERT_EQ(g.exit, 0) << k[0] << ": " << g.err;
+    const CliResult v = foldkit({"validate", out});
+    EXPECT_EQ(v.exit, 0) << k[0] << ": " << v.err;
+    const CliResult f = foldkit({"convert", out, dir + "/" + k[0] + ".fold"});
+    EXPECT_EQ(f.exit, 0) << k[0] << ": " << f.err;
+    const CliResult back = foldkit({"convert", dir + "/" + k[0] + ".fold", dir + "/" + k[0] + "-back.pmml"});
+    EXPECT_EQ(back.exit, 0) << k[0] << ": " << back.err;
+    const auto a = nlohmann::json::parse(foldkit({"info", out, "--json"}).out);
+    const auto b = nlohmann::json::parse(foldkit({"info", dir + "/" + k[0] + "-back.pmml", "--json"}).out);
+    for (const char* key : {"actors", "joints", "vertices", "interior_vertices", "boundary_vertices"})
+      EXPECT_EQ(a[key], b[key]) << k[0] << " " << key;
+  }
+}
+
+TEST(Cli, SameSeedSameFile) {
+  const std::string dir = temp_dir();
+  for (const char* name : {"a.pmml", "b.pmml"})
+    ASSERT_EQ(foldkit({"generate", "single-vertex", "--degree", "9", "--seed", "42", "-o", dir + "/" + name}).exit, 0);
+  EXPECT_EQ(slurp(dir + "/a.pmml"), slurp(dir + "/b.pmml"));
+  ASSERT_EQ(foldkit({"generate", "single-vertex", "--degree", "9", "--seed", "43", "-o", dir + "/c.pmml"}).exit, 0);
+  EXPECT_NE(slurp(dir + "/a.pmml"), slurp(dir + "/c.pmml"));
+}
+
+TEST(Cli, BadInputCorpus) {
+  // Every file under test/data/bad: exit 1, "FILE:LINE: message", and no output written.
+  const std::string dir = temp_dir();
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(data_path("bad"))) {
+    const std::string path = entry.path().string();
+    ++files;
+    const CliResult v = foldkit({"validate", path});
+    EXPECT_EQ(v.exit, 1) << path << "\n" << v.err;
+    EXPECT_TRUE(std::regex_search(v.err, std::regex("^" + std::regex_replace(path, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)") + ":[0-9]+: ")))
+        << v.err;
+    if (entry.path().extension() == ".cmml") continue;
+    const std::string out = dir + "/out.fold";
+    const CliResult c = foldkit({"convert", path, out});
+    EXPECT_EQ(c.exit, 1) << path << "\n" << c.err;
+    EXPECT_FALSE(fs::exists(out)) << path;
+  }
+  EXPECT_GE(files, 10);
+}
+
+TEST(Cli, DeepNestingAndHugeInputsDoNotCrash) {
+  const std::string dir = temp_dir();
+  std::ofstream(dir + "/deep.pmml") << "<PMML>" + [] { std::string s; for (int i = 0; i < 20000; ++i) s += "<a>"; return s; }();
+  std::ofstream(dir + "/deep.fold") << std::string(20000, '[');
+  std::ofstream(dir + "/deep-obj.fold") << [] { std::string s; for (int i = 0; i < 20000; ++i) s += "{\"a\":"; return s; }();
+  for (const char* name : {"deep.pmml", "deep.fold", "deep-obj.fold"}) {
+    const CliResult v = foldkit({"validate", dir + "/" + name});
+    EXPECT_EQ(v.exit, 1) << name << ": " << v.err;
+    EXPECT_NE(v.err.find(dir + "/" + name + ":"), std::string::npos) << v.err;
+  }
+}
+
+TEST(Cli, ValidateCmmlAgainstPattern) {
+  const std::string dir = temp_dir();
+  ASSERT_EQ(foldkit({"generate", "strip", "--panels", "3", "-o", dir + "/s.pmml"}).exit, 0);
+  std::ofstream(dir + "/ok.cmml") << "<CMML><Title>t</Title>\n<Fold><EventNumber>1</EventNumber><ID>1</ID>"
+                                     "<FoldAngle>90</FoldAngle><Velocity>10</Velocity></Fold></CMML>\n";
+  std::ofstream(dir + "/unknown.cmml") << "<CMML><Title>t</Title>\n<Fold><EventNumber>1</EventNumber><ID>77</ID>"
+                                          "<FoldAngle>90</FoldAngle><Velocity>10</Velocity></Fold></CMML>\n";
+  EXPECT_EQ(foldkit({"validate", dir + "/ok.cmml", "--pattern", dir + "/s.pmml"}).exit, 0);
+  const CliResult bad = foldkit({"validate", dir + "/unknown.cmml", "--pattern", dir + "/s.pmml", "--json"});
+  EXPECT_EQ(bad.exit, 1);
+  EXPECT_NE(bad.err.find(dir + "/unknown.cmml:2: fold names joint 77"), std::string::npos) << bad.err;
+  const auto j = nlohmann::json::parse(bad.out);
+  EXPECT_FALSE(j["ok"].get<bool>());
+  EXPECT_EQ(j["files"][0]["errors"][0]["line"], 2);
+  // CMML → FOLD carries one frame per event; → SVG draws the end state.
+  EXPECT_EQ(foldkit({"convert", dir + "/ok.cmml", dir + "/ok.fold", "--pattern", dir + "/s.pmml"}).exit, 0);
+  const auto fold = nlohmann::json::parse(slurp(dir + "/ok.fold"));
+  ASSERT_EQ(fold["file_frames"].size(), 1u);
+  EXPECT_EQ(foldkit({"convert", dir + "/ok.cmml", dir + "/ok.svg"}).exit, 2);  // needs --pattern
+}
+
+TEST(Cli, FailedWriteLeavesNothing) {
+  const std::string dir = temp_dir();
+  ASSERT_EQ(foldkit({"generate", "boat", "-o", dir + "/b.pmml"}).exit, 0);
+  const CliResult r = foldkit({"convert", dir + "/b.pmml", dir + "/missing/sub/b.fold"});
+  EXPECT_EQ(r.exit, 1);
+  EXPECT_FALSE(fs::exists(dir + "/missing"));
+  for (const auto& e : fs::directory_iterator(dir)) EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos);
+}
+
+TEST(Cli, DemoWritesItsFolder) {
+  const std::string dir = temp_dir() + "/demo";
+  const CliResult d = foldkit({"demo", "-o", dir});
+  ASSERT_EQ(d.exit, 0) << d.err;
+  const auto report = nlohmann::json::parse(d.out);
+  EXPECT_EQ(report["patterns"]["boat"]["actors"], 8);
+  for (const char* f : {"boat.pmml", "boat.svg", "boat.fold", "miura-4x4.pmml", "strip-5-zigzag.cmml", "report.json"})
+    EXPECT_TRUE(fs::exists(dir + "/" + f)) << f;
+  EXPECT_EQ(foldkit({"validate", dir + "/strip-5-zigzag.cmml", "--pattern", dir + "/strip-5.pmml"}).exit, 0);
+}
+
+}  // namespace
