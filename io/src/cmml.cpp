@@ -11,47 +11,32 @@
 namespace foldkit::io {
 namespace {
 
+using detail::has_name;
 using tinyxml2::XMLElement;
-
-bool is(const XMLElement* e, const char* tag) { return std::strcmp(e->Name(), tag) == 0; }
-
-double number(const detail::XmlInput& in, const XMLElement& e) {
-  NumberList list = parse_numbers(in.leaf_text(e));
-  if (!list.error.empty()) in.fail(e, std::string("<") + e.Name() + ">: " + list.error);
-  if (list.values.size() != 1) in.fail(e, std::string("<") + e.Name() + "> must hold one number");
-  return list.values[0];
-}
 
 std::pair<int, geometry::FoldCommand> read_fold(const detail::XmlInput& in, const XMLElement& e) {
   for (const XMLElement* c : in.children(e))
-    if (!is(c, "EventNumber") && !is(c, "ID") && !is(c, "FoldAngle") && !is(c, "Velocity"))
+    if (!has_name(c, "EventNumber") && !has_name(c, "ID") && !has_name(c, "FoldAngle") && !has_name(c, "Velocity"))
       in.fail(*c, std::string("unknown element <") + c->Name() + "> in <Fold>");
   geometry::FoldCommand fold;
   fold.line = e.GetLineNum();
 
   const XMLElement& ev = in.only_child(e, "EventNumber");
-  const std::string ev_text = in.leaf_text(ev);
-  auto event = parse_int(ev_text);
-  if (!event || *event < 0)
-    in.fail(ev, "<EventNumber> must be a non-negative integer, found '" + ev_text.substr(0, 40) + "'");
-
-  const XMLElement& id = in.only_child(e, "ID");
-  const std::string id_text = in.leaf_text(id);
-  auto joint = parse_int(id_text);
-  if (!joint) in.fail(id, "<ID> must be an integer joint ID, found '" + id_text.substr(0, 40) + "'");
-  fold.joint_id = *joint;
+  const int event = in.integer(ev, "a non-negative integer");
+  if (event < 0) in.fail(ev, "<EventNumber> must be a non-negative integer, found '" + in.leaf_text(ev) + "'");
+  fold.joint_id = in.integer(in.only_child(e, "ID"), "an integer joint ID");
 
   const XMLElement& angle = in.only_child(e, "FoldAngle");
-  const double degrees = number(in, angle);
+  const double degrees = in.number(angle);
   if (degrees < -180.0 || degrees > 180.0)
     in.fail(angle, "<FoldAngle> " + format_number(degrees) + " is outside [-180, 180] degrees");
   fold.angle = degrees_to_radians(degrees);
 
   const XMLElement& vel = in.only_child(e, "Velocity");
-  const double speed = number(in, vel);
+  const double speed = in.number(vel);
   if (!(speed > 0.0)) in.fail(vel, "<Velocity> must be positive (degrees per second), found " + format_number(speed));
   fold.velocity = degrees_to_radians(speed);
-  return {*event, fold};
+  return {event, fold};
 }
 
 }  // namespace
@@ -63,11 +48,11 @@ geometry::FoldSequence parse_cmml(const std::string& text, const std::string& na
   bool titled = false;
   std::vector<std::pair<int, geometry::FoldCommand>> folds;
   for (const XMLElement* c : in.children(root)) {
-    if (is(c, "Title")) {
+    if (has_name(c, "Title")) {
       if (titled) in.fail(*c, "<CMML> has more than one <Title>");
       titled = true;
       title = in.leaf_text(*c);
-    } else if (is(c, "Fold")) {
+    } else if (has_name(c, "Fold")) {
       folds.push_back(read_fold(in, *c));
     } else {
       in.fail(*c, std::string("unknown element <") + c->Name() + "> in <CMML>");

@@ -182,7 +182,7 @@ class LineMap {
     }
   }
   std::string string_token() {
-    const std::size_t start = ++pos_;
+    const std::size_t start = std::min(++pos_, text_.size());
     while (pos_ < text_.size() && text_[pos_] != '"') {
       if (text_[pos_] == '\\') ++pos_;
       else if (text_[pos_] == '\n') ++line_;
@@ -310,7 +310,6 @@ class Reader {
   void warn(const Loc& at, const std::string& what, const std::string& message) {
     warnings_.push_back(Diagnostic{Severity::Warning, at.line, what.empty() ? message : what + ": " + message});
   }
-  const LineMap& lines() const { return lines_; }
   geometry::Diagnostics& warnings() { return warnings_; }
 
   double number(const json& v, const Loc& at, const std::string& what) const {
@@ -577,8 +576,9 @@ struct JointSource {
 
 class Importer {
  public:
-  Importer(const std::string& text, const std::string& name, const geometry::BuildOptions& options)
-      : text_(text), name_(name), options_(options), lines_(text), reader_(name, lines_) {}
+  // `doc` is `text` parsed: the line map relies on the text being valid JSON.
+  Importer(const std::string& text, const std::string& name, const geometry::BuildOptions& options, json doc)
+      : name_(name), options_(options), doc_(std::move(doc)), lines_(text), reader_(name, lines_) {}
 
   FoldImport run();
 
@@ -609,9 +609,9 @@ class Importer {
   Loc assignment_loc(int e) const;
   char letter(int edge) const;
 
-  const std::string& text_;
   const std::string& name_;
   const geometry::BuildOptions& options_;
+  const json doc_;
   LineMap lines_;
   Reader reader_;
 
@@ -636,7 +636,7 @@ class Importer {
 };
 
 FoldImport Importer::run() {
-  const json doc = parse_json(text_, name_);
+  const json& doc = doc_;
   if (!doc.is_object()) reader_.fail(lines_.root(), "", "expected a FOLD object {…} at the top level, found " + describe(doc));
   if (const auto it = doc.find("file_spec"); it != doc.end()) {
     if (it->is_number() && it->get<double>() > 1.2 + 1e-9)
@@ -1202,7 +1202,7 @@ char Importer::letter(int edge) const {
 
 FoldImport parse_fold(const std::string& text, const std::string& name, const geometry::BuildOptions& options) {
   check_text(text, name);
-  return Importer(text, name, options).run();
+  return Importer(text, name, options, parse_json(text, name)).run();
 }
 
 FoldImport read_fold(const std::string& path, const geometry::BuildOptions& options) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <deque>
 #include <unordered_map>
 
@@ -40,7 +41,11 @@ Motion align(const Vec2& la, const Vec2& lb, const Vec2& pa, const Vec2& pb) {
   return m;
 }
 
-std::string vertex_text(int v) { return "vertex " + std::to_string(v); }
+std::string short_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
 
 }  // namespace
 
@@ -155,9 +160,9 @@ Unfolding unfold(const std::vector<Vec3>& points, const std::vector<Face>& faces
         const Vec2& pa = out.coords[a];
         const Vec2& pb = out.coords[b];
         if (std::abs((lb - la).norm() - (pb - pa).norm()) > tolerance) {
-          out.error = GeometryError{"not developable: the side " + vertex_text(a) + "–" + std::to_string(b) +
-                                        " has different lengths in faces " + std::to_string(f) + " and " +
-                                        std::to_string(g),
+          out.error = GeometryError{"not developable: the side between vertices " + std::to_string(a) + " and " +
+                                        std::to_string(b) + " has different lengths in faces " + std::to_string(f) +
+                                        " and " + std::to_string(g),
                                     g, -1};
           return out;
         }
@@ -169,10 +174,9 @@ Unfolding unfold(const std::vector<Vec3>& points, const std::vector<Face>& faces
             out.coords[w] = q;
             placed_vertex[w] = 1;
           } else if ((q - out.coords[w]).norm() > tolerance) {
-            out.error = GeometryError{"not developable: " + vertex_text(w) + " lands " +
-                                          std::to_string((q - out.coords[w]).norm()) +
-                                          " away from where the faces unfolded before face " + std::to_string(g) +
-                                          " put it",
+            out.error = GeometryError{"not developable: laid flat, this face puts vertex " + std::to_string(w) +
+                                          " " + short_number((q - out.coords[w]).norm()) +
+                                          " away from where the faces before it put it",
                                       g, -1};
             return out;
           }
@@ -231,26 +235,27 @@ TracedFaces trace_faces(const std::vector<Vec2>& points, const std::vector<std::
     return star[(slot[twin] + star.size() - 1) % star.size()].second;
   };
 
-  std::vector<char> visited(half_count, 0);
-  for (std::size_t start = 0; start < half_count; ++start) {
-    if (visited[start]) continue;
+  constexpr std::size_t kUnseen = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> cycle_of(half_count, kUnseen);
+  for (std::size_t start = 0, cycle = 0; start < half_count; ++start) {
+    if (cycle_of[start] != kUnseen) continue;
     Face face;
-    std::vector<std::size_t> cycle;
     std::size_t h = start;
-    while (!visited[h]) {
-      visited[h] = 1;
-      cycle.push_back(h);
+    while (cycle_of[h] == kUnseen) {
+      cycle_of[h] = cycle;
       face.push_back(from(h));
       h = next(h);
     }
-    for (std::size_t c : cycle) {
-      if (visited[c ^ 1U] && std::find(cycle.begin(), cycle.end(), c ^ 1U) != cycle.end()) {
+    // Both sides of an edge on one walk: the edge separates nothing.
+    for (std::size_t k = 0, c = start; k < face.size(); ++k, c = next(c)) {
+      if (cycle_of[c ^ 1U] == cycle) {
         out.error = GeometryError{"is a bridge (the same region lies on both sides), so no faces can be derived",
                                   -1, static_cast<int>(c / 2)};
         return out;
       }
     }
     if (signed_area(points, face) > 0.0) out.faces.push_back(std::move(face));
+    ++cycle;
   }
   return out;
 }

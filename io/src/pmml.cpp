@@ -12,25 +12,8 @@ namespace foldkit::io {
 namespace {
 
 using geometry::Assignment;
+using detail::has_name;
 using tinyxml2::XMLElement;
-
-std::vector<double> numbers(const detail::XmlInput& in, const XMLElement& e, std::size_t count) {
-  NumberList list = parse_numbers(in.leaf_text(e));
-  if (!list.error.empty()) in.fail(e, std::string("<") + e.Name() + ">: " + list.error);
-  if (list.values.size() != count)
-    in.fail(e, std::string("<") + e.Name() + "> needs " + std::to_string(count) + " numbers, found " +
-                   std::to_string(list.values.size()));
-  return list.values;
-}
-
-int integer(const detail::XmlInput& in, const XMLElement& e) {
-  const std::string text = in.leaf_text(e);
-  auto v = parse_int(text);
-  if (!v) in.fail(e, std::string("<") + e.Name() + "> must be an integer, found '" + text.substr(0, 40) + "'");
-  return *v;
-}
-
-double scalar(const detail::XmlInput& in, const XMLElement& e) { return numbers(in, e, 1)[0]; }
 
 Assignment assignment(const detail::XmlInput& in, const XMLElement& e) {
   const std::string t = in.leaf_text(e);
@@ -41,16 +24,14 @@ Assignment assignment(const detail::XmlInput& in, const XMLElement& e) {
   in.fail(e, "<Assignment> must be M, V, F or U, found '" + t.substr(0, 40) + "'");
 }
 
-bool is(const XMLElement* e, const char* tag) { return std::strcmp(e->Name(), tag) == 0; }
-
 geometry::ActorSpec read_actor(const detail::XmlInput& in, const XMLElement& e) {
   geometry::ActorSpec actor;
   actor.line = e.GetLineNum();
-  actor.id = integer(in, in.only_child(e, "ID"));
+  actor.id = in.integer(in.only_child(e, "ID"), "an integer");
   for (const XMLElement* c : in.children(e)) {
-    if (is(c, "ID")) continue;
-    if (!is(c, "Triangle")) in.fail(*c, std::string("unknown element <") + c->Name() + "> in <Actor>");
-    const auto v = numbers(in, *c, 6);
+    if (has_name(c, "ID")) continue;
+    if (!has_name(c, "Triangle")) in.fail(*c, std::string("unknown element <") + c->Name() + "> in <Actor>");
+    const auto v = in.numbers(*c, 6);
     actor.triangles.push_back({{geometry::Vec2(v[0], v[1]), geometry::Vec2(v[2], v[3]), geometry::Vec2(v[4], v[5])}, c->GetLineNum()});
   }
   if (actor.triangles.empty()) in.fail(e, "<Actor> " + std::to_string(actor.id) + " has no <Triangle>");
@@ -61,13 +42,13 @@ geometry::JointSpec read_joint(const detail::XmlInput& in, const XMLElement& e) 
   static const char* const known[] = {"ID", "Coords", "ActorIDs", "SpringConst", "DampConst", "Assignment"};
   for (const XMLElement* c : in.children(e)) {
     bool ok = false;
-    for (const char* k : known) ok = ok || is(c, k);
+    for (const char* k : known) ok = ok || has_name(c, k);
     if (!ok) in.fail(*c, std::string("unknown element <") + c->Name() + "> in <Joint>");
   }
   geometry::JointSpec joint;
   joint.line = e.GetLineNum();
-  joint.id = integer(in, in.only_child(e, "ID"));
-  const auto c = numbers(in, in.only_child(e, "Coords"), 4);
+  joint.id = in.integer(in.only_child(e, "ID"), "an integer");
+  const auto c = in.numbers(in.only_child(e, "Coords"), 4);
   joint.coords = {geometry::Vec2(c[0], c[1]), geometry::Vec2(c[2], c[3])};
   const XMLElement& ids = in.only_child(e, "ActorIDs");
   std::istringstream tokens(in.leaf_text(ids));
@@ -81,10 +62,9 @@ geometry::JointSpec read_joint(const detail::XmlInput& in, const XMLElement& e) 
   if (actor_ids.size() != 2)
     in.fail(ids, "<ActorIDs> must hold two actor IDs, found " + std::to_string(actor_ids.size()));
   joint.actor_ids = {actor_ids[0], actor_ids[1]};
-  joint.spring = scalar(in, in.only_child(e, "SpringConst"));
-  joint.damping = scalar(in, in.only_child(e, "DampConst"));
-  for (const XMLElement* ch : in.children(e))
-    if (is(ch, "Assignment")) joint.assignment = assignment(in, in.only_child(e, "Assignment"));
+  joint.spring = in.number(in.only_child(e, "SpringConst"));
+  joint.damping = in.number(in.only_child(e, "DampConst"));
+  if (e.FirstChildElement("Assignment")) joint.assignment = assignment(in, in.only_child(e, "Assignment"));
   return joint;
 }
 
@@ -96,13 +76,13 @@ geometry::PatternSpec parse_pmml(const std::string& text, const std::string& nam
   geometry::PatternSpec spec;
   bool titled = false;
   for (const XMLElement* c : in.children(root)) {
-    if (is(c, "Title")) {
+    if (has_name(c, "Title")) {
       if (titled) in.fail(*c, "<PMML> has more than one <Title>");
       titled = true;
       spec.title = in.leaf_text(*c);
-    } else if (is(c, "Actor")) {
+    } else if (has_name(c, "Actor")) {
       spec.actors.push_back(read_actor(in, *c));
-    } else if (is(c, "Joint")) {
+    } else if (has_name(c, "Joint")) {
       spec.joints.push_back(read_joint(in, *c));
     } else {
       in.fail(*c, std::string("unknown element <") + c->Name() + "> in <PMML>");

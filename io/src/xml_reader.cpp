@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "foldkit/io/number_format.hpp"
 #include "foldkit/io/parse_error.hpp"
 
 namespace foldkit::io::detail {
@@ -72,6 +73,23 @@ std::vector<const tinyxml2::XMLElement*> XmlInput::children(const tinyxml2::XMLE
   return out;
 }
 
+std::vector<double> XmlInput::numbers(const tinyxml2::XMLElement& e, std::size_t count) const {
+  NumberList list = parse_numbers(leaf_text(e));
+  const std::string tag = std::string("<") + e.Name() + ">";
+  if (!list.error.empty()) fail(e, tag + ": " + list.error);
+  if (list.values.size() != count)
+    fail(e, tag + (count == 1 ? " must hold one number" : " needs " + std::to_string(count) + " numbers") + ", found " +
+                std::to_string(list.values.size()));
+  return list.values;
+}
+
+int XmlInput::integer(const tinyxml2::XMLElement& e, const std::string& expected) const {
+  const std::string text = leaf_text(e);
+  auto v = parse_int(text);
+  if (!v) fail(e, std::string("<") + e.Name() + "> must be " + expected + ", found '" + text.substr(0, 40) + "'");
+  return *v;
+}
+
 const tinyxml2::XMLElement& XmlInput::only_child(const tinyxml2::XMLElement& parent, const char* tag) const {
   const tinyxml2::XMLElement* found = nullptr;
   for (const auto* c : children(parent)) {
@@ -82,6 +100,8 @@ const tinyxml2::XMLElement& XmlInput::only_child(const tinyxml2::XMLElement& par
   if (!found) fail(parent, std::string("<") + parent.Name() + "> has no <" + tag + ">");
   return *found;
 }
+
+bool has_name(const tinyxml2::XMLElement* e, const char* tag) { return std::strcmp(e->Name(), tag) == 0; }
 
 std::string escape_xml(const std::string& text) {
   std::string out;

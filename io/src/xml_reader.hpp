@@ -24,6 +24,13 @@ class XmlInput {
   // Child elements of a container in order, after rejecting attributes and stray text.
   std::vector<const tinyxml2::XMLElement*> children(const tinyxml2::XMLElement& e) const;
 
+  // Exactly `count` finite numbers (NaN, inf, 1e999 and garbage are errors).
+  std::vector<double> numbers(const tinyxml2::XMLElement& e, std::size_t count) const;
+  double number(const tinyxml2::XMLElement& e) const { return numbers(e, 1)[0]; }
+
+  // A whole number in int range; `expected` completes "<Tag> must be …" in the message.
+  int integer(const tinyxml2::XMLElement& e, const std::string& expected) const;
+
   // The one child named `tag` (missing or repeated is an error).
   const tinyxml2::XMLElement& only_child(const tinyxml2::XMLElement& parent, const char* tag) const;
 
@@ -35,5 +42,7 @@ class XmlInput {
 };
 
 std::string escape_xml(const std::string& text);
+
+bool has_name(const tinyxml2::XMLElement* e, const char* tag);
 
 }  // namespace foldkit::io::detail

@@ -369,6 +369,34 @@ TEST(FoldImport, PlanarThreeDimensionalSheetIsProjected) {
   EXPECT_EQ(fold.state->angles[0], 0.0);
 }
 
+TEST(FoldImport, SharedSideWithoutEdgeRecordIsAnUnassignedJoint) {
+  const std::string text = R"({
+    "vertices_coords": [[0,0],[1,0],[1,1],[0,1]],
+    "faces_vertices": [[0,1,2],[0,2,3]],
+    "edges_vertices": [[0,1],[1,2],[2,3],[3,0]],
+    "edges_assignment": ["B","B","B","B"]
+  })";
+  const FoldImport fold = parse_fold(text, "unrecorded.fold");
+  ASSERT_EQ(fold.pattern.joints().size(), 1U);
+  EXPECT_EQ(joint(fold.pattern, 5).assignment, Assignment::Unassigned);  // after the 4 records
+  EXPECT_EQ(fold.warnings.size(), 1U);
+}
+
+TEST(FoldImport, FrameWithItsOwnFoldedCoordinatesGivesDihedrals) {
+  const double h = std::sqrt(0.5);
+  const json doc = {{"vertices_coords", {{0, 0}, {1, 0}, {1, 1}, {0, 1}}},
+                    {"faces_vertices", {{0, 1, 2}, {0, 2, 3}}},
+                    {"edges_vertices", {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}}},
+                    {"edges_assignment", {"B", "B", "B", "B", "V"}},
+                    {"file_frames", {{{"frame_inherit", true},
+                                      {"frame_classes", {"foldedForm"}},
+                                      {"vertices_coords", {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.5, 0.5, h}}}}}}};
+  const FoldImport fold = parse_fold(doc.dump(2), "frames.fold");
+  EXPECT_FALSE(fold.state.has_value());
+  ASSERT_EQ(fold.frames.size(), 1U);
+  EXPECT_NEAR(fold.frames[0].angles[0], -kPi / 2, 1e-12);
+}
+
 // ───────────────────────── bad inputs ─────────────────────────
 
 // Every failure is a ParseError whose text starts "NAME:LINE: ".
@@ -445,6 +473,18 @@ TEST(FoldErrors, IndexOutOfRange) {
             2);
 }
 
+TEST(FoldErrors, FrameErrorsPointIntoTheFrame) {
+  EXPECT_EQ(error_line("{\"vertices_coords\": [[0,0],[1,0],[1,1]], \"faces_vertices\": [[0,1,2]],\n"
+                       "\"edges_vertices\": [[0,1],[1,2],[2,0]],\n\"file_frames\": [\n{\"frame_inherit\": true,\n"
+                       "\"edges_foldAngle\": [0, 0]}]}",
+                       "file_frames[0].edges_foldAngle: has 2 entries but edges_vertices has 3"),
+            5);
+  EXPECT_EQ(error_line("{\"vertices_coords\": [[0,0],[1,0],[1,1]], \"faces_vertices\": [[0,1,2]],\n"
+                       "\"file_frames\": [\n{\"frame_inherit\": true,\n\"vertices_coords\": [[0,0],\n[1,0,\"z\"]]}]}",
+                       "file_frames[0].vertices_coords[1][2]"),
+            5);
+}
+
 TEST(FoldErrors, NonFiniteNumber) {
   EXPECT_EQ(error_line("{\n\"vertices_coords\": [[0,0],\n[1e999,0]]}", "out of range"), 3);
   EXPECT_EQ(error_line("{\n\"vertices_coords\": [[0,0],[1,0],[0,1]],\n\"note\": \"1e999\",\n \"x\": -1e999}"), 4);
@@ -472,6 +512,11 @@ TEST(FoldErrors, BadSurfaces) {
   EXPECT_EQ(error_line("{\"vertices_coords\": [[0,0],[1,0],[1,1],[0,1],[0.5,0.5]],\n"
                        "\"edges_vertices\": [[0,1],[1,2],[2,3],[3,0],\n[0,4]]}",
                        "edges_vertices[4]: dangling"),
+            3);
+  // Two squares joined by a lone edge: it has the same region on both sides.
+  EXPECT_EQ(error_line("{\"vertices_coords\": [[0,0],[1,0],[1,1],[0,1],[2,0],[3,0],[3,1],[2,1]],\n"
+                       "\"edges_vertices\": [[0,1],[1,2],[2,3],[3,0],[4,5],[5,6],[6,7],[7,4],\n[1,4]]}",
+                       "edges_vertices[8]: is a bridge"),
             3);
   // Overlapping faces are found by build_pattern and reported as a ParseError.
   EXPECT_NE(error_line("{\"vertices_coords\": [[0,0],[1,0],[0,1],[0.1,0.1],[1.1,0.1],[0.1,1.1]],\n"

@@ -133,7 +133,7 @@ TEST(PmmlErrors, Values) {
   expect_error(with("0 0 1 0 1 1", "0 0 1 0 1 inf"), 6, "is not a finite number");
   expect_error(with("0 0 1 0 1 1", "0 0 1 0 1 1e999"), 6, "out of range");
   expect_error(with("<Coords>1 0 1 1</Coords>", "<Coords>1 0 1 x</Coords>"), 16, "'x' is not a number");
-  expect_error(with("<SpringConst>2.5</SpringConst>", "<SpringConst></SpringConst>"), 18, "needs 1 numbers, found 0");
+  expect_error(with("<SpringConst>2.5</SpringConst>", "<SpringConst></SpringConst>"), 18, "must hold one number, found 0");
 }
 
 TEST(Pmml, ReadPmmlReportsGeometryWithLine) {

@@ -32,6 +32,9 @@ struct FoldExport {
   std::optional<geometry::FoldState> state;   // written as edges_foldAngle of the key frame
   std::vector<geometry::FoldState> frames;     // written as file_frames (inheriting the key frame)
 };
+// Triangles become faces, every triangle side an edge (docs/FOLD.md). Joint IDs are not kept:
+// re-import numbers joints by edge index + 1. Throws std::invalid_argument when a state or
+// frame does not hold one angle per joint.
 std::string write_fold(const geometry::CreasePattern& pattern, const FoldExport& extra = {});
 
 }  // namespace foldkit::io
