@@ -1,16 +1,18 @@
 // FOLD import: JSON text → checked FOLD frames → faces laid flat → actors and joints →
-// build_pattern(). See docs/FOLD.md for the mapping and what is rejected.
+// build_pattern(). The first two steps live in fold_json.cpp and fold_fields.cpp; this file
+// holds the topology and the import. See docs/FOLD.md for the mapping and what is rejected.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <map>
 #include <numeric>
 #include <string_view>
 #include <unordered_map>
 
-#include <nlohmann/json.hpp>
+#include <boost/pending/disjoint_sets.hpp>
 
+#include "fold_fields.hpp"
+#include "fold_json.hpp"
 #include "fold_unfold.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/fold_format.hpp"
@@ -20,7 +22,15 @@
 namespace foldkit::io {
 namespace {
 
-using json = nlohmann::json;
+using detail::describe;
+using detail::indexed;
+using detail::inherit;
+using detail::json;
+using detail::LineMap;
+using detail::Loc;
+using detail::RawFrame;
+using detail::RawIndex;
+using detail::Reader;
 using fold_detail::Face;
 using geometry::Diagnostic;
 using geometry::Severity;
@@ -28,9 +38,6 @@ using geometry::Vec2;
 using geometry::Vec3;
 
 constexpr double kPi = 3.14159265358979323846;
-// FOLD needs about six levels; anything far deeper is not a FOLD file, and refusing it early
-// keeps every recursive step below (ours and nlohmann's) safe.
-constexpr int kMaxDepth = 64;
 // Relative to the bounding-box diagonal. Planarity allows for float32 exports (Origami
 // Simulator); development allows for coordinates rounded to six digits (Mathematica).
 constexpr double kPlanarTolerance = 1e-6;
@@ -39,457 +46,6 @@ constexpr double kDevelopTolerance = 1e-4;
 constexpr double kFlatFoldBand = 1e-5;
 // A J edge bent further than this (radians) means its "rigid" actor is not flat.
 constexpr double kJoinBendLimit = 1e-3;
-
-// ───────────────────────────── text positions ─────────────────────────────
-
-int line_at(std::string_view text, std::size_t offset) {
-  offset = std::min(offset, text.size());
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
-}
-
-// Error texts may quote the input; keep them printable whatever bytes the file held.
-std::string printable(std::string_view s) {
-  static const char* hex = "0123456789abcdef";
-  std::string out;
-  for (char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c >= 0x20 && c < 0x7f) {
-      out += ch;
-    } else {
-      out += "\\x";
-      out += hex[c >> 4U];
-      out += hex[c & 0xfU];
-    }
-  }
-  return out;
-}
-
-void check_text(std::string_view text, const std::string& name) {
-  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos)
-    throw ParseError(name, 1, "empty file: expected a FOLD JSON object");
-  int depth = 0;
-  int line = 1;
-  bool in_string = false;
-  bool escaped = false;
-  for (char c : text) {
-    if (c == '\n') ++line;
-    if (in_string) {
-      if (escaped) escaped = false;
-      else if (c == '\\') escaped = true;
-      else if (c == '"') in_string = false;
-    } else if (c == '"') {
-      in_string = true;
-    } else if (c == '[' || c == '{') {
-      if (++depth > kMaxDepth)
-        throw ParseError(name, line, "JSON nested deeper than " + std::to_string(kMaxDepth) + " levels");
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
-  }
-}
-
-// nlohmann reports number overflow (1e999) without a position; find the token ourselves.
-int overflow_line(std::string_view text) {
-  int line = 1;
-  bool in_string = false;
-  bool escaped = false;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '\n') ++line;
-    if (in_string) {
-      if (escaped) escaped = false;
-      else if (c == '\\') escaped = true;
-      else if (c == '"') in_string = false;
-      continue;
-    }
-    if (c == '"') {
-      in_string = true;
-    } else if (c == '-' || (c >= '0' && c <= '9')) {
-      std::size_t j = i;
-      while (j < text.size() && std::string_view("0123456789+-.eE").find(text[j]) != std::string_view::npos) ++j;
-      const std::string token(text.substr(i, j - i));
-      if (!std::isfinite(std::strtod(token.c_str(), nullptr))) return line;
-      i = j - 1;
-    }
-  }
-  return 1;
-}
-
-json parse_json(const std::string& text, const std::string& name) {
-  try {
-    return json::parse(text);
-  } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    // nlohmann: "[json.exception.parse_error.101] parse error at line L, column C: detail"
-    const std::size_t column = what.find("column ");
-    const std::size_t colon = column == std::string::npos ? std::string::npos : what.find(": ", column);
-    std::string detail = what;
-    if (colon != std::string::npos)
-      detail = "invalid JSON (" + what.substr(column, colon - column) + "): " + what.substr(colon + 2);
-    const std::size_t offset = e.byte > 0 ? e.byte - 1 : 0;
-    throw ParseError(name, line_at(text, offset), printable(detail));
-  } catch (const json::out_of_range&) {
-    throw ParseError(name, overflow_line(text), "number out of range (not a finite double)");
-  } catch (const json::exception& e) {
-    throw ParseError(name, 1, printable(e.what()));
-  }
-}
-
-// Where a JSON value starts. node indexes LineMap's containers (-1: not kept).
-struct Loc {
-  int node = -1;
-  int line = 1;
-};
-
-// Start lines of the JSON values, for messages about elements nlohmann has already parsed
-// (it keeps no positions). Runs on text nlohmann accepted, so it need not recheck syntax.
-class LineMap {
- public:
-  explicit LineMap(std::string_view text) : text_(text) { root_ = value(0); }
-  Loc root() const { return root_; }
-
-  Loc member(const Loc& at, std::string_view key) const {
-    if (at.node < 0) return {-1, at.line};
-    const Node& n = nodes_[static_cast<std::size_t>(at.node)];
-    for (std::size_t i = n.keys.size(); i-- > 0;)  // nlohmann keeps the last duplicate
-      if (n.keys[i] == key) return n.children[i];
-    return {-1, at.line};
-  }
-  Loc item(const Loc& at, std::size_t index) const {
-    if (at.node < 0) return {-1, at.line};
-    const Node& n = nodes_[static_cast<std::size_t>(at.node)];
-    if (n.object || index >= n.children.size()) return {-1, at.line};
-    return n.children[index];
-  }
-
- private:
-  // Containers this deep or shallower keep their children's lines: enough for
-  // file_frames[i].vertices_coords[j][k].
-  static constexpr int kKeptDepth = 4;
-  struct Node {
-    bool object = false;
-    std::vector<std::string> keys;  // raw (escapes kept); FOLD keys have none
-    std::vector<Loc> children;
-  };
-
-  char peek() const { return pos_ < text_.size() ? text_[pos_] : '\0'; }
-  void skip_space() {
-    while (pos_ < text_.size()) {
-      const char c = text_[pos_];
-      if (c == '\n') ++line_;
-      else if (c != ' ' && c != '\t' && c != '\r') break;
-      ++pos_;
-    }
-  }
-  std::string string_token() {
-    const std::size_t start = std::min(++pos_, text_.size());
-    while (pos_ < text_.size() && text_[pos_] != '"') {
-      if (text_[pos_] == '\\') ++pos_;
-      else if (text_[pos_] == '\n') ++line_;
-      ++pos_;
-    }
-    std::string s(text_.substr(start, std::min(pos_, text_.size()) - start));
-    ++pos_;
-    return s;
-  }
-  Loc value(int depth) {
-    skip_space();
-    const int line = line_;
-    const char c = peek();
-    if (c == '"') {
-      string_token();
-      return {-1, line};
-    }
-    if (c != '[' && c != '{') {
-      while (pos_ < text_.size()) {
-        const char d = text_[pos_];
-        if (d == ',' || d == ']' || d == '}' || d == ' ' || d == '\t' || d == '\r' || d == '\n') break;
-        ++pos_;
-      }
-      return {-1, line};
-    }
-    const bool object = c == '{';
-    const char close = object ? '}' : ']';
-    int id = -1;
-    if (depth <= kKeptDepth) {
-      id = static_cast<int>(nodes_.size());
-      nodes_.push_back(Node{object, {}, {}});
-    }
-    ++pos_;
-    skip_space();
-    if (peek() == close) {
-      ++pos_;
-      return {id, line};
-    }
-    while (pos_ < text_.size()) {
-      skip_space();
-      std::string key;
-      if (object) {
-        key = string_token();
-        skip_space();
-        ++pos_;  // ':'
-      }
-      const Loc child = value(depth + 1);
-      if (id >= 0) {
-        Node& n = nodes_[static_cast<std::size_t>(id)];
-        if (object) n.keys.push_back(std::move(key));
-        n.children.push_back(child);
-      }
-      skip_space();
-      const char next = peek();
-      ++pos_;
-      if (next != ',') break;
-    }
-    return {id, line};
-  }
-
-  std::string_view text_;
-  std::size_t pos_ = 0;
-  int line_ = 1;
-  std::vector<Node> nodes_;
-  Loc root_;
-};
-
-// ───────────────────────────── FOLD fields ─────────────────────────────
-
-template <class T>
-struct Field {
-  bool present = false;
-  T value{};
-  Loc loc;
-  std::string name;  // as in messages: "edges_vertices" or "file_frames[2].edges_vertices"
-};
-
-struct Coords {
-  std::vector<Vec3> points;
-  bool three_d = false;
-};
-using RawIndex = long long;  // range-checked once the vertex count is known
-
-// One frame's own keys (frame 0 is the file itself, file_frames[i] is frame i + 1).
-struct RawFrame {
-  Loc loc;
-  std::string prefix;
-  Field<Coords> coords;
-  Field<Coords> flat_unfold;
-  Field<std::vector<std::array<RawIndex, 2>>> edges;
-  Field<std::vector<char>> assignment;
-  Field<std::vector<std::optional<double>>> fold_angle;
-  Field<std::vector<std::vector<RawIndex>>> faces;
-  Field<std::string> title;
-  Field<std::vector<std::string>> classes;
-  bool inherit = false;
-  int parent = 0;
-  bool own_coords = false;  // before inheritance: does this frame carry its own?
-  bool own_fold_angle = false;
-};
-
-std::string indexed(const std::string& name, std::size_t i) { return name + "[" + std::to_string(i) + "]"; }
-
-std::string describe(const json& v) {
-  switch (v.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return v.get<bool>() ? "true" : "false";
-    case json::value_t::string: {
-      const auto& s = v.get_ref<const std::string&>();
-      return "a string (\"" + printable(s.substr(0, 20)) + (s.size() > 20 ? "…" : "") + "\")";
-    }
-    case json::value_t::array: return "an array";
-    case json::value_t::object: return "an object";
-    default: return "a number";
-  }
-}
-
-class Reader {
- public:
-  Reader(const std::string& name, const LineMap& lines) : name_(name), lines_(lines) {}
-
-  [[noreturn]] void fail(const Loc& at, const std::string& what, const std::string& message) const {
-    throw ParseError(name_, at.line, what.empty() ? message : what + ": " + message);
-  }
-  void warn(const Loc& at, const std::string& what, const std::string& message) {
-    warnings_.push_back(Diagnostic{Severity::Warning, at.line, what.empty() ? message : what + ": " + message});
-  }
-  geometry::Diagnostics& warnings() { return warnings_; }
-
-  double number(const json& v, const Loc& at, const std::string& what) const {
-    if (!v.is_number()) fail(at, what, "expected a number, found " + describe(v));
-    const double d = v.get<double>();
-    if (!std::isfinite(d)) fail(at, what, "not a finite number");
-    return d;
-  }
-
-  RawIndex index(const json& v, const Loc& at, const std::string& what) const {
-    constexpr auto kMax = static_cast<double>(std::numeric_limits<int>::max());
-    if (v.is_number_unsigned()) {
-      const auto u = v.get<std::uint64_t>();
-      if (u > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) fail(at, what, "index too large");
-      return static_cast<RawIndex>(u);
-    }
-    if (v.is_number_integer()) {
-      const auto s = v.get<std::int64_t>();
-      if (s > std::numeric_limits<int>::max() || s < std::numeric_limits<int>::min()) fail(at, what, "index too large");
-      return s;
-    }
-    if (v.is_number_float()) {
-      const double d = v.get<double>();
-      if (std::isfinite(d) && d == std::floor(d) && std::abs(d) <= kMax) return static_cast<RawIndex>(d);
-      fail(at, what, "expected a whole number as index, found " + format_number(d));
-    }
-    fail(at, what, "expected an index, found " + describe(v));
-  }
-
-  // The array under `key`, or nullptr when the key is absent.
-  template <class T>
-  const json* array_field(const json& obj, const Loc& at, const std::string& prefix, const char* key,
-                          Field<T>& field, const char* expected) const {
-    const auto it = obj.find(key);
-    if (it == obj.end()) return nullptr;
-    field.present = true;
-    field.loc = lines_.member(at, key);
-    field.name = prefix + key;
-    if (!it->is_array()) fail(field.loc, field.name, std::string("expected ") + expected + ", found " + describe(*it));
-    return &*it;
-  }
-
-  void read_coords(const json& obj, const Loc& at, const std::string& prefix, const char* key, Field<Coords>& f) {
-    const json* arr = array_field(obj, at, prefix, key, f, "an array of [x, y] or [x, y, z]");
-    if (!arr) return;
-    for (std::size_t i = 0; i < arr->size(); ++i) {
-      const json& p = (*arr)[i];
-      const Loc pl = lines_.item(f.loc, i);
-      const std::string what = indexed(f.name, i);
-      if (!p.is_array()) fail(pl, what, "expected [x, y] or [x, y, z], found " + describe(p));
-      if (p.size() != 2 && p.size() != 3)
-        fail(pl, what, "expected 2 or 3 coordinates, found " + std::to_string(p.size()));
-      Vec3 q = Vec3::Zero();
-      for (std::size_t j = 0; j < p.size(); ++j)
-        q[static_cast<Eigen::Index>(j)] = number(p[j], lines_.item(pl, j), indexed(what, j));
-      f.value.three_d = f.value.three_d || p.size() == 3;
-      f.value.points.push_back(q);
-    }
-  }
-
-  void read_edges(const json& obj, const Loc& at, const std::string& prefix, RawFrame& frame) {
-    auto& f = frame.edges;
-    const json* arr = array_field(obj, at, prefix, "edges_vertices", f, "an array of [vertex, vertex]");
-    if (!arr) return;
-    for (std::size_t i = 0; i < arr->size(); ++i) {
-      const json& e = (*arr)[i];
-      const Loc el = lines_.item(f.loc, i);
-      const std::string what = indexed(f.name, i);
-      if (!e.is_array() || e.size() != 2)
-        fail(el, what, "expected [vertex, vertex], found " +
-                           (e.is_array() ? "an array of " + std::to_string(e.size()) : describe(e)));
-      f.value.push_back({index(e[0], el, what), index(e[1], el, what)});
-    }
-  }
-
-  void read_assignment(const json& obj, const Loc& at, const std::string& prefix, RawFrame& frame) {
-    auto& f = frame.assignment;
-    const json* arr = array_field(obj, at, prefix, "edges_assignment", f, "an array of letters");
-    if (!arr) return;
-    for (std::size_t i = 0; i < arr->size(); ++i) {
-      const json& a = (*arr)[i];
-      const Loc al = lines_.item(f.loc, i);
-      const std::string text = a.is_string() ? a.get<std::string>() : std::string();
-      const char letter = text.size() == 1 ? static_cast<char>(std::toupper(static_cast<unsigned char>(text[0]))) : '?';
-      if (std::string_view("BMVFUCJ").find(letter) == std::string_view::npos)
-        fail(al, indexed(f.name, i), "expected one of B, M, V, F, U, C, J, found " + describe(a));
-      f.value.push_back(letter);
-    }
-  }
-
-  void read_fold_angle(const json& obj, const Loc& at, const std::string& prefix, RawFrame& frame) {
-    auto& f = frame.fold_angle;
-    const json* arr = array_field(obj, at, prefix, "edges_foldAngle", f, "an array of degrees");
-    if (!arr) return;
-    for (std::size_t i = 0; i < arr->size(); ++i) {
-      const json& a = (*arr)[i];
-      if (a.is_null()) {
-        f.value.emplace_back();
-        continue;
-      }
-      const Loc al = lines_.item(f.loc, i);
-      const double d = number(a, al, indexed(f.name, i));
-      if (std::abs(d) > 180.0) fail(al, indexed(f.name, i), format_number(d) + "° is outside [-180, 180]");
-      f.value.emplace_back(d);
-    }
-  }
-
-  void read_faces(const json& obj, const Loc& at, const std::string& prefix, RawFrame& frame) {
-    auto& f = frame.faces;
-    const json* arr = array_field(obj, at, prefix, "faces_vertices", f, "an array of vertex lists");
-    if (!arr) return;
-    for (std::size_t i = 0; i < arr->size(); ++i) {
-      const json& face = (*arr)[i];
-      const Loc fl = lines_.item(f.loc, i);
-      const std::string what = indexed(f.name, i);
-      if (!face.is_array()) fail(fl, what, "expected a list of vertices, found " + describe(face));
-      if (face.size() < 3) fail(fl, what, "a face needs at least 3 vertices, found " + std::to_string(face.size()));
-      std::vector<RawIndex> vs;
-      for (std::size_t j = 0; j < face.size(); ++j) vs.push_back(index(face[j], lines_.item(fl, j), what));
-      f.value.push_back(std::move(vs));
-    }
-  }
-
-  void read_metadata(const json& obj, const Loc& at, const std::string& prefix, RawFrame& frame) {
-    if (const auto it = obj.find("frame_title"); it != obj.end()) {
-      if (it->is_string()) {
-        frame.title.present = true;
-        frame.title.value = it->get<std::string>();
-      } else {
-        warn(lines_.member(at, "frame_title"), prefix + "frame_title", "not a string; ignored");
-      }
-    }
-    if (const auto it = obj.find("frame_classes"); it != obj.end()) {
-      if (!it->is_array()) {
-        warn(lines_.member(at, "frame_classes"), prefix + "frame_classes", "not an array; ignored");
-      } else {
-        frame.classes.present = true;
-        for (const json& c : *it)
-          if (c.is_string()) frame.classes.value.push_back(c.get<std::string>());
-      }
-    }
-  }
-
-  RawFrame read_frame(const json& obj, const Loc& at, const std::string& prefix, bool key_frame) {
-    RawFrame frame;
-    frame.loc = at;
-    frame.prefix = prefix;
-    read_metadata(obj, at, prefix, frame);
-    read_coords(obj, at, prefix, "vertices_coords", frame.coords);
-    if (key_frame) read_coords(obj, at, prefix, "vertices_flatUnfoldCoords", frame.flat_unfold);
-    read_edges(obj, at, prefix, frame);
-    read_assignment(obj, at, prefix, frame);
-    read_fold_angle(obj, at, prefix, frame);
-    read_faces(obj, at, prefix, frame);
-    frame.own_coords = frame.coords.present;
-    frame.own_fold_angle = frame.fold_angle.present;
-    return frame;
-  }
-
- private:
-  const std::string& name_;
-  const LineMap& lines_;
-  geometry::Diagnostics warnings_;
-};
-
-// A frame with what it inherits filled in (FOLD frame_inherit).
-RawFrame inherit(RawFrame child, const RawFrame& parent) {
-  if (!child.inherit) return child;
-  auto take = [](auto& mine, const auto& theirs) {
-    if (!mine.present) mine = theirs;
-  };
-  take(child.coords, parent.coords);
-  take(child.edges, parent.edges);
-  take(child.assignment, parent.assignment);
-  take(child.fold_angle, parent.fold_angle);
-  take(child.faces, parent.faces);
-  take(child.title, parent.title);
-  take(child.classes, parent.classes);
-  return child;
-}
 
 // ───────────────────────────── topology ─────────────────────────────
 
@@ -537,16 +93,6 @@ bool runs_forward(const Face& face, int a, int b) {
     if (face[i] == a) return face[(i + 1) % k] == b;
   return false;
 }
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-    return x;
-  }
-  void join(int a, int b) { parent[static_cast<std::size_t>(find(a))] = find(b); }
-};
 
 geometry::Assignment to_assignment(char letter) {
   switch (letter) {
@@ -928,12 +474,14 @@ bool Importer::lay_flat_planar(const std::vector<Vec2>& coords) {
     if (std::abs(area[f]) <= tiny) reader_.fail(face_loc(static_cast<int>(f)), face_name(static_cast<int>(f)), "degenerate face: no area");
   }
   // Connected pieces through shared sides.
-  UnionFind pieces(faces_.size());
+  std::vector<int> piece_rank(faces_.size()), piece_parent(faces_.size());
+  boost::disjoint_sets<int*, int*> pieces(piece_rank.data(), piece_parent.data());
+  for (std::size_t f = 0; f < faces_.size(); ++f) pieces.make_set(static_cast<int>(f));
   for (const Side& s : sides_.list)
-    if (s.faces.size() == 2) pieces.join(s.faces[0], s.faces[1]);
+    if (s.faces.size() == 2) pieces.union_set(s.faces[0], s.faces[1]);
   std::map<int, std::pair<int, int>> signs;  // piece → (counter-clockwise, clockwise) faces
   for (std::size_t f = 0; f < faces_.size(); ++f) {
-    auto& [ccw, cw] = signs[pieces.find(static_cast<int>(f))];
+    auto& [ccw, cw] = signs[pieces.find_set(static_cast<int>(f))];
     (area[f] > 0.0 ? ccw : cw) += 1;
   }
   std::vector<int> to_reverse;
@@ -941,7 +489,7 @@ bool Importer::lay_flat_planar(const std::vector<Vec2>& coords) {
     if (count.first > 0 && count.second > 0) return false;
     if (count.second > 0) {
       for (std::size_t f = 0; f < faces_.size(); ++f)
-        if (pieces.find(static_cast<int>(f)) == piece) to_reverse.push_back(static_cast<int>(f));
+        if (pieces.find_set(static_cast<int>(f)) == piece) to_reverse.push_back(static_cast<int>(f));
     }
   }
   if (!to_reverse.empty()) {
@@ -1004,7 +552,9 @@ void Importer::agree_with_assignments() {
 
 void Importer::form_actors_and_joints() {
   const std::size_t count = faces_.size();
-  UnionFind joined(count);
+  std::vector<int> joined_rank(count), joined_parent(count);
+  boost::disjoint_sets<int*, int*> joined(joined_rank.data(), joined_parent.data());
+  for (std::size_t f = 0; f < count; ++f) joined.make_set(static_cast<int>(f));
   for (const Side& s : sides_.list) {
     if (s.faces.size() != 2) continue;
     const char l = letter(s.edge);
@@ -1014,12 +564,12 @@ void Importer::form_actors_and_joints() {
     if (l == 'C')
       reader_.fail(assignment_loc(s.edge), what,
                    "cut edge (C) shared by " + faces_text + "; give each side of a cut its own vertices");
-    if (l == 'J') joined.join(s.faces[0], s.faces[1]);
+    if (l == 'J') joined.union_set(s.faces[0], s.faces[1]);
   }
   actor_of_face_.assign(count, -1);
   std::unordered_map<int, int> actor_of_root;
   for (std::size_t f = 0; f < count; ++f) {
-    const auto [it, added] = actor_of_root.emplace(joined.find(static_cast<int>(f)), static_cast<int>(first_face_of_actor_.size()));
+    const auto [it, added] = actor_of_root.emplace(joined.find_set(static_cast<int>(f)), static_cast<int>(first_face_of_actor_.size()));
     if (added) first_face_of_actor_.push_back(static_cast<int>(f));
     actor_of_face_[f] = it->second;
   }
@@ -1201,8 +751,8 @@ char Importer::letter(int edge) const {
 }  // namespace
 
 FoldImport parse_fold(const std::string& text, const std::string& name, const geometry::BuildOptions& options) {
-  check_text(text, name);
-  return Importer(text, name, options, parse_json(text, name)).run();
+  detail::check_text(text, name);
+  return Importer(text, name, options, detail::parse_json(text, name)).run();
 }
 
 FoldImport read_fold(const std::string& path, const geometry::BuildOptions& options) {

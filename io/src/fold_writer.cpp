@@ -88,7 +88,13 @@ const char* letter(Assignment a) {
   }
 }
 
-const char* letter_for_angle(double angle) { return angle > 0.0 ? "M" : angle < 0.0 ? "V" : "F"; }
+// A joint's letter under a state: the sign of its angle (positive is mountain in foldkit), and at
+// an angle of 0, which has no sign (the flat first frame of a sequence), its own assignment.
+const char* letter_for_angle(double angle, Assignment own) {
+  if (angle > 0.0) return "M";
+  if (angle < 0.0) return "V";
+  return letter(own);
+}
 
 // FOLD degrees, valley positive; chosen so that reading them back gives `angle` bit for bit.
 std::string fold_degrees(double angle) { return angle == 0.0 ? "0" : format_degrees(-angle); }
@@ -146,12 +152,15 @@ std::string write_fold(const CreasePattern& pattern, const FoldExport& extra) {
   for (std::size_t e = 0; e < edges.size(); ++e)
     if (edges[e].actors.size() == 2 && edges[e].actors[0] != edges[e].actors[1]) joint[e] = joint_of(pattern, edges[e]);
 
+  auto joint_letter = [&](std::size_t e) {
+    const Assignment own = pattern.joints()[static_cast<std::size_t>(joint[e])].assignment;
+    return extra.state ? letter_for_angle(extra.state->angles[joint[e]], own) : letter(own);
+  };
   std::vector<std::string> assignment;
   for (std::size_t e = 0; e < edges.size(); ++e) {
     if (edges[e].actors.size() == 1) assignment.emplace_back("\"B\"");
     else if (joint[e] < 0) assignment.emplace_back(edges[e].actors[0] == edges[e].actors[1] ? "\"J\"" : "\"U\"");
-    else if (extra.state) assignment.push_back(std::string("\"") + letter_for_angle(extra.state->angles[joint[e]]) + "\"");
-    else assignment.push_back(std::string("\"") + letter(pattern.joints()[static_cast<std::size_t>(joint[e])].assignment) + "\"");
+    else assignment.push_back(std::string("\"") + joint_letter(e) + "\"");
   }
   auto fold_angles = [&](const FoldState& state) {
     std::vector<std::string> angles;

@@ -302,6 +302,53 @@ TEST(FoldSign, FoldAngleIsNegatedAndNullMeansFlat) {
   EXPECT_EQ(again.frames[0].angles[0], fold.frames[0].angles[0]);
 }
 
+// Three strips side by side: a mountain crease at x = 1 (joint 9), a valley at x = 2 (joint 10).
+constexpr const char* kStrips = R"({
+  "vertices_coords": [[0,0],[1,0],[2,0],[3,0],[3,1],[2,1],[1,1],[0,1]],
+  "faces_vertices": [[0,1,6,7],[1,2,5,6],[2,3,4,5]],
+  "edges_vertices": [[0,1],[1,2],[2,3],[3,4],[4,5],[5,6],[6,7],[7,0],[1,6],[2,5]],
+  "edges_assignment": ["B","B","B","B","B","B","B","B","M","V"]
+})";
+
+// The letters and FOLD angles an export gives the creases, keyed by their x.
+std::map<double, std::pair<std::string, double>> crease_letters(const std::string& text) {
+  const json out = json::parse(text);
+  std::map<double, std::pair<std::string, double>> letters;
+  for (std::size_t e = 0; e < out["edges_vertices"].size(); ++e) {
+    const std::string l = out["edges_assignment"][e].get<std::string>();
+    if (l == "B" || l == "J") continue;
+    const double x = out["vertices_coords"][out["edges_vertices"][e][0].get<std::size_t>()][0].get<double>();
+    letters[x] = {l, out.contains("edges_foldAngle") ? out["edges_foldAngle"][e].get<double>() : 0.0};
+  }
+  return letters;
+}
+
+TEST(FoldWrite, JointAtAngleZeroKeepsItsOwnAssignment) {
+  const FoldImport fold = parse_fold(kStrips, "strips.fold");
+  ASSERT_EQ(fold.pattern.joints().size(), 2U);
+  EXPECT_EQ(joint(fold.pattern, 9).assignment, Assignment::Mountain);
+  EXPECT_EQ(joint(fold.pattern, 10).assignment, Assignment::Valley);
+
+  // An all-flat state (say, the first frame of a sequence) keeps M and V rather than writing F.
+  const std::string flat = write_fold(fold.pattern, FoldExport{geometry::FoldState::flat(fold.pattern), {}});
+  auto letters = crease_letters(flat);
+  ASSERT_EQ(letters.size(), 2U);
+  EXPECT_EQ(letters[1.0], std::make_pair(std::string("M"), 0.0));
+  EXPECT_EQ(letters[2.0], std::make_pair(std::string("V"), 0.0));
+  const FoldImport again = parse_fold(flat, "again.fold");
+  std::map<double, Assignment> reread;
+  for (const auto& j : again.pattern.joints()) reread[again.pattern.vertices()[j.v[0]].x()] = j.assignment;
+  EXPECT_EQ(reread, (std::map<double, Assignment>{{1.0, Assignment::Mountain}, {2.0, Assignment::Valley}}));
+
+  // A bent joint still takes its letter from the sign: the valley bent as a mountain is "M".
+  geometry::FoldState bent = geometry::FoldState::flat(fold.pattern);
+  bent.angles[*fold.pattern.joint_index(10)] = 0.5;
+  letters = crease_letters(write_fold(fold.pattern, FoldExport{bent, {}}));
+  EXPECT_EQ(letters[1.0].first, "M");
+  EXPECT_EQ(letters[2.0].first, "M");
+  EXPECT_LT(letters[2.0].second, 0.0);  // FOLD counts mountains negative
+}
+
 TEST(FoldImport, JoinEdgesMakeOneActor) {
   const std::string text = R"({
     "vertices_coords": [[0,0],[1,0],[1,1],[0,1],[2,0],[2,1]],

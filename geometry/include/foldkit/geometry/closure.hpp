@@ -1,0 +1,66 @@
+#pragma once
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "foldkit/geometry/crease_pattern.hpp"
+#include "foldkit/geometry/fold_state.hpp"
+#include "foldkit/geometry/kinematics.hpp"
+
+namespace foldkit::geometry {
+
+// The loop-closure equations of a crease pattern (paper Eq. 1): for every interior vertex the
+// product of the rotations about its creases, in counter-clockwise order, is the identity.
+// Residual of a vertex: the rotation vector of that product (3 rows, radians). A sheet with
+// holes also needs the fundamental cycles of the facet graph: for each joint outside the
+// spanning tree, the rigid motion by which the two ways round disagree (6 rows: rotation
+// vector, then translation divided by the pattern's size). The Jacobian is exact (Eq. 3–4:
+// the crease axes in the current pose, through the inverse left Jacobian of SO(3)).
+class ClosureSystem {
+ public:
+  explicit ClosureSystem(const CreasePattern& pattern, int root = 0);
+
+  Eigen::Index rows() const { return rows_; }
+  Eigen::Index cols() const { return static_cast<Eigen::Index>(pattern_->joints().size()); }
+  std::size_t vertex_loops() const { return loops_.size(); }
+  std::size_t hole_cycles() const { return cycles_.size(); }
+  const CreasePattern& pattern() const { return *pattern_; }
+
+  Eigen::VectorXd residual(const FoldState& state) const;
+  // Residual and Jacobian (rows × creases) in one pass.
+  void evaluate(const FoldState& state, Eigen::VectorXd& residual, Eigen::SparseMatrix<double>& jacobian) const;
+
+  // One error per loop (vertex loops first): the rotation angle of its product, radians; for a
+  // hole cycle the larger of its rotation angle and its relative translation.
+  std::vector<double> loop_errors(const FoldState& state) const;
+  double max_error(const FoldState& state) const;
+
+ private:
+  struct VertexLoop {
+    int vertex;
+    std::vector<int> joints;       // counter-clockwise; a crease passing straight through appears twice
+    std::vector<Eigen::Vector3d> axes;  // unit direction of each crease leaving the vertex
+  };
+  struct HoleCycle {
+    int joint;      // outside the spanning tree
+    int from, to;   // actors: `to` is reached from `from` through `joint`
+    double side;    // side of `to` relative to the joint's axis
+  };
+
+  void evaluate_vertex(const VertexLoop& loop, const FoldState& state, Eigen::Index row, Eigen::VectorXd& r,
+                       std::vector<Eigen::Triplet<double>>* jac) const;
+  void evaluate_cycles(const FoldState& state, Eigen::VectorXd& r, std::vector<Eigen::Triplet<double>>* jac) const;
+
+  const CreasePattern* pattern_;
+  KinematicTree tree_;
+  std::vector<VertexLoop> loops_;
+  std::vector<HoleCycle> cycles_;
+  double size_ = 1.0;
+  Eigen::Index rows_ = 0;
+};
+
+// Number of holes of the sheet: components of the facet graph minus its Euler characteristic.
+int hole_count(const CreasePattern& pattern);
+
+}  // namespace foldkit::geometry

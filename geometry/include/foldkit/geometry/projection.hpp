@@ -1,0 +1,28 @@
+#pragma once
+#include <string>
+
+#include "foldkit/geometry/closure.hpp"
+
+namespace foldkit::geometry {
+
+struct ProjectionOptions {
+  double tolerance = 1e-10;  // largest loop error (radians) accepted as closed
+  int max_iterations = 200;
+  // Keep each crease on the side (mountain/valley) it starts on: near the flat state, where the
+  // Jacobian drops rank, an unbiased step can flip creases to the other branch.
+  bool keep_signs = true;
+};
+
+struct ProjectionResult {
+  FoldState state;
+  bool converged = false;
+  int iterations = 0;
+  double error = 0.0;   // largest loop error at `state`
+  std::string message;  // why it stopped
+};
+
+// Levenberg–Marquardt with minimum-norm steps Δ = −Jᵀ(JJᵀ + λI)⁻¹ r (sparse LDLᵀ), damping
+// λ = μ‖r‖ adapted by the gain of each step. Angles stay within [−π, π].
+ProjectionResult project(const ClosureSystem& system, const FoldState& start, const ProjectionOptions& options = {});
+
+}  // namespace foldkit::geometry

@@ -1,0 +1,162 @@
+#include "foldkit/geometry/closure.hpp"
+
+#include <algorithm>
+
+#include <boost/graph/connected_components.hpp>
+
+#include "so3.hpp"
+
+namespace foldkit::geometry {
+namespace {
+
+using detail::Mat3;
+using detail::V3;
+
+V3 lift(const Vec2& p) { return V3(p.x(), p.y(), 0.0); }
+
+// A joint's motion in the world: unit axis ω and a point q on it, for the actor on `side`.
+struct Twist {
+  V3 w, v;  // v = q × ω
+};
+
+Twist joint_twist(const CreasePattern& p, int joint, double side, const Eigen::Isometry3d& parent) {
+  const Joint& j = p.joints()[joint];
+  const V3 a = lift(p.vertices()[j.v[0]]);
+  const V3 d = (lift(p.vertices()[j.v[1]]) - a).normalized();
+  const V3 w = parent.linear() * (side * d);
+  const V3 q = parent * a;
+  return {w, q.cross(w)};
+}
+
+}  // namespace
+
+int hole_count(const CreasePattern& pattern) {
+  std::size_t triangles = 0;
+  for (const Actor& a : pattern.actors()) triangles += a.triangles.size();
+  const long edges = static_cast<long>((3 * triangles + pattern.boundary_edges().size()) / 2);
+  const long euler = static_cast<long>(pattern.vertices().size()) - edges + static_cast<long>(triangles);
+  std::vector<int> component(pattern.actors().size());
+  const long components = pattern.actors().empty() ? 0 : boost::connected_components(pattern.facet_graph(), component.data());
+  return static_cast<int>(std::max(0L, components - euler));
+}
+
+ClosureSystem::ClosureSystem(const CreasePattern& pattern, int root) : pattern_(&pattern), tree_(make_tree(pattern, root)) {
+  for (const VertexStar& star : pattern.interior_vertices()) {
+    if (star.joints.empty()) continue;
+    VertexLoop loop{star.vertex, star.joints, {}};
+    for (double angle : star.directions) loop.axes.emplace_back(std::cos(angle), std::sin(angle), 0.0);
+    loops_.push_back(std::move(loop));
+  }
+  Eigen::AlignedBox2d box;
+  for (const Vec2& v : pattern.vertices()) box.extend(v);
+  size_ = std::max(box.diagonal().norm(), 1e-300);
+  // Around a hole no vertex loop closes the chain of facets: add every fundamental cycle.
+  if (hole_count(pattern) > 0) {
+    for (std::size_t j = 0; j < pattern.joints().size(); ++j) {
+      if (tree_.in_tree[j]) continue;
+      const auto& actors = pattern.joints()[j].actors;
+      cycles_.push_back({static_cast<int>(j), actors[0], actors[1], side_of(pattern, static_cast<int>(j), actors[1])});
+    }
+  }
+  rows_ = static_cast<Eigen::Index>(3 * loops_.size() + 6 * cycles_.size());
+}
+
+void ClosureSystem::evaluate_vertex(const VertexLoop& loop, const FoldState& state, Eigen::Index row, Eigen::VectorXd& r,
+                                    std::vector<Eigen::Triplet<double>>* jac) const {
+  // Crossing crease k counter-clockwise enters the facet on its left, which turns by −angle.
+  const std::size_t n = loop.joints.size();
+  Mat3 A = Mat3::Identity();
+  std::vector<V3> current_axes;
+  if (jac) current_axes.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (jac) current_axes.push_back(A * loop.axes[k]);
+    A = A * detail::rotation(loop.axes[k], -state.angles[loop.joints[k]]);
+  }
+  const V3 phi = detail::log_so3(A);
+  r.segment<3>(row) = phi;
+  if (!jac) return;
+  // ∂A/∂ρ_k · A⁻¹ = −[P_k d_k]×, with P_k the product before crease k (Eq. 3).
+  const Mat3 Jinv = detail::left_jacobian_inverse(phi);
+  for (std::size_t k = 0; k < n; ++k) {
+    const V3 column = -(Jinv * current_axes[k]);
+    for (int i = 0; i < 3; ++i) jac->emplace_back(row + i, loop.joints[k], column[i]);
+  }
+}
+
+void ClosureSystem::evaluate_cycles(const FoldState& state, Eigen::VectorXd& r, std::vector<Eigen::Triplet<double>>* jac) const {
+  if (cycles_.empty()) return;
+  const CreasePattern& p = *pattern_;
+  const std::vector<Eigen::Isometry3d> pose = facet_poses(p, tree_, state);
+  Eigen::Index row = static_cast<Eigen::Index>(3 * loops_.size());
+  for (const HoleCycle& c : cycles_) {
+    // W = T_from · G · T_to⁻¹ is the identity when the two ways round agree.
+    const Joint& j = p.joints()[c.joint];
+    const V3 a = lift(p.vertices()[j.v[0]]);
+    const V3 d = (lift(p.vertices()[j.v[1]]) - a).normalized();
+    Eigen::Isometry3d G = Eigen::Isometry3d::Identity();
+    G.linear() = detail::rotation(d, c.side * state.angles[c.joint]);
+    G.translation() = a - G.linear() * a;
+    const Eigen::Isometry3d W = pose[c.from] * G * pose[c.to].inverse();
+    const V3 phi = detail::log_so3(W.linear());
+    r.segment<3>(row) = phi;
+    r.segment<3>(row + 3) = W.translation() / size_;
+    if (jac) {
+      const Mat3 Jinv = detail::left_jacobian_inverse(phi);
+      const V3 t = W.translation();
+      // dW·W⁻¹ = Σ ξ (joints above `from`, and the cycle's joint) − Σ Ad_W ξ (joints above `to`).
+      auto add = [&](int joint, const Twist& xi, double sign) {
+        const V3 w = sign * xi.w, v = sign * xi.v;
+        const V3 rot = Jinv * w, trans = (v + w.cross(t)) / size_;
+        for (int i = 0; i < 3; ++i) {
+          jac->emplace_back(row + i, joint, rot[i]);
+          jac->emplace_back(row + 3 + i, joint, trans[i]);
+        }
+      };
+      add(c.joint, joint_twist(p, c.joint, c.side, pose[c.from]), 1.0);
+      for (int x = c.from; tree_.parent[x] >= 0; x = tree_.parent[x])
+        add(tree_.parent_joint[x], joint_twist(p, tree_.parent_joint[x], tree_.side[x], pose[tree_.parent[x]]), 1.0);
+      for (int x = c.to; tree_.parent[x] >= 0; x = tree_.parent[x]) {
+        const Twist xi = joint_twist(p, tree_.parent_joint[x], tree_.side[x], pose[tree_.parent[x]]);
+        const V3 w = W.linear() * xi.w;
+        add(tree_.parent_joint[x], {w, W.linear() * xi.v + t.cross(w)}, -1.0);
+      }
+    }
+    row += 6;
+  }
+}
+
+Eigen::VectorXd ClosureSystem::residual(const FoldState& state) const {
+  Eigen::VectorXd r(rows_);
+  for (std::size_t i = 0; i < loops_.size(); ++i) evaluate_vertex(loops_[i], state, static_cast<Eigen::Index>(3 * i), r, nullptr);
+  evaluate_cycles(state, r, nullptr);
+  return r;
+}
+
+void ClosureSystem::evaluate(const FoldState& state, Eigen::VectorXd& r, Eigen::SparseMatrix<double>& jacobian) const {
+  r.resize(rows_);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (std::size_t i = 0; i < loops_.size(); ++i)
+    evaluate_vertex(loops_[i], state, static_cast<Eigen::Index>(3 * i), r, &entries);
+  evaluate_cycles(state, r, &entries);
+  jacobian.resize(rows_, cols());
+  jacobian.setFromTriplets(entries.begin(), entries.end());  // sums the two entries of a straight crease
+}
+
+std::vector<double> ClosureSystem::loop_errors(const FoldState& state) const {
+  const Eigen::VectorXd r = residual(state);
+  std::vector<double> out;
+  out.reserve(loops_.size() + cycles_.size());
+  for (std::size_t i = 0; i < loops_.size(); ++i) out.push_back(r.segment<3>(static_cast<Eigen::Index>(3 * i)).norm());
+  for (std::size_t i = 0; i < cycles_.size(); ++i) {
+    const Eigen::Index row = static_cast<Eigen::Index>(3 * loops_.size() + 6 * i);
+    out.push_back(std::max(r.segment<3>(row).norm(), r.segment<3>(row + 3).norm()));
+  }
+  return out;
+}
+
+double ClosureSystem::max_error(const FoldState& state) const {
+  const std::vector<double> e = loop_errors(state);
+  return e.empty() ? 0.0 : *std::max_element(e.begin(), e.end());
+}
+
+}  // namespace foldkit::geometry

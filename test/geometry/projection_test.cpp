@@ -1,0 +1,142 @@
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/generators.hpp"
+#include "foldkit/geometry/mobility.hpp"
+#include "foldkit/geometry/projection.hpp"
+
+namespace {
+
+using namespace foldkit::geometry;
+namespace gen = generators;
+
+std::vector<double> random_sectors(int n, std::mt19937& rng, double smallest) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> s(n);
+  double sum = 0;
+  for (double& x : s) sum += (x = u(rng));
+  for (double& x : s) x = smallest + x / sum * (2 * M_PI - n * smallest);
+  return s;
+}
+
+TEST(Projection, ThousandRandomPerturbations) {
+  // A closed folded state of a degree-6 vertex, perturbed 1,000 times by up to 0.2 rad per crease.
+  std::mt19937 rng(6);
+  const CreasePattern p = build_or_throw(gen::single_vertex(random_sectors(6, rng, 0.3)));
+  const ClosureSystem sys(p);
+  FoldState start = FoldState::flat(p);
+  start.angles << 0.6, -0.5, 0.7, -0.4, 0.5, -0.6;
+  const ProjectionResult base = project(sys, start, {1e-12, 200, false});
+  ASSERT_TRUE(base.converged) << base.message;
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  int ok = 0;
+  double worst = 0;
+  for (int trial = 0; trial < 1000; ++trial) {
+    FoldState s = base.state;
+    for (Eigen::Index i = 0; i < s.angles.size(); ++i) s.angles[i] += u(rng);
+    const ProjectionResult r = project(sys, s, {1e-10, 100, false});
+    ok += r.converged;
+    if (r.converged) worst = std::max(worst, r.error);
+    EXPECT_TRUE(r.state.angles.allFinite());
+  }
+  EXPECT_GE(ok, 995) << "success rate " << ok / 10.0 << "%";
+  EXPECT_LE(worst, 1e-10);
+}
+
+TEST(Projection, MultiVertexPerturbations) {
+  const CreasePattern p = build_or_throw(gen::miura(3, 3));
+  const ClosureSystem sys(p);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-0.15, 0.15);
+  int ok = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    FoldState s = FoldState::flat(p);
+    for (std::size_t j = 0; j < p.joints().size(); ++j) {
+      const double sign = p.joints()[j].assignment == Assignment::Mountain ? 1.0 : -1.0;
+      s.angles[static_cast<Eigen::Index>(j)] = sign * 0.6 + u(rng);
+    }
+    ok += project(sys, s).converged;
+  }
+  EXPECT_GE(ok, 198);
+}
+
+TEST(Projection, NearFlatKeepsTheAssignedSigns) {
+  // At the flat state every vertex loses rank; small angles along the Miura assignment must
+  // project onto the folded branch with every mountain still a mountain.
+  const CreasePattern p = build_or_throw(gen::miura(4, 4));
+  const ClosureSystem sys(p);
+  FoldState s = FoldState::flat(p);
+  for (std::size_t j = 0; j < p.joints().size(); ++j)
+    s.angles[static_cast<Eigen::Index>(j)] = (p.joints()[j].assignment == Assignment::Mountain ? 1 : -1) * 1e-3;
+  const ProjectionResult r = project(sys, s);
+  ASSERT_TRUE(r.converged) << r.message;
+  for (Eigen::Index j = 0; j < s.angles.size(); ++j) EXPECT_GT(r.state.angles[j] * s.angles[j], 0.0) << j;
+}
+
+TEST(Projection, ReportsFailure) {
+  const CreasePattern p = build_or_throw(gen::single_vertex({1.0, 1.0, 1.0, 2 * M_PI - 3.0}));
+  const ClosureSystem sys(p);
+  FoldState s = FoldState::flat(p);
+  s.angles << 2.5, 2.5, 2.5, 2.5;
+  const ProjectionResult r = project(sys, s, {1e-10, 3, true});
+  EXPECT_FALSE(r.converged);
+  EXPECT_FALSE(r.message.empty());
+  EXPECT_GT(r.error, 1e-10);
+  s.angles[1] = std::nan("");
+  const ProjectionResult bad = project(sys, s);
+  EXPECT_FALSE(bad.converged);
+  EXPECT_NE(bad.message.find("non-finite"), std::string::npos);
+}
+
+TEST(NumericalExtremes, SliverSectorsHighDegreeAndNearPi) {
+  std::mt19937 rng(9);
+  // Sector angles down to 1e-6 rad.
+  std::vector<double> sliver = random_sectors(8, rng, 0.2);
+  sliver[0] -= 1e-6 - 0.0;
+  sliver[1] += sliver[0] - 1e-6;
+  sliver[0] = 1e-6;
+  double sum = 0;
+  for (double x : sliver) sum += x;
+  sliver.back() += 2 * M_PI - sum;
+  // Degree 256.
+  const std::vector<double> many = random_sectors(256, rng, 1e-3);
+  for (const auto& sectors : {sliver, many}) {
+    const CreasePattern p = build_or_throw(gen::single_vertex(sectors));
+    const ClosureSystem sys(p);
+    EXPECT_EQ(mobility(sys, FoldState::flat(p)).dof, static_cast<int>(sectors.size()) - 2);
+    std::uniform_real_distribution<double> u(-0.3, 0.3);
+    FoldState s = FoldState::flat(p);
+    for (Eigen::Index i = 0; i < s.angles.size(); ++i) s.angles[i] = u(rng);
+    Eigen::VectorXd r;
+    Eigen::SparseMatrix<double> J;
+    sys.evaluate(s, r, J);
+    EXPECT_TRUE(r.allFinite());
+    EXPECT_TRUE(Eigen::MatrixXd(J).allFinite());
+    const ProjectionResult pr = project(sys, s, {1e-10, 300, false});
+    EXPECT_TRUE(pr.state.angles.allFinite());
+    EXPECT_TRUE(std::isfinite(pr.error));
+    EXPECT_TRUE(pr.converged) << sectors.size() << ": " << pr.message;
+  }
+  // Fold angles at and near ±180°: a degree-4 vertex folded flat.
+  const CreasePattern p = build_or_throw(gen::single_vertex({M_PI / 2, M_PI / 2, M_PI / 2, M_PI / 2}));
+  const ClosureSystem sys(p);
+  for (double a : {M_PI, M_PI - 1e-12, -M_PI, M_PI - 1e-6}) {
+    FoldState s = FoldState::flat(p);
+    s.angles << a, 0, a, 0;  // one straight crease line folded flat: both halves alike
+    Eigen::VectorXd r;
+    Eigen::SparseMatrix<double> J;
+    sys.evaluate(s, r, J);
+    EXPECT_TRUE(r.allFinite()) << a;
+    EXPECT_TRUE(Eigen::MatrixXd(J).allFinite()) << a;
+    EXPECT_LT(sys.max_error(s), 1e-9) << a;
+    FoldState broken = s;
+    broken.angles[1] = 1.0;
+    EXPECT_TRUE(std::isfinite(sys.max_error(broken)));
+    EXPECT_GT(sys.max_error(broken), 0.1);
+  }
+}
+
+}  // namespace
