@@ -2,7 +2,10 @@
 #include <iostream>
 
 #include "cli_common.hpp"
+#include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/generators.hpp"
+#include "foldkit/geometry/mobility.hpp"
+#include "foldkit/geometry/projection.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/fold_format.hpp"
@@ -26,6 +29,33 @@ geometry::FoldSequence zigzag(const geometry::CreasePattern& strip, double degre
   return seq;
 }
 
+// Folds a pattern by projecting a rough start onto the closure manifold, writes the fold as CMML
+// and FOLD (frames flat → folded), and reports mobility before and after.
+nlohmann::json fold_stage(const geometry::CreasePattern& pattern, const geometry::FoldState& rough, const std::string& base) {
+  const geometry::ClosureSystem system(pattern);
+  const geometry::ProjectionResult r = geometry::project(system, rough);
+  if (!r.converged) throw std::runtime_error(base + ": projection failed: " + r.message);
+  const geometry::FoldSequence seq = geometry::sequence_to(pattern, r.state, 30.0 * M_PI / 180.0, pattern.title() + " folded");
+  io::write_file_atomic(base + "-folded.cmml", io::write_cmml(seq));
+  io::write_file_atomic(base + "-folded.fold", io::write_fold(pattern, {r.state, {geometry::FoldState::flat(pattern), r.state}}));
+  return {{"dof_flat", geometry::mobility(system, geometry::FoldState::flat(pattern)).dof},
+          {"dof_folded", geometry::mobility(system, r.state).dof},
+          {"closure_error", r.error},
+          {"iterations", r.iterations}};
+}
+
+// A rough start for each folded example: signs from the assignment where there is one.
+geometry::FoldState rough_start(const std::string& name, const geometry::CreasePattern& p) {
+  geometry::FoldState s = geometry::FoldState::flat(p);
+  for (std::size_t j = 0; j < p.joints().size(); ++j) {
+    const auto i = static_cast<Eigen::Index>(j);
+    if (name == "degree8-vertex") s.angles[i] = j % 2 ? -0.45 : 0.5;
+    if (name == "miura-4x4") s.angles[i] = p.joints()[j].assignment == geometry::Assignment::Mountain ? 0.6 : -0.6;
+  }
+  if (name == "boat") s.angles << 0.8, -0.8, -0.8, 0.8, -0.8, -0.8, 0, 0, -0.8, -0.8;  // hull up, bow and stern up
+  return s;
+}
+
 int run(const std::string& dir) {
   fs::create_directories(dir);
   const std::vector<std::pair<std::string, geometry::PatternSpec>> examples = {
@@ -36,7 +66,10 @@ int run(const std::string& dir) {
       {"cube-sheet-2", gen::cube_sheet(2)},
       {"strip-5", gen::strip(5)},
   };
-  nlohmann::json report = {{"output", dir}, {"stages", {"generate", "validate", "convert"}}, {"patterns", nlohmann::json::object()}};
+  nlohmann::json report = {{"output", dir},
+                           {"stages", {"generate", "validate", "convert", "kinematics"}},
+                           {"patterns", nlohmann::json::object()},
+                           {"kinematics", nlohmann::json::object()}};
   for (const auto& [name, spec] : examples) {
     const geometry::CreasePattern pattern = geometry::build_or_throw(spec);
     const std::string base = (fs::path(dir) / name).string();
@@ -49,6 +82,13 @@ int run(const std::string& dir) {
     report["patterns"][name] = pattern_summary(pattern);
     std::cerr << "[demo] " << name << ": " << pattern.actors().size() << " actors, " << pattern.joints().size()
               << " joints -> " << base << ".{pmml,svg,fold}\n";
+    if (name == "degree8-vertex" || name == "boat" || name == "miura-4x4") {
+      const nlohmann::json k = fold_stage(pattern, rough_start(name, pattern), base);
+      report["kinematics"][name] = k;
+      std::cerr << "[demo] " << name << ": DOF " << k["dof_flat"] << " flat, " << k["dof_folded"]
+                << " folded (closure error " << k["closure_error"].get<double>() << " rad) -> " << base
+                << "-folded.{cmml,fold}\n";
+    }
     if (name == "strip-5") {
       const geometry::FoldSequence seq = zigzag(pattern, 90.0);
       io::write_file_atomic(base + "-zigzag.cmml", io::write_cmml(seq));

@@ -59,10 +59,28 @@ ClosureSystem::ClosureSystem(const CreasePattern& pattern, int root) : pattern_(
     }
   }
   rows_ = static_cast<Eigen::Index>(3 * loops_.size() + 6 * cycles_.size());
+
+  // Lay out the Jacobian once, at the flat state (the structure does not depend on the state).
+  std::vector<Eigen::Triplet<double>> entries;
+  Sink collect{&entries};
+  Eigen::VectorXd r(rows_);
+  evaluate_into(FoldState::flat(pattern), r, &collect);
+  layout_.resize(rows_, cols());
+  std::vector<Eigen::Triplet<double>> ones;
+  ones.reserve(entries.size());
+  for (const auto& t : entries) ones.emplace_back(t.row(), t.col(), 1.0);
+  layout_.setFromTriplets(ones.begin(), ones.end());
+  layout_.makeCompressed();
+  slots_.reserve(entries.size());
+  for (const auto& t : entries) {
+    const int* begin = layout_.innerIndexPtr() + layout_.outerIndexPtr()[t.col()];
+    const int* end = layout_.innerIndexPtr() + layout_.outerIndexPtr()[t.col() + 1];
+    slots_.push_back(static_cast<int>(std::lower_bound(begin, end, static_cast<int>(t.row())) - layout_.innerIndexPtr()));
+  }
 }
 
 void ClosureSystem::evaluate_vertex(const VertexLoop& loop, const FoldState& state, Eigen::Index row, Eigen::VectorXd& r,
-                                    std::vector<Eigen::Triplet<double>>* jac) const {
+                                    Sink* jac) const {
   // Crossing crease k counter-clockwise enters the facet on its left, which turns by −angle.
   const std::size_t n = loop.joints.size();
   Mat3 A = Mat3::Identity();
@@ -79,11 +97,11 @@ void ClosureSystem::evaluate_vertex(const VertexLoop& loop, const FoldState& sta
   const Mat3 Jinv = detail::left_jacobian_inverse(phi);
   for (std::size_t k = 0; k < n; ++k) {
     const V3 column = -(Jinv * current_axes[k]);
-    for (int i = 0; i < 3; ++i) jac->emplace_back(row + i, loop.joints[k], column[i]);
+    for (int i = 0; i < 3; ++i) jac->add(row + i, loop.joints[k], column[i]);
   }
 }
 
-void ClosureSystem::evaluate_cycles(const FoldState& state, Eigen::VectorXd& r, std::vector<Eigen::Triplet<double>>* jac) const {
+void ClosureSystem::evaluate_cycles(const FoldState& state, Eigen::VectorXd& r, Sink* jac) const {
   if (cycles_.empty()) return;
   const CreasePattern& p = *pattern_;
   const std::vector<Eigen::Isometry3d> pose = facet_poses(p, tree_, state);
@@ -108,8 +126,8 @@ void ClosureSystem::evaluate_cycles(const FoldState& state, Eigen::VectorXd& r, 
         const V3 w = sign * xi.w, v = sign * xi.v;
         const V3 rot = Jinv * w, trans = (v + w.cross(t)) / size_;
         for (int i = 0; i < 3; ++i) {
-          jac->emplace_back(row + i, joint, rot[i]);
-          jac->emplace_back(row + 3 + i, joint, trans[i]);
+          jac->add(row + i, joint, rot[i]);
+          jac->add(row + 3 + i, joint, trans[i]);
         }
       };
       add(c.joint, joint_twist(p, c.joint, c.side, pose[c.from]), 1.0);
@@ -125,21 +143,28 @@ void ClosureSystem::evaluate_cycles(const FoldState& state, Eigen::VectorXd& r, 
   }
 }
 
+void ClosureSystem::evaluate_into(const FoldState& state, Eigen::VectorXd& r, Sink* jac) const {
+  for (std::size_t i = 0; i < loops_.size(); ++i) evaluate_vertex(loops_[i], state, static_cast<Eigen::Index>(3 * i), r, jac);
+  evaluate_cycles(state, r, jac);
+}
+
 Eigen::VectorXd ClosureSystem::residual(const FoldState& state) const {
   Eigen::VectorXd r(rows_);
-  for (std::size_t i = 0; i < loops_.size(); ++i) evaluate_vertex(loops_[i], state, static_cast<Eigen::Index>(3 * i), r, nullptr);
-  evaluate_cycles(state, r, nullptr);
+  evaluate_into(state, r, nullptr);
   return r;
 }
 
 void ClosureSystem::evaluate(const FoldState& state, Eigen::VectorXd& r, Eigen::SparseMatrix<double>& jacobian) const {
   r.resize(rows_);
-  std::vector<Eigen::Triplet<double>> entries;
-  for (std::size_t i = 0; i < loops_.size(); ++i)
-    evaluate_vertex(loops_[i], state, static_cast<Eigen::Index>(3 * i), r, &entries);
-  evaluate_cycles(state, r, &entries);
-  jacobian.resize(rows_, cols());
-  jacobian.setFromTriplets(entries.begin(), entries.end());  // sums the two entries of a straight crease
+  const bool same_layout =
+      jacobian.isCompressed() && jacobian.rows() == rows_ && jacobian.cols() == cols() &&
+      jacobian.nonZeros() == layout_.nonZeros() &&
+      std::equal(layout_.outerIndexPtr(), layout_.outerIndexPtr() + cols() + 1, jacobian.outerIndexPtr()) &&
+      std::equal(layout_.innerIndexPtr(), layout_.innerIndexPtr() + layout_.nonZeros(), jacobian.innerIndexPtr());
+  if (!same_layout) jacobian = layout_;
+  std::fill(jacobian.valuePtr(), jacobian.valuePtr() + jacobian.nonZeros(), 0.0);  // a straight crease adds twice
+  Sink sink{nullptr, jacobian.valuePtr(), slots_.data()};
+  evaluate_into(state, r, &sink);
 }
 
 std::vector<double> ClosureSystem::loop_errors(const FoldState& state) const {

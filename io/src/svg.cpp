@@ -43,7 +43,7 @@ std::string write_svg(const geometry::CreasePattern& pattern, const SvgOptions& 
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << format_number(box.sizes().x() * s + 2 * margin)
       << "\" height=\"" << format_number(box.sizes().y() * s + 2 * margin) << "\">\n"
       << "  <title>" << detail::escape_xml(pattern.title()) << "</title>\n"
-      << "  <g id=\"facets\" fill=\"#f4f1e8\" stroke=\"none\">\n";
+      << "  <g id=\"facets\" fill=\"#f4f1e8\" stroke=\"#f4f1e8\" stroke-width=\"0.75\" stroke-linejoin=\"round\">\n";
   for (const auto& a : pattern.actors())
     for (const auto& t : a.triangles)
       out << "    <polygon data-actor=\"" << a.id << "\" points=\"" << X(V[t.v[0]]) << ',' << Y(V[t.v[0]]) << ' '

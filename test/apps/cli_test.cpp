@@ -182,9 +182,71 @@ TEST(Cli, DemoWritesItsFolder) {
   ASSERT_EQ(d.exit, 0) << d.err;
   const auto report = nlohmann::json::parse(d.out);
   EXPECT_EQ(report["patterns"]["boat"]["actors"], 8);
-  for (const char* f : {"boat.pmml", "boat.svg", "boat.fold", "miura-4x4.pmml", "strip-5-zigzag.cmml", "report.json"})
+  EXPECT_EQ(report["kinematics"]["degree8-vertex"]["dof_flat"], 6);
+  EXPECT_EQ(report["kinematics"]["degree8-vertex"]["dof_folded"], 5);
+  EXPECT_EQ(report["kinematics"]["boat"]["dof_folded"], 1);
+  EXPECT_EQ(report["kinematics"]["miura-4x4"]["dof_folded"], 1);
+  EXPECT_LT(report["kinematics"]["miura-4x4"]["closure_error"].get<double>(), 1e-10);
+  for (const char* f : {"boat.pmml", "boat.svg", "boat.fold", "boat-folded.cmml", "miura-4x4.pmml", "miura-4x4-folded.fold",
+                        "strip-5-zigzag.cmml", "report.json"})
     EXPECT_TRUE(fs::exists(dir + "/" + f)) << f;
   EXPECT_EQ(foldkit({"validate", dir + "/strip-5-zigzag.cmml", "--pattern", dir + "/strip-5.pmml"}).exit, 0);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CliKinematics, DofAndProject) {
+  const std::string dir = temp_dir();
+  ASSERT_EQ(foldkit({"generate", "single-vertex", "--degree", "8", "-o", dir + "/v8.pmml"}).exit, 0);
+  const CliResult flat = foldkit({"dof", dir + "/v8.pmml", "--json"});
+  ASSERT_EQ(flat.exit, 0) << flat.err;
+  const auto f = nlohmann::json::parse(flat.out);
+  EXPECT_EQ(f["dof"], 6);  // paper Fig. 2a
+  EXPECT_EQ(f["rank"], 2);
+  EXPECT_EQ(f["creases"], 8);
+  EXPECT_GT(f["tolerance"].get<double>(), 0.0);
+  // An unclosed start: every crease at ±30°, alternating.
+  std::ofstream start(dir + "/start.cmml");
+  start << "<CMML><Title>start</Title>\n";
+  for (int j = 1; j <= 8; ++j)
+    start << "<Fold><EventNumber>1</EventNumber><ID>" << j << "</ID><FoldAngle>" << (j % 2 ? 30 : -25)
+          << "</FoldAngle><Velocity>10</Velocity></Fold>\n";
+  start << "</CMML>\n";
+  start.close();
+  const CliResult open = foldkit({"dof", dir + "/v8.pmml", "--state", dir + "/start.cmml", "--json"});
+  EXPECT_GT(nlohmann::json::parse(open.out)["closure_error"].get<double>(), 1e-3);
+  const CliResult proj = foldkit({"project", dir + "/v8.pmml", "--state", dir + "/start.cmml", "-o", dir + "/closed.cmml", "--json"});
+  ASSERT_EQ(proj.exit, 0) << proj.err;
+  const auto p = nlohmann::json::parse(proj.out);
+  EXPECT_TRUE(p["converged"].get<bool>());
+  EXPECT_LT(p["closure_error"].get<double>(), 1e-10);
+  const CliResult folded = foldkit({"dof", dir + "/v8.pmml", "--state", dir + "/closed.cmml", "--json"});
+  const auto d = nlohmann::json::parse(folded.out);
+  EXPECT_EQ(d["dof"], 5);  // paper Fig. 2b
+  EXPECT_LT(d["closure_error"].get<double>(), 1e-9);
+}
+
+TEST(CliKinematics, ProjectFailureWritesNothing) {
+  const std::string dir = temp_dir();
+  ASSERT_EQ(foldkit({"generate", "single-vertex", "--degree", "4", "-o", dir + "/v4.pmml"}).exit, 0);
+  std::ofstream(dir + "/far.cmml") << "<CMML><Title>far</Title>\n"
+                                      "<Fold><EventNumber>1</EventNumber><ID>1</ID><FoldAngle>170</FoldAngle><Velocity>10</Velocity></Fold>\n"
+                                      "<Fold><EventNumber>1</EventNumber><ID>2</ID><FoldAngle>170</FoldAngle><Velocity>10</Velocity></Fold>\n"
+                                      "<Fold><EventNumber>1</EventNumber><ID>3</ID><FoldAngle>170</FoldAngle><Velocity>10</Velocity></Fold>\n"
+                                      "<Fold><EventNumber>1</EventNumber><ID>4</ID><FoldAngle>170</FoldAngle><Velocity>10</Velocity></Fold>\n"
+                                      "</CMML>\n";
+  const CliResult r = foldkit({"project", dir + "/v4.pmml", "--state", dir + "/far.cmml", "-o", dir + "/out.cmml",
+                               "--max-iterations", "2", "--json"});
+  EXPECT_EQ(r.exit, 4) << r.err;
+  EXPECT_FALSE(nlohmann::json::parse(r.out)["converged"].get<bool>());
+  EXPECT_FALSE(fs::exists(dir + "/out.cmml"));
+  std::ofstream(dir + "/unknown.cmml") << "<CMML><Title>t</Title>\n<Fold><EventNumber>1</EventNumber><ID>9</ID>"
+                                          "<FoldAngle>10</FoldAngle><Velocity>10</Velocity></Fold></CMML>\n";
+  const CliResult bad = foldkit({"dof", dir + "/v4.pmml", "--state", dir + "/unknown.cmml"});
+  EXPECT_EQ(bad.exit, 1);
+  EXPECT_NE(bad.err.find("unknown.cmml:2: "), std::string::npos) << bad.err;
 }
 
 }  // namespace

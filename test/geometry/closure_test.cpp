@@ -92,6 +92,12 @@ TEST(Closure, DegreeFourModesMatchClosedForms) {
     const double r0 = 2 * std::atan(std::sin((alpha - beta) / 2) / std::sin((alpha + beta) / 2) * std::tan(t / 2));
     two.angles << r0, t, -r0, t;  // mode II: ρ1 = ρ3, ρ2 = −ρ0
     EXPECT_LT(sys.max_error(two), 1e-12) << "mode II at " << t;
+    // Maekawa: mountains and valleys differ by two in both modes.
+    for (const FoldState* m : {&one, &two}) {
+      int mountains = 0, valleys = 0;
+      for (Eigen::Index k = 0; k < 4; ++k) (m->angles[k] > 0 ? mountains : valleys) += 1;
+      EXPECT_EQ(std::abs(mountains - valleys), 2) << t;
+    }
     // Driving one crease alone breaks closure.
     FoldState lone = FoldState::flat(p);
     lone.angles[0] = t;
@@ -236,6 +242,33 @@ TEST(Mobility, BoatFoldsWithOneDof) {
     EXPECT_NEAR(std::tan(std::abs(a[1]) / 2), std::cos(beta) * std::tan(std::abs(a[4]) / 2), 1e-10);
     EXPECT_NEAR(a[0], -a[1], 1e-10);  // the bow's keel turns against the middle keel
     EXPECT_NEAR(a[6], 0.0, 1e-10);    // the middle vertex folds along its keel only
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// A crease that runs straight through a vertex (one joint over two collinear edges): its two
+// halves enter that vertex's loop as d and −d, which cancel at any angle.
+TEST(Closure, StraightCreaseThroughAVertex) {
+  PatternSpec s;
+  ActorSpec left{1, {}, 0}, right{2, {}, 0};
+  left.triangles = {{{Vec2(0, 0), Vec2(1, 0), Vec2(1, 1)}, 0}, {{Vec2(0, 0), Vec2(1, 1), Vec2(0, 2)}, 0},
+                    {{Vec2(0, 2), Vec2(1, 1), Vec2(1, 2)}, 0}};
+  right.triangles = {{{Vec2(1, 0), Vec2(2, 0), Vec2(1, 1)}, 0}, {{Vec2(1, 1), Vec2(2, 0), Vec2(2, 2)}, 0},
+                     {{Vec2(1, 1), Vec2(2, 2), Vec2(1, 2)}, 0}};
+  s.actors = {left, right};
+  s.joints = {{7, {Vec2(1, 0), Vec2(1, 2)}, {1, 2}, 1.0, 0.1, Assignment::Unassigned, 0}};
+  const CreasePattern p = build_or_throw(s);
+  const ClosureSystem sys(p);
+  ASSERT_EQ(sys.vertex_loops(), 1u);
+  for (double a : {0.4, -2.0, M_PI}) {
+    FoldState st = FoldState::flat(p);
+    st.angles[0] = a;
+    EXPECT_LT(sys.max_error(st), 1e-15);
+    EXPECT_LT(analytic_jacobian(sys, st).cwiseAbs().maxCoeff(), 1e-15);
+    EXPECT_EQ(mobility(sys, st).dof, 1);
   }
 }
 

@@ -28,7 +28,8 @@ class ClosureSystem {
   const CreasePattern& pattern() const { return *pattern_; }
 
   Eigen::VectorXd residual(const FoldState& state) const;
-  // Residual and Jacobian (rows × creases) in one pass.
+  // Residual and Jacobian (rows × creases) in one pass. The Jacobian's sparsity is fixed: a
+  // matrix from an earlier call is refilled in place, without allocating.
   void evaluate(const FoldState& state, Eigen::VectorXd& residual, Eigen::SparseMatrix<double>& jacobian) const;
 
   // One error per loop (vertex loops first): the rotation angle of its product, radians; for a
@@ -48,9 +49,22 @@ class ClosureSystem {
     double side;    // side of `to` relative to the joint's axis
   };
 
-  void evaluate_vertex(const VertexLoop& loop, const FoldState& state, Eigen::Index row, Eigen::VectorXd& r,
-                       std::vector<Eigen::Triplet<double>>* jac) const;
-  void evaluate_cycles(const FoldState& state, Eigen::VectorXd& r, std::vector<Eigen::Triplet<double>>* jac) const;
+  // Receives Jacobian entries in a fixed order: collected as triplets once, to lay out the
+  // sparsity pattern, then added straight into their slots of the value array.
+  struct Sink {
+    std::vector<Eigen::Triplet<double>>* triplets = nullptr;
+    double* values = nullptr;
+    const int* slots = nullptr;
+    std::size_t next = 0;
+    void add(Eigen::Index row, Eigen::Index col, double v) {
+      if (triplets) triplets->emplace_back(row, col, v);
+      else values[slots[next++]] += v;
+    }
+  };
+
+  void evaluate_vertex(const VertexLoop& loop, const FoldState& state, Eigen::Index row, Eigen::VectorXd& r, Sink* jac) const;
+  void evaluate_cycles(const FoldState& state, Eigen::VectorXd& r, Sink* jac) const;
+  void evaluate_into(const FoldState& state, Eigen::VectorXd& r, Sink* jac) const;
 
   const CreasePattern* pattern_;
   KinematicTree tree_;
@@ -58,6 +72,8 @@ class ClosureSystem {
   std::vector<HoleCycle> cycles_;
   double size_ = 1.0;
   Eigen::Index rows_ = 0;
+  Eigen::SparseMatrix<double> layout_;   // the Jacobian's structure
+  std::vector<int> slots_;               // value index of each entry, in Sink order
 };
 
 // Number of holes of the sheet: components of the facet graph minus its Euler characteristic.

@@ -1,0 +1,113 @@
+// foldkit dof / foldkit project: mobility and closure of a pattern at a state.
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/mobility.hpp"
+#include "foldkit/geometry/projection.hpp"
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/cmml.hpp"
+#include "foldkit/io/parse_error.hpp"
+
+namespace foldkit::apps {
+namespace {
+
+// The state at the end of a CMML (angles carried through from flat), or flat without one.
+geometry::FoldState state_from(const geometry::CreasePattern& pattern, const std::string& cmml) {
+  if (cmml.empty()) return geometry::FoldState::flat(pattern);
+  const geometry::FoldSequence seq = io::read_cmml(cmml);
+  const geometry::Diagnostics problems = geometry::check_sequence(pattern, seq);
+  for (const auto& d : problems)
+    if (d.severity == geometry::Severity::Error) throw io::ParseError(cmml, d.line, d.message);
+  return geometry::end_state(pattern, seq);
+}
+
+}  // namespace
+
+Command add_dof(CLI::App& root) {
+  struct Options {
+    std::string pattern, state;
+    double tolerance = 1e-8;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* app = root.add_subcommand("dof", "Instantaneous degrees of freedom: creases minus the rank of the closure Jacobian");
+  app->add_option("pattern", opt->pattern, "Crease pattern (.pmml or .fold)")->required();
+  app->add_option("--state", opt->state, "CMML whose end state is analysed (default: flat)");
+  app->add_option("--tolerance", opt->tolerance, "Rank tolerance, relative to the largest singular value")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  return {app, [opt] {
+            const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
+            const geometry::FoldState state = state_from(pattern, opt->state);
+            const geometry::ClosureSystem system(pattern);
+            const geometry::Mobility m = geometry::mobility(system, state, opt->tolerance);
+            const double error = system.max_error(state);
+            const nlohmann::json out = {{"dof", m.dof},
+                                        {"rank", m.rank},
+                                        {"creases", m.creases},
+                                        {"tolerance", m.tolerance},
+                                        {"method", m.method},
+                                        {"vertex_loops", system.vertex_loops()},
+                                        {"hole_cycles", system.hole_cycles()},
+                                        {"closure_error", error}};
+            std::cerr << opt->pattern << ": " << m.dof << " DOF (" << m.creases << " creases, rank " << m.rank << " at tolerance "
+                      << m.tolerance << ", " << m.method << ")";
+            if (error > 1e-9) std::cerr << "; warning: the state is not closed (error " << error << " rad)";
+            std::cerr << '\n';
+            if (opt->json) print_json(out);
+            return kOk;
+          }};
+}
+
+Command add_project(CLI::App& root) {
+  struct Options {
+    std::string pattern, state, output;
+    geometry::ProjectionOptions projection;
+    bool free_signs = false;
+    double velocity = 30.0;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* app = root.add_subcommand("project", "Write the nearest closed configuration to a state");
+  app->add_option("pattern", opt->pattern, "Crease pattern (.pmml or .fold)")->required();
+  app->add_option("--state", opt->state, "CMML whose end state is projected")->required();
+  app->add_option("-o,--output", opt->output, "Output .cmml: one event from flat to the closed state")->required();
+  app->add_option("--tolerance", opt->projection.tolerance, "Largest loop error accepted, radians")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app->add_option("--max-iterations", opt->projection.max_iterations, "Iteration limit")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app->add_flag("--free-signs", opt->free_signs, "Let creases change between mountain and valley");
+  app->add_option("--velocity", opt->velocity, "Velocity written into the CMML, degrees per second")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  return {app, [opt] {
+            const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
+            const geometry::FoldState start = state_from(pattern, opt->state);
+            const geometry::ClosureSystem system(pattern);
+            geometry::ProjectionOptions po = opt->projection;
+            po.keep_signs = !opt->free_signs;
+            const geometry::ProjectionResult r = geometry::project(system, start, po);
+            const nlohmann::json out = {{"converged", r.converged},
+                                        {"iterations", r.iterations},
+                                        {"closure_error", r.error},
+                                        {"initial_error", system.max_error(start)},
+                                        {"message", r.message},
+                                        {"output", r.converged ? nlohmann::json(opt->output) : nlohmann::json()}};
+            std::cerr << opt->pattern << ": " << r.message << " after " << r.iterations << " iterations, closure error "
+                      << r.error << " rad\n";
+            if (r.converged) {
+              const std::string title = pattern.title().empty() ? "projected" : pattern.title() + " (projected)";
+              io::write_file_atomic(opt->output,
+                                    io::write_cmml(geometry::sequence_to(pattern, r.state, opt->velocity * M_PI / 180.0, title)));
+            }
+            if (opt->json) print_json(out);
+            return r.converged ? kOk : kNoPlan;
+          }};
+}
+
+}  // namespace foldkit::apps

@@ -1,0 +1,69 @@
+// Closure residual + Jacobian: the analytic sparse Jacobian side by side with central
+// differences of the residual (what OMPL's Constraint::jacobian does by default).
+#include <random>
+
+#include <benchmark/benchmark.h>
+
+#include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/generators.hpp"
+
+namespace {
+
+using namespace foldkit::geometry;
+
+CreasePattern pattern_for(int id) {
+  if (id > 0) return build_or_throw(generators::single_vertex(std::vector<double>(static_cast<std::size_t>(id), 2 * M_PI / id)));
+  return build_or_throw(generators::miura(-id, -id));  // negative: Miura-ori −id × −id
+}
+
+FoldState some_state(const CreasePattern& p) {
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  FoldState s = FoldState::flat(p);
+  for (Eigen::Index i = 0; i < s.angles.size(); ++i) s.angles[i] = u(rng);
+  return s;
+}
+
+void BM_Closure_Analytic(benchmark::State& state) {
+  const CreasePattern p = pattern_for(static_cast<int>(state.range(0)));
+  const ClosureSystem sys(p);
+  const FoldState s = some_state(p);
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> J;
+  for (auto _ : state) {
+    sys.evaluate(s, r, J);
+    benchmark::DoNotOptimize(J.valuePtr());
+  }
+  state.counters["creases"] = static_cast<double>(p.joints().size());
+}
+
+void BM_Closure_CentralDifferences(benchmark::State& state) {
+  const CreasePattern p = pattern_for(static_cast<int>(state.range(0)));
+  const ClosureSystem sys(p);
+  FoldState s = some_state(p);
+  Eigen::MatrixXd J(sys.rows(), sys.cols());
+  const double h = 1e-6;
+  for (auto _ : state) {
+    const Eigen::VectorXd r = sys.residual(s);
+    for (Eigen::Index j = 0; j < sys.cols(); ++j) {
+      const double x = s.angles[j];
+      s.angles[j] = x + h;
+      const Eigen::VectorXd plus = sys.residual(s);
+      s.angles[j] = x - h;
+      J.col(j) = (plus - sys.residual(s)) / (2 * h);
+      s.angles[j] = x;
+    }
+    benchmark::DoNotOptimize(r.data());
+    benchmark::DoNotOptimize(J.data());
+  }
+  state.counters["creases"] = static_cast<double>(p.joints().size());
+}
+
+// Degree 8 and 64 single vertices; −40: Miura-ori 40 × 40 (3,120 creases).
+BENCHMARK(BM_Closure_Analytic)->Arg(8)->Arg(64)->Arg(-40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Closure_CentralDifferences)->Arg(8)->Arg(64)->Arg(-10)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Closure_CentralDifferences)->Arg(-40)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();
