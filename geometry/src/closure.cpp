@@ -1,6 +1,7 @@
 #include "foldkit/geometry/closure.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include <boost/graph/connected_components.hpp>
 
@@ -82,15 +83,21 @@ ClosureSystem::ClosureSystem(const CreasePattern& pattern, int root) : pattern_(
 void ClosureSystem::evaluate_vertex(const VertexLoop& loop, const FoldState& state, Eigen::Index row, Eigen::VectorXd& r,
                                     Sink* jac) const {
   // Crossing crease k counter-clockwise enters the facet on its left, which turns by −angle.
+  // Quaternions: the product of n rotations is the whole cost of a residual.
   const std::size_t n = loop.joints.size();
-  Mat3 A = Mat3::Identity();
-  std::vector<V3> current_axes;
-  if (jac) current_axes.reserve(n);
+  constexpr std::size_t kOnStack = 32;
+  std::array<V3, kOnStack> on_stack;
+  std::vector<V3> on_heap;
+  V3* current_axes = nullptr;
+  if (jac) current_axes = n <= kOnStack ? on_stack.data() : (on_heap.resize(n), on_heap.data());
+  Eigen::Quaterniond A = Eigen::Quaterniond::Identity();
   for (std::size_t k = 0; k < n; ++k) {
-    if (jac) current_axes.push_back(A * loop.axes[k]);
-    A = A * detail::rotation(loop.axes[k], -state.angles[loop.joints[k]]);
+    if (jac) current_axes[k] = A * loop.axes[k];
+    const double half = -0.5 * state.angles[loop.joints[k]];
+    const double c = std::cos(half), s = std::sin(half);
+    A = A * Eigen::Quaterniond(c, s * loop.axes[k].x(), s * loop.axes[k].y(), s * loop.axes[k].z());
   }
-  const V3 phi = detail::log_so3(A);
+  const V3 phi = detail::log_quaternion(A);
   r.segment<3>(row) = phi;
   if (!jac) return;
   // ∂A/∂ρ_k · A⁻¹ = −[P_k d_k]×, with P_k the product before crease k (Eq. 3).

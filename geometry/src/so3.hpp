@@ -23,6 +23,15 @@ inline V3 log_so3(const Mat3& R) {
   return aa.angle() * aa.axis();
 }
 
+// Rotation vector of a unit quaternion, on the short way round (angle in [0, π]).
+inline V3 log_quaternion(const Eigen::Quaterniond& q) {
+  const double sign = q.w() < 0 ? -1.0 : 1.0;
+  const V3 v = sign * q.vec();
+  const double s = v.norm(), w = sign * q.w();
+  if (s < 1e-8) return (2.0 / w) * (1.0 - s * s / (3.0 * w * w)) * v;  // atan series: exact to rounding here
+  return (2.0 * std::atan2(s, w) / s) * v;
+}
+
 // Inverse of the left Jacobian of SO(3): d log(R) = J_l⁻¹(φ) δ for R ← exp(δ) R.
 inline Mat3 left_jacobian_inverse(const V3& phi) {
   const double t = phi.norm();
