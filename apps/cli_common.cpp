@@ -57,7 +57,10 @@ void save_pattern(const std::string& path, const geometry::CreasePattern& patter
   io::write_file_atomic(path, text);
 }
 
-void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; }
+void print_json(const nlohmann::json& j) {
+  // File names need not be UTF-8; JSON must be.
+  std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
+}
 
 nlohmann::json pattern_summary(const geometry::CreasePattern& p) {
   std::size_t triangles = 0;

@@ -82,10 +82,12 @@ Command add_generate(CLI::App& root) {
   };
   auto p = std::make_shared<Params>();
   const auto positive = CLI::PositiveNumber;
+  // Counts are bounded so that a typo cannot ask for more memory than the machine has.
+  const auto count = CLI::Range(1, 100000);
 
   CLI::App* sv = kind(app, "single-vertex", "One interior vertex (paper Fig. 2)", common);
   sv->add_option("--sectors", p->sectors, "Sector angles in degrees, comma-separated, summing to 360");
-  sv->add_option("--degree", p->degree, "Number of creases (equal sectors, or random with --seed)");
+  sv->add_option("--degree", p->degree, "Number of creases (equal sectors, or random with --seed)")->check(CLI::Range(3, 100000));
   auto* seed = sv->add_option("--seed", p->seed, "Seed for random sector angles with --degree");
   sv->add_option("--radius", p->radius, "Sheet radius")->check(positive)->capture_default_str();
   sv->callback([=] {
@@ -96,34 +98,34 @@ Command add_generate(CLI::App& root) {
   });
 
   CLI::App* strip = kind(app, "strip", "Panels in a row joined by parallel creases", common);
-  strip->add_option("--panels", p->n, "Number of panels")->check(positive)->capture_default_str();
+  strip->add_option("--panels", p->n, "Number of panels")->check(count)->capture_default_str();
   strip->add_option("--width", p->width, "Panel width")->check(positive)->capture_default_str();
   strip->add_option("--height", p->height, "Panel height")->check(positive)->capture_default_str();
   strip->callback([=] { *make = [=] { return gen::strip(p->n, p->width, p->height, common->joints); }; });
 
   CLI::App* grid = kind(app, "grid", "Square lattice of cells", common);
-  grid->add_option("--rows", p->rows, "Rows of cells")->check(positive)->capture_default_str();
-  grid->add_option("--cols", p->cols, "Columns of cells")->check(positive)->capture_default_str();
+  grid->add_option("--rows", p->rows, "Rows of cells")->check(count)->capture_default_str();
+  grid->add_option("--cols", p->cols, "Columns of cells")->check(count)->capture_default_str();
   grid->add_option("--cell", p->cell, "Cell size")->check(positive)->capture_default_str();
   grid->callback([=] { *make = [=] { return gen::grid(p->rows, p->cols, p->cell, common->joints); }; });
 
   CLI::App* circ = kind(app, "circular", "Circular lattice: rings crossed by spokes", common);
-  circ->add_option("--rings", p->rings, "Number of rings")->check(positive)->capture_default_str();
+  circ->add_option("--rings", p->rings, "Number of rings")->check(count)->capture_default_str();
   circ->add_option("--spokes", p->spokes, "Number of radial creases")->check(CLI::Range(3, 100000))->capture_default_str();
   circ->add_option("--ring-width", p->ring_width, "Width of each ring")->check(positive)->capture_default_str();
   circ->callback([=] { *make = [=] { return gen::circular_lattice(p->rings, p->spokes, p->ring_width, common->joints); }; });
 
   CLI::App* miura = kind(app, "miura", "Miura-ori of rows × cols parallelograms", common);
-  miura->add_option("--rows", p->rows, "Rows")->check(positive)->capture_default_str();
-  miura->add_option("--cols", p->cols, "Columns")->check(positive)->capture_default_str();
+  miura->add_option("--rows", p->rows, "Rows")->check(count)->capture_default_str();
+  miura->add_option("--cols", p->cols, "Columns")->check(count)->capture_default_str();
   miura->add_option("--a", p->a, "Column width")->check(positive)->capture_default_str();
   miura->add_option("--b", p->b, "Row height")->check(positive)->capture_default_str();
   miura->add_option("--angle", p->angle, "Parallelogram angle in degrees, (0, 90]")->check(CLI::Range(0.0, 90.0))->capture_default_str();
   miura->callback([=] { *make = [=] { return gen::miura(p->rows, p->cols, p->a, p->b, radians(p->angle), common->joints); }; });
 
   CLI::App* wb = kind(app, "waterbomb", "Waterbomb tessellation", common);
-  wb->add_option("--units", p->units, "Units across")->check(positive)->capture_default_str();
-  wb->add_option("--rows", p->rows, "Rows")->check(positive)->capture_default_str();
+  wb->add_option("--units", p->units, "Units across")->check(count)->capture_default_str();
+  wb->add_option("--rows", p->rows, "Rows")->check(count)->capture_default_str();
   wb->callback([=] { *make = [=] { return gen::waterbomb(p->units, p->rows, common->joints); }; });
 
   CLI::App* boat = kind(app, "boat", "The boat of the paper's Fig. 3", common);
@@ -133,11 +135,20 @@ Command add_generate(CLI::App& root) {
   boat->callback([=] { *make = [=] { return gen::boat(p->length, p->half_width, p->bow, common->joints); }; });
 
   CLI::App* cubes = kind(app, "cube-sheet", "Cube nets in a row (paper Fig. 8a)", common);
-  cubes->add_option("--cubes", p->cubes, "Number of cube nets")->check(positive)->capture_default_str();
+  cubes->add_option("--cubes", p->cubes, "Number of cube nets")->check(count)->capture_default_str();
   cubes->add_option("--tile", p->tile, "Tile size")->check(positive)->capture_default_str();
   cubes->callback([=] { *make = [=] { return gen::cube_sheet(p->cubes, p->tile, common->joints); }; });
 
   return {app, [=] {
+            // rows × cols style products: at most four million actors.
+            const long long cells = static_cast<long long>(p->rows) * p->cols;
+            const long long limit = 4'000'000;
+            if ((grid->parsed() || miura->parsed()) && cells > limit)
+              throw UsageError("rows × cols = " + std::to_string(cells) + " is more than 4,000,000 actors");
+            if (wb->parsed() && static_cast<long long>(p->units) * p->rows * 8 > limit)
+              throw UsageError("the waterbomb would have more than 4,000,000 actors");
+            if (circ->parsed() && static_cast<long long>(p->rings) * p->spokes > limit)
+              throw UsageError("rings × spokes is more than 4,000,000 actors");
             geometry::PatternSpec spec = (*make)();
             if (!common->title.empty()) spec.title = common->title;
             const geometry::CreasePattern pattern = geometry::build_or_throw(spec);

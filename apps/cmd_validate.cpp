@@ -41,7 +41,8 @@ Diagnostics check_file(const std::string& path, const Options& opt, const std::o
         for (const auto& e : seq.events) folds += e.folds.size();
         summary = std::to_string(seq.events.size()) + " events, " + std::to_string(folds) + " folds";
         if (!pattern) {
-          summary += " (not checked against a pattern: give --pattern)";
+          summary += opt.pattern.empty() ? " (not checked against a pattern: give --pattern)"
+                                         : " (not checked against " + opt.pattern + ", which is invalid)";
           return {};
         }
         return geometry::check_sequence(*pattern, seq);
@@ -61,10 +62,24 @@ Diagnostics check_file(const std::string& path, const Options& opt, const std::o
 }
 
 int run(const Options& opt) {
-  std::optional<geometry::CreasePattern> pattern;
-  if (!opt.pattern.empty()) pattern = load_pattern(opt.pattern).pattern;
   bool all_ok = true;
   nlohmann::json files = nlohmann::json::array();
+  std::optional<geometry::CreasePattern> pattern;
+  if (!opt.pattern.empty()) {
+    // The pattern is checked like any file; CMML files are then checked against it, or not at all.
+    geometry::BuildOptions build;
+    build.auto_joints = opt.auto_joints;
+    try {
+      pattern = load_pattern(opt.pattern, build).pattern;
+    } catch (const io::ParseError& e) {
+      std::cerr << e.what() << '\n';
+      all_ok = false;
+      files.push_back({{"file", opt.pattern},
+                       {"ok", false},
+                       {"errors", {{{"line", e.line()}, {"message", e.message()}}}},
+                       {"warnings", nlohmann::json::array()}});
+    }
+  }
   for (const std::string& path : opt.files) {
     std::string summary;
     const Diagnostics found = check_file(path, opt, pattern, summary);

@@ -1,7 +1,9 @@
 #include <iostream>
+#include <new>
 #include <vector>
 
 #include "cli_common.hpp"
+#include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/parse_error.hpp"
 
 int main(int argc, char** argv) {
@@ -33,6 +35,12 @@ int main(int argc, char** argv) {
     } catch (const UsageError& e) {
       std::cerr << "foldkit " << c.app->get_name() << ": " << e.what() << '\n';
       return kUsage;
+    } catch (const foldkit::io::WriteError& e) {
+      std::cerr << e.what() << '\n';
+      return kInvalidInput;
+    } catch (const std::bad_alloc&) {
+      std::cerr << "foldkit " << c.app->get_name() << ": out of memory\n";
+      return kInvalidInput;
     } catch (const std::invalid_argument& e) {
       std::cerr << "foldkit " << c.app->get_name() << ": " << e.what() << '\n';
       return kUsage;

@@ -5,7 +5,9 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <limits>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -18,6 +20,9 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586;
 constexpr std::size_t kMaxOverlapReports = 20;
+// Squares of coordinates (cross products, norms) must stay finite and normal in double.
+constexpr double kLargestCoordinate = 1e100;
+constexpr double kSmallestExtent = 1e-100;
 
 std::string point_text(const Vec2& p) {
   char buf[64];
@@ -85,8 +90,11 @@ class PatternBuilder {
                           std::to_string(spec_.actors[it->second].line) + ")");
       if (a.triangles.empty()) error(a.line, actor_name(static_cast<int>(i)) + " has no triangles");
       for (const TriangleSpec& t : a.triangles)
-        for (const Vec2& c : t.corners)
+        for (const Vec2& c : t.corners) {
           if (!c.allFinite()) error(t.line, actor_name(static_cast<int>(i)) + ": triangle coordinate is not finite");
+          else if (c.cwiseAbs().maxCoeff() > kLargestCoordinate)
+            error(t.line, actor_name(static_cast<int>(i)) + ": coordinate " + point_text(c) + " is outside ±1e100");
+        }
     }
     std::unordered_map<int, int> joint_lines;
     for (const JointSpec& j : spec_.joints) {
@@ -108,9 +116,11 @@ class PatternBuilder {
     for (const ActorSpec& a : spec_.actors)
       for (const TriangleSpec& t : a.triangles)
         for (const Vec2& c : t.corners) box.extend(c);
-    const double diagonal = box.diagonal().norm();
-    if (!(diagonal > 0.0)) {
-      error(0, "the pattern has zero extent");
+    const double diagonal = box.diagonal().stableNorm();
+    if (!(diagonal >= kSmallestExtent)) {
+      char buf[120];
+      std::snprintf(buf, sizeof buf, "the pattern's extent %.3g is below 1e-100: scale it up", diagonal);
+      error(0, buf);
       return;
     }
     tolerance_ = options_.merge_tolerance * diagonal;
@@ -151,11 +161,10 @@ class PatternBuilder {
   }
 
   void collect_edges() {
-    std::unordered_map<std::uint64_t, int> by_key;
     for (std::size_t ti = 0; ti < triangles_.size(); ++ti) {
       for (int k = 0; k < 3; ++k) {
         const int a = triangles_[ti].v[k], b = triangles_[ti].v[(k + 1) % 3];
-        auto [it, fresh] = by_key.emplace(edge_key(a, b), static_cast<int>(edges_.size()));
+        auto [it, fresh] = edge_by_key_.emplace(edge_key(a, b), static_cast<int>(edges_.size()));
         if (fresh) edges_.push_back({std::min(a, b), std::max(a, b), {}, -1});
         edges_[it->second].triangles.push_back(static_cast<int>(ti));
       }
@@ -193,8 +202,18 @@ class PatternBuilder {
                                         std::to_string(pieces[a]) + " separate pieces (triangles must share edges)");
   }
 
+  bool joins(const MeshEdge& e, int actor_a, int actor_b) const {
+    if (!is_shared(e) || e.joint >= 0) return false;
+    const int a1 = triangles_[e.triangles[0]].actor, a2 = triangles_[e.triangles[1]].actor;
+    return (a1 == actor_a && a2 == actor_b) || (a1 == actor_b && a2 == actor_a);
+  }
+
   // Walks shared edges of the two actors from one end of the joint segment to the other.
   std::optional<std::vector<int>> trace_segment(int v0, int v1, int actor_a, int actor_b) const {
+    // Nearly every joint is one mesh edge: look it up rather than scan the vertex's edges,
+    // which would be quadratic at a vertex of very high degree.
+    if (const int direct = edge_between(v0, v1); direct >= 0 && joins(edges_[direct], actor_a, actor_b))
+      return std::vector<int>{v0, v1};
     const auto& pts = index_->points();
     const Vec2 origin = pts[v0], axis = pts[v1] - pts[v0];
     const double length = axis.norm();
@@ -207,9 +226,7 @@ class PatternBuilder {
       int next = -1;
       for (int ei : incident_[current]) {
         const MeshEdge& e = edges_[ei];
-        if (!is_shared(e) || e.joint >= 0) continue;
-        const int a1 = triangles_[e.triangles[0]].actor, a2 = triangles_[e.triangles[1]].actor;
-        if (!((a1 == actor_a && a2 == actor_b) || (a1 == actor_b && a2 == actor_a))) continue;
+        if (!joins(e, actor_a, actor_b)) continue;
         const int other = e.a == current ? e.b : e.a;
         const Vec2 rel = pts[other] - origin;
         const double along = rel.dot(dir);
@@ -227,9 +244,8 @@ class PatternBuilder {
   }
 
   int edge_between(int a, int b) const {
-    for (int ei : incident_[a])
-      if (edges_[ei].a == std::min(a, b) && edges_[ei].b == std::max(a, b)) return ei;
-    return -1;
+    const auto it = edge_by_key_.find(edge_key(a, b));
+    return it == edge_by_key_.end() ? -1 : it->second;
   }
 
   void resolve_joints() {
@@ -269,8 +285,19 @@ class PatternBuilder {
 
   void cover_unjointed_edges() {
     const auto& pts = index_->points();
-    int next_id = 1;
-    for (const Joint& j : joints_) next_id = std::max(next_id, j.id + 1);
+    std::unordered_set<int> used;
+    long long next_id = 1;
+    for (const Joint& j : joints_) {
+      used.insert(j.id);
+      next_id = std::max(next_id, static_cast<long long>(j.id) + 1);
+    }
+    // Past INT_MAX, new joints take the smallest free positive IDs instead.
+    auto take_id = [&] {
+      if (next_id > std::numeric_limits<int>::max()) next_id = 1;
+      while (used.count(static_cast<int>(next_id))) ++next_id;
+      used.insert(static_cast<int>(next_id));
+      return static_cast<int>(next_id++);
+    };
     for (MeshEdge& e : edges_) {
       if (!is_shared(e) || e.joint >= 0) continue;
       const TriangleRef &t0 = triangles_[e.triangles[0]], &t1 = triangles_[e.triangles[1]];
@@ -281,11 +308,11 @@ class PatternBuilder {
         continue;
       }
       e.joint = static_cast<int>(joints_.size());
-      joints_.push_back({next_id, {e.a, e.b}, {t0.actor, t1.actor}, options_.auto_spring, options_.auto_damping,
+      const int id = take_id();
+      joints_.push_back({id, {e.a, e.b}, {t0.actor, t1.actor}, options_.auto_spring, options_.auto_damping,
                          Assignment::Unassigned, 0});
       chains_.push_back({e.a, e.b});
-      warn(t1.line, where + ": added joint " + std::to_string(next_id));
-      ++next_id;
+      warn(t1.line, where + ": added joint " + std::to_string(id));
     }
   }
 
@@ -301,9 +328,12 @@ class PatternBuilder {
     detail::bgi::rtree<std::pair<detail::BPoint, int>, detail::bgi::quadratic<16>> tree;
     for (std::size_t v = 0; v < pts.size(); ++v)
       if (on_boundary_[v]) tree.insert({detail::BPoint(pts[v].x(), pts[v].y()), static_cast<int>(v)});
-    for (const auto& [a, b] : boundary_edges_) {
-      detail::BBox box(detail::BPoint(std::min(pts[a].x(), pts[b].x()), std::min(pts[a].y(), pts[b].y())),
-                       detail::BPoint(std::max(pts[a].x(), pts[b].x()), std::max(pts[a].y(), pts[b].y())));
+    for (const MeshEdge& e : edges_) {
+      if (e.triangles.size() != 1) continue;
+      const int a = e.a, b = e.b;
+      // Grown by the tolerance: an axis-parallel edge has a box of zero height.
+      detail::BBox box(detail::BPoint(std::min(pts[a].x(), pts[b].x()) - tolerance_, std::min(pts[a].y(), pts[b].y()) - tolerance_),
+                       detail::BPoint(std::max(pts[a].x(), pts[b].x()) + tolerance_, std::max(pts[a].y(), pts[b].y()) + tolerance_));
       const Vec2 dir = (pts[b] - pts[a]).normalized();
       for (auto it = tree.qbegin(detail::bgi::intersects(box)); it != tree.qend(); ++it) {
         const int v = it->second;
@@ -311,7 +341,7 @@ class PatternBuilder {
         const Vec2 rel = pts[v] - pts[a];
         const double along = rel.dot(dir);
         if (std::abs(cross(dir, rel)) <= tolerance_ && along > tolerance_ && along < (pts[b] - pts[a]).norm() - tolerance_)
-          error(0, "vertex " + point_text(pts[v]) + " lies inside the edge " + point_text(pts[a]) + "-" + point_text(pts[b]) +
+          error(triangles_[e.triangles[0]].line, "vertex " + point_text(pts[v]) + " lies inside the edge " + point_text(pts[a]) + "-" + point_text(pts[b]) +
                        " without splitting it (T-junction): triangles must meet corner to corner");
       }
     }
@@ -320,8 +350,10 @@ class PatternBuilder {
   void build_stars() {
     const auto& pts = index_->points();
     std::vector<double> corner_sum(pts.size(), 0.0);
+    std::vector<int> line_at(pts.size(), 0);
     for (const TriangleRef& t : triangles_)
       for (int k = 0; k < 3; ++k) {
+        if (!line_at[t.v[k]]) line_at[t.v[k]] = t.line;
         const Vec2 u = pts[t.v[(k + 1) % 3]] - pts[t.v[k]], w = pts[t.v[(k + 2) % 3]] - pts[t.v[k]];
         corner_sum[t.v[k]] += std::atan2(std::abs(cross(u, w)), u.dot(w));
       }
@@ -339,7 +371,7 @@ class PatternBuilder {
         char buf[160];
         std::snprintf(buf, sizeof buf, "interior vertex %s: facet angles sum to %.9g degrees, not 360 (a gap or an overlap)",
                       point_text(pts[v]).c_str(), corner_sum[v] * 180.0 / M_PI);
-        error(0, buf);
+        error(line_at[v], buf);
         continue;
       }
       auto& r = rays[v];
@@ -382,6 +414,7 @@ class PatternBuilder {
   std::unordered_map<int, int> actor_by_id_;
   std::vector<TriangleRef> triangles_;
   std::vector<MeshEdge> edges_;
+  std::unordered_map<std::uint64_t, int> edge_by_key_;
   std::vector<std::vector<int>> incident_;
   std::vector<Joint> joints_;
   std::vector<std::vector<int>> chains_;

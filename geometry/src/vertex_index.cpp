@@ -18,8 +18,10 @@ std::optional<int> VertexIndex::find(const Vec2& p) const {
 int VertexIndex::insert(const Vec2& p) {
   if (auto found = find(p)) return *found;
   const int id = static_cast<int>(points_.size());
-  points_.push_back(p);
-  tree_.insert({BPoint(p.x(), p.y()), id});
+  // −0 + 0 = +0: a corner written "-0" must not turn a crease direction from π to −π.
+  const Vec2 q(p.x() + 0.0, p.y() + 0.0);
+  points_.push_back(q);
+  tree_.insert({BPoint(q.x(), q.y()), id});
   return id;
 }
 

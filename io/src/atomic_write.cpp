@@ -5,11 +5,11 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <sstream>
 #include <stdexcept>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "foldkit/io/parse_error.hpp"
@@ -17,29 +17,58 @@
 namespace foldkit::io {
 namespace fs = std::filesystem;
 
+namespace {
+
+[[noreturn]] void fail(const std::string& path, int err) {
+  throw WriteError(path + ": cannot write: " + std::strerror(err));
+}
+
+}  // namespace
+
 void write_file_atomic(const std::string& path, const std::string& content) {
-  const fs::path target(path);
+  std::error_code ec;
+  fs::path target(path);
+  if (fs::is_symlink(target, ec)) {  // (a target that does not exist yet is no link: ec is ignored)
+    target = fs::weakly_canonical(target, ec);
+    if (ec) fail(path, ec.value());
+  }
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::random_device rd;
-  const fs::path temp = dir / ("." + target.filename().string() + ".tmp" + std::to_string(rd()));
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
+  // A short fixed-length name, so that any name the target may have still fits.
+  std::string temp = (dir / ".foldkit-XXXXXX").string();
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0) fail(path, errno);
+  auto give_up = [&](int err) {
+    ::close(fd);
+    ::unlink(temp.c_str());
+    fail(path, err);
+  };
+  struct stat existing {};
+  mode_t mode = 0;
+  if (::stat(target.c_str(), &existing) == 0) {
+    mode = existing.st_mode & 07777;
+  } else {
+    const mode_t mask = ::umask(0);  // read the umask: a new file gets what open() would give it
+    ::umask(mask);
+    mode = 0666 & ~mask;
+  }
+  if (::fchmod(fd, mode) != 0) give_up(errno);
   std::size_t done = 0;
   while (done < content.size()) {
     const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int err = errno;
-      ::close(fd);
-      ::unlink(temp.c_str());
-      throw std::runtime_error(path + ": cannot write: " + std::strerror(err));
-    }
+    if (n <= 0) give_up(n < 0 ? errno : EIO);
     done += static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0 || std::rename(temp.c_str(), target.c_str()) != 0) {
+  if (::fsync(fd) != 0) give_up(errno);
+  if (::close(fd) != 0) {
     const int err = errno;
     ::unlink(temp.c_str());
-    throw std::runtime_error(path + ": cannot write: " + std::strerror(err));
+    fail(path, err);
+  }
+  if (std::rename(temp.c_str(), target.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(temp.c_str());
+    fail(path, err);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "foldkit/io/svg.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "foldkit/io/number_format.hpp"
@@ -32,7 +33,8 @@ const char* style(Assignment a) {
 std::string write_svg(const geometry::CreasePattern& pattern, const SvgOptions& options) {
   Eigen::AlignedBox2d box;
   for (const auto& v : pattern.vertices()) box.extend(v);
-  const double s = options.pixels_per_unit, margin = 20.0;
+  const double extent = std::max(box.sizes().x(), box.sizes().y());
+  const double s = options.pixels_per_unit > 0 ? options.pixels_per_unit : 800.0 / extent, margin = 20.0;
   // SVG's y axis points down; flip so that the pattern reads as in its own coordinates.
   auto X = [&](const geometry::Vec2& p) { return format_number(margin + (p.x() - box.min().x()) * s); };
   auto Y = [&](const geometry::Vec2& p) { return format_number(margin + (box.max().y() - p.y()) * s); };
@@ -41,7 +43,8 @@ std::string write_svg(const geometry::CreasePattern& pattern, const SvgOptions& 
   std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << format_number(box.sizes().x() * s + 2 * margin)
-      << "\" height=\"" << format_number(box.sizes().y() * s + 2 * margin) << "\">\n"
+      << "\" height=\"" << format_number(box.sizes().y() * s + 2 * margin) << "\" viewBox=\"0 0 "
+      << format_number(box.sizes().x() * s + 2 * margin) << ' ' << format_number(box.sizes().y() * s + 2 * margin) << "\">\n"
       << "  <title>" << detail::escape_xml(pattern.title()) << "</title>\n"
       << "  <g id=\"facets\" fill=\"#f4f1e8\" stroke=\"#f4f1e8\" stroke-width=\"0.75\" stroke-linejoin=\"round\">\n";
   for (const auto& a : pattern.actors())

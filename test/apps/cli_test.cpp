@@ -250,3 +250,34 @@ TEST(CliKinematics, ProjectFailureWritesNothing) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliReview, ValidateWithAnInvalidPatternStillReports) {
+  const std::string dir = temp_dir();
+  ASSERT_EQ(foldkit({"generate", "strip", "--panels", "2", "-o", dir + "/s.pmml"}).exit, 0);
+  // Drop the joint: the pattern now needs --auto-joints.
+  std::string text = slurp(dir + "/s.pmml");
+  text.erase(text.find("  <Joint>"), text.find("</Joint>") + 9 - text.find("  <Joint>"));
+  std::ofstream(dir + "/a.pmml") << text;
+  std::ofstream(dir + "/s.cmml") << "<CMML><Title>t</Title>\n<Fold><EventNumber>1</EventNumber><ID>1</ID>"
+                                    "<FoldAngle>90</FoldAngle><Velocity>10</Velocity></Fold></CMML>\n";
+  const CliResult strict = foldkit({"validate", dir + "/s.cmml", "--pattern", dir + "/a.pmml", "--json"});
+  EXPECT_EQ(strict.exit, 1);
+  const auto j = nlohmann::json::parse(strict.out);
+  EXPECT_FALSE(j["ok"].get<bool>());
+  EXPECT_EQ(j["files"].size(), 2u);
+  const CliResult lenient = foldkit({"validate", dir + "/s.cmml", "--pattern", dir + "/a.pmml", "--auto-joints", "--json"});
+  EXPECT_EQ(lenient.exit, 0) << lenient.err;
+}
+
+TEST(CliReview, JsonSurvivesNonUtf8FileNames) {
+  const std::string dir = temp_dir();
+  const std::string name = dir + "/n\xe9.pmml";
+  ASSERT_EQ(foldkit({"generate", "boat", "-o", name}).exit, 0);
+  const CliResult v = foldkit({"validate", name, "--json"});
+  EXPECT_EQ(v.exit, 0) << v.err;
+  EXPECT_TRUE(nlohmann::json::parse(v.out)["ok"].get<bool>());
+}
+
+}  // namespace

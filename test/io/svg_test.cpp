@@ -63,3 +63,20 @@ TEST(Svg, YAxisPointsUp) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Svg, ScalesAnyPatternToItsCanvas) {
+  for (double f : {1e-90, 1.0, 1e90}) {
+    foldkit::geometry::PatternSpec s = foldkit::test::two_by_two();
+    for (auto& a : s.actors)
+      for (auto& t : a.triangles)
+        for (auto& c : t.corners) c *= f;
+    for (auto& j : s.joints)
+      for (auto& c : j.coords) c *= f;
+    const std::string svg = foldkit::io::write_svg(foldkit::geometry::build_or_throw(s));
+    EXPECT_NE(svg.find("width=\"840\" height=\"840\" viewBox=\"0 0 840 840\""), std::string::npos) << f;
+  }
+}
+
+}  // namespace

@@ -19,7 +19,9 @@ namespace foldkit::geometry {
 // the crease axes in the current pose, through the inverse left Jacobian of SO(3)).
 class ClosureSystem {
  public:
+  // Keeps a reference to `pattern`, which must outlive the system (hence no temporaries).
   explicit ClosureSystem(const CreasePattern& pattern, int root = 0);
+  ClosureSystem(CreasePattern&&, int = 0) = delete;
 
   Eigen::Index rows() const { return rows_; }
   Eigen::Index cols() const { return static_cast<Eigen::Index>(pattern_->joints().size()); }

@@ -7,7 +7,8 @@
 namespace foldkit::io {
 
 struct SvgOptions {
-  double pixels_per_unit = 100.0;
+  // 0: scale so that the longer side of the drawing is 800 px, whatever the pattern's units.
+  double pixels_per_unit = 0.0;
   bool joint_ids = false;
   // With a state, a crease is drawn by the sign of its angle; without, by its assignment.
   const geometry::FoldState* state = nullptr;
