@@ -1,7 +1,10 @@
 #include "foldkit/io/cmml.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <sstream>
+#include <stdexcept>
 
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/number_format.hpp"
@@ -36,7 +39,38 @@ std::pair<int, geometry::FoldCommand> read_fold(const detail::XmlInput& in, cons
   const double speed = in.number(vel);
   if (!(speed > 0.0)) in.fail(vel, "<Velocity> must be positive (degrees per second), found " + format_number(speed));
   fold.velocity = degrees_to_radians(speed);
+  // A subnormal speed such as 5e-324 degrees/s is 0 rad/s once converted.
+  if (!(fold.velocity > 0.0))
+    in.fail(vel, "<Velocity> must be positive (degrees per second), found " + format_number(speed) + " (too small)");
   return {event, fold};
+}
+
+[[noreturn]] void invalid(const geometry::FoldCommand& f, const std::string& what) {
+  throw std::invalid_argument("write_cmml: joint " + std::to_string(f.joint_id) + " " + what);
+}
+
+// Degrees within [-180, 180], as read_cmml requires: angles within rounding of ±180° (and any
+// beyond, which no sequence read from a file has) are written as ±180.
+std::string angle_text(const geometry::FoldCommand& f) {
+  if (!std::isfinite(f.angle)) invalid(f, "fold angle: not a finite number");
+  const std::string text = format_degrees(std::clamp(f.angle, -M_PI, M_PI));
+  const double degrees = parse_numbers(text).values.at(0);
+  if (degrees > 180.0) return "180";
+  if (degrees < -180.0) return "-180";
+  return text;
+}
+
+// Positive degrees per second that read back to a positive, finite velocity.
+std::string velocity_text(const geometry::FoldCommand& f) {
+  if (!std::isfinite(f.velocity)) invalid(f, "velocity: not a finite number");
+  if (!(f.velocity > 0.0)) invalid(f, "velocity must be positive, found " + format_number(f.velocity));
+  if (!std::isfinite(f.velocity * (180.0 / M_PI)))
+    invalid(f, "velocity " + format_number(f.velocity) + " rad/s in degrees: not a finite number");
+  const std::string text = format_degrees(f.velocity);
+  const NumberList back = parse_numbers(text);
+  if (!back.error.empty() || !(degrees_to_radians(back.values.at(0)) > 0.0))
+    invalid(f, "velocity " + format_number(f.velocity) + " rad/s cannot be written: " + (back.error.empty() ? "too small" : back.error));
+  return text;
 }
 
 }  // namespace
@@ -70,8 +104,8 @@ std::string write_cmml(const geometry::FoldSequence& sequence) {
   for (const auto& event : sequence.events)
     for (const auto& f : event.folds)
       out << "  <Fold>\n    <EventNumber>" << event.number << "</EventNumber>\n    <ID>" << f.joint_id
-          << "</ID>\n    <FoldAngle>" << format_degrees(f.angle) << "</FoldAngle>\n    <Velocity>"
-          << format_degrees(f.velocity) << "</Velocity>\n  </Fold>\n";
+          << "</ID>\n    <FoldAngle>" << angle_text(f) << "</FoldAngle>\n    <Velocity>" << velocity_text(f)
+          << "</Velocity>\n  </Fold>\n";
   out << "</CMML>\n";
   return out.str();
 }

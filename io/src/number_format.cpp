@@ -1,5 +1,6 @@
 #include "foldkit/io/number_format.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -64,8 +65,13 @@ NumberList parse_numbers(std::string_view text) {
     while (j < text.size() && !is_space(text[j])) ++j;
     const std::string_view token = text.substr(i, j - i);
     double value = 0.0;
-    // from_chars accepts "nan"/"inf" and a leading '+' is not accepted: allow '+' explicitly.
+    // from_chars accepts "nan"/"inf" and a leading '+' is not accepted: allow one '+' explicitly,
+    // followed by a digit or '.' (so not "+-5", "++5" or "+inf").
     const std::string_view digits = token.size() > 1 && token[0] == '+' ? token.substr(1) : token;
+    if (digits.size() != token.size() && !(std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.')) {
+      out.error = "'" + std::string(token.substr(0, 40)) + "' is not a number";
+      return out;
+    }
     auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (ec == std::errc::result_out_of_range) {
       out.error = "number '" + std::string(token) + "' is out of range";
@@ -91,6 +97,11 @@ std::optional<int> parse_int(std::string_view text) {
   while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\n' || text.back() == '\r'))
     text.remove_suffix(1);
   if (text.empty()) return std::nullopt;
+  // One leading '+' is accepted, as parse_numbers does; the rest must then start with a digit.
+  if (text.front() == '+') {
+    text.remove_prefix(1);
+    if (text.empty() || !std::isdigit(static_cast<unsigned char>(text.front()))) return std::nullopt;
+  }
   int value = 0;
   auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;

@@ -1,7 +1,9 @@
 #include "foldkit/io/pmml.hpp"
 
+#include <cmath>
 #include <cstring>
 #include <sstream>
+#include <stdexcept>
 
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/number_format.hpp"
@@ -107,6 +109,16 @@ geometry::CreasePattern read_pmml(const std::string& path, const geometry::Build
   throw ParseError(path, first->line, message);
 }
 
+namespace {
+
+// A finite number as text; `what` names it in the std::invalid_argument otherwise.
+std::string finite(double value, const std::string& what) {
+  if (!std::isfinite(value)) throw std::invalid_argument("write_pmml: " + what + ": not a finite number");
+  return format_number(value);
+}
+
+}  // namespace
+
 std::string write_pmml(const geometry::PatternSpec& spec) {
   std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<PMML>\n";
@@ -115,17 +127,21 @@ std::string write_pmml(const geometry::PatternSpec& spec) {
     out << "  <Actor>\n    <ID>" << a.id << "</ID>\n";
     for (const auto& t : a.triangles) {
       out << "    <Triangle>";
+      const std::string what = "actor " + std::to_string(a.id) + " triangle coordinate";
       for (int k = 0; k < 3; ++k)
-        out << (k ? " " : "") << format_number(t.corners[k].x()) << ' ' << format_number(t.corners[k].y());
+        out << (k ? " " : "") << finite(t.corners[k].x(), what) << ' ' << finite(t.corners[k].y(), what);
       out << "</Triangle>\n";
     }
     out << "  </Actor>\n";
   }
   for (const auto& j : spec.joints) {
-    out << "  <Joint>\n    <ID>" << j.id << "</ID>\n    <Coords>" << format_number(j.coords[0].x()) << ' '
-        << format_number(j.coords[0].y()) << ' ' << format_number(j.coords[1].x()) << ' ' << format_number(j.coords[1].y())
+    const std::string joint = "joint " + std::to_string(j.id);
+    const std::string coords = joint + " coordinate";
+    out << "  <Joint>\n    <ID>" << j.id << "</ID>\n    <Coords>" << finite(j.coords[0].x(), coords) << ' '
+        << finite(j.coords[0].y(), coords) << ' ' << finite(j.coords[1].x(), coords) << ' ' << finite(j.coords[1].y(), coords)
         << "</Coords>\n    <ActorIDs>" << j.actor_ids[0] << ' ' << j.actor_ids[1] << "</ActorIDs>\n    <SpringConst>"
-        << format_number(j.spring) << "</SpringConst>\n    <DampConst>" << format_number(j.damping) << "</DampConst>\n";
+        << finite(j.spring, joint + " spring constant") << "</SpringConst>\n    <DampConst>"
+        << finite(j.damping, joint + " damping constant") << "</DampConst>\n";
     if (j.assignment != Assignment::Unassigned) out << "    <Assignment>" << geometry::to_string(j.assignment) << "</Assignment>\n";
     out << "  </Joint>\n";
   }

@@ -8,6 +8,8 @@
 namespace foldkit::io::detail {
 
 // A strictly read XML file: every problem is a ParseError at the line of the offending node.
+// The input must be UTF-8 (any declared encoding other than UTF-8 is refused) and contain only
+// XML 1.0 characters, raw or as character references.
 class XmlInput {
  public:
   XmlInput(const std::string& text, std::string name);
@@ -18,7 +20,8 @@ class XmlInput {
   [[noreturn]] void fail(int line, const std::string& message) const;
   [[noreturn]] void fail(const tinyxml2::XMLNode& at, const std::string& message) const;
 
-  // Text of an element that holds only text (no child elements, no attributes).
+  // Text of an element that holds only text (no child elements, no attributes): all its text
+  // and CDATA children joined, comments skipped, leading and trailing whitespace removed.
   std::string leaf_text(const tinyxml2::XMLElement& e) const;
 
   // Child elements of a container in order, after rejecting attributes and stray text.
@@ -37,10 +40,15 @@ class XmlInput {
   const std::string& name() const { return name_; }
 
  private:
+  void check_decoded(const tinyxml2::XMLNode& node) const;
+
   tinyxml2::XMLDocument doc_;
   std::string name_;
 };
 
+// Text for an XML element: markup characters escaped, CR as a reference, and anything that may
+// not appear in an XML 1.0 UTF-8 file (bytes that are not UTF-8, controls other than tab, LF and
+// CR, U+FFFE, U+FFFF) replaced by U+FFFD.
 std::string escape_xml(const std::string& text);
 
 bool has_name(const tinyxml2::XMLElement* e, const char* tag);

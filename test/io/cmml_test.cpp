@@ -1,4 +1,6 @@
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -121,6 +123,77 @@ TEST(CmmlErrors, Values) {
   expect_error(with("<EventNumber>2</EventNumber>", "<EventNumber>1.5</EventNumber>"), 4, "non-negative integer");
   expect_error(with("<EventNumber>2</EventNumber>", "<EventNumber>-1</EventNumber>"), 4, "non-negative integer");
   expect_error(with("<ID>3</ID>", "<ID>three</ID>"), 5, "integer joint ID");
+}
+
+TEST(CmmlErrors, SubnormalVelocityIsTooSmall) {
+  // 5e-324 degrees/s is positive but 0 rad/s once converted.
+  expect_error(with("<Velocity>10</Velocity>", "<Velocity>5e-324</Velocity>"), 7, "must be positive");
+  expect_error(with("<Velocity>10</Velocity>", "<Velocity>5e-324</Velocity>"), 7, "(too small)");
+  expect_error(with("<Velocity>10</Velocity>", "<Velocity>1e-322</Velocity>"), 7, "(too small)");
+  // The smallest that survives is accepted.
+  const auto seq = io::parse_cmml(with("<Velocity>10</Velocity>", "<Velocity>1e-320</Velocity>"), "s.cmml");
+  EXPECT_GT(seq.events[1].folds[0].velocity, 0.0);
+}
+
+TEST(CmmlErrors, NotUtf8) {
+  expect_error(with("two events", "\xe9v\xe9nements"), 2, "not valid UTF-8 (byte 0xE9): foldkit reads UTF-8 only");
+  expect_error(with("two events", "&#xDFFF;"), 2, "is not an allowed XML character");
+  expect_error("<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?>\n<CMML/>", 1,
+               "encoding 'ISO-8859-1' is not supported: convert the file to UTF-8");
+}
+
+TEST(Cmml, WrittenAnglesStayWithin180) {
+  geometry::FoldSequence seq = io::parse_cmml(kSequence, "s.cmml");
+  auto& fold = seq.events[0].folds[0];
+  const std::pair<double, const char*> cases[] = {
+      {std::nextafter(M_PI, 4.0), "180"}, {-std::nextafter(M_PI, 4.0), "-180"}, {M_PI, "180"},
+      {-M_PI, "-180"}, {4.0, "180"}, {-7.0, "-180"}};
+  for (const auto& [angle, text] : cases) {
+    fold.angle = angle;
+    const std::string file = io::write_cmml(seq);
+    EXPECT_NE(file.find(std::string("<FoldAngle>") + text + "</FoldAngle>"), std::string::npos) << angle << "\n" << file;
+    const auto back = io::parse_cmml(file, "t.cmml");
+    EXPECT_EQ(std::abs(back.events[0].folds[0].angle), M_PI);
+  }
+}
+
+TEST(Cmml, WriterRejectsWhatCannotBeReadBack) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const geometry::FoldSequence good = io::parse_cmml(kSequence, "s.cmml");
+  auto expect_throw = [&](double angle, double velocity, const std::string& fragment) {
+    geometry::FoldSequence seq = good;
+    seq.events[1].folds[0].angle = angle;
+    seq.events[1].folds[0].velocity = velocity;
+    try {
+      io::write_cmml(seq);
+      FAIL() << "wrote angle " << angle << " velocity " << velocity;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("joint 3"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  expect_throw(nan, 1.0, "fold angle: not a finite number");
+  expect_throw(inf, 1.0, "fold angle: not a finite number");
+  expect_throw(-inf, 1.0, "fold angle: not a finite number");
+  expect_throw(0.5, nan, "velocity: not a finite number");
+  expect_throw(0.5, inf, "velocity: not a finite number");
+  expect_throw(0.5, 1e308, "not a finite number");  // 5.7e309 degrees/s
+  expect_throw(0.5, 0.0, "velocity must be positive");
+  expect_throw(0.5, -1.0, "velocity must be positive");
+  // The smallest positive velocity is written and reads back positive.
+  geometry::FoldSequence seq = good;
+  seq.events[1].folds[0].velocity = 5e-324;
+  const auto back = io::parse_cmml(io::write_cmml(seq), "t.cmml");
+  EXPECT_GT(back.events[1].folds[0].velocity, 0.0);
+}
+
+TEST(Cmml, TitleRoundTripsAndForbiddenCharactersAreReplaced) {
+  geometry::FoldSequence seq = io::parse_cmml(kSequence, "s.cmml");
+  seq.title = "fold  it\n  twice";
+  EXPECT_EQ(io::parse_cmml(io::write_cmml(seq), "t.cmml").title, seq.title);
+  seq.title = "bell\x07";
+  EXPECT_EQ(io::parse_cmml(io::write_cmml(seq), "t.cmml").title, "bell\xef\xbf\xbd");
 }
 
 TEST(CmmlErrors, Structure) {

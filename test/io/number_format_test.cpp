@@ -52,6 +52,15 @@ TEST(NumberFormat, ParseRejectsNonFinite) {
   EXPECT_TRUE(parse_numbers("").values.empty());
 }
 
+TEST(NumberFormat, PlusSignIsFollowedByANumber) {
+  EXPECT_EQ(parse_numbers("+5 +.5 +0.25e1").values, (std::vector<double>{5, 0.5, 2.5}));
+  for (const char* bad : {"+-5", "++5", "+", "+inf", "+nan", "+ 5", "1 +-2"}) {
+    const NumberList list = parse_numbers(bad);
+    EXPECT_FALSE(list.error.empty()) << bad;
+    EXPECT_NE(list.error.find("is not a number"), std::string::npos) << bad << ": " << list.error;
+  }
+}
+
 TEST(NumberFormat, ParseInt) {
   EXPECT_EQ(parse_int(" 42 "), 42);
   EXPECT_EQ(parse_int("-7"), -7);
@@ -60,6 +69,14 @@ TEST(NumberFormat, ParseInt) {
   EXPECT_FALSE(parse_int("2147483648"));
   EXPECT_FALSE(parse_int(""));
   EXPECT_FALSE(parse_int("12abc"));
+}
+
+TEST(NumberFormat, ParseIntAcceptsOnePlus) {
+  EXPECT_EQ(parse_int("+5"), 5);
+  EXPECT_EQ(parse_int(" +42\n"), 42);
+  EXPECT_EQ(parse_int("+0"), 0);
+  EXPECT_EQ(parse_int("+2147483647"), 2147483647);
+  for (const char* bad : {"+-5", "++5", "+", "-+5", "+ 5", "+2147483648", "+x"}) EXPECT_FALSE(parse_int(bad)) << bad;
 }
 
 }  // namespace

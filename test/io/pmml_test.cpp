@@ -1,4 +1,9 @@
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
 #include <gtest/gtest.h>
+#include <tinyxml2.h>
 
 #include "foldkit/io/parse_error.hpp"
 #include "foldkit/io/pmml.hpp"
@@ -134,6 +139,127 @@ TEST(PmmlErrors, Values) {
   expect_error(with("0 0 1 0 1 1", "0 0 1 0 1 1e999"), 6, "out of range");
   expect_error(with("<Coords>1 0 1 1</Coords>", "<Coords>1 0 1 x</Coords>"), 16, "'x' is not a number");
   expect_error(with("<SpringConst>2.5</SpringConst>", "<SpringConst></SpringConst>"), 18, "must hold one number, found 0");
+}
+
+TEST(PmmlErrors, RejectsBytesThatAreNotUtf8) {
+  const std::string msg = "not valid UTF-8 (byte 0xE9): foldkit reads UTF-8 only";
+  expect_error(with("<ID>1</ID>", "<ID>\xe9</ID>"), 5, msg);
+  expect_error(with("two panels", "caf\xe9"), 3, msg);                         // ISO-8859-1 "café"
+  expect_error(with("two panels", "\xc0\xaf"), 3, "(byte 0xC0)");              // overlong '/'
+  expect_error(with("two panels", "\xe0\x80\xaf"), 3, "(byte 0xE0)");          // overlong, 3 bytes
+  expect_error(with("two panels", "\xed\xa0\x80"), 3, "(byte 0xED)");          // surrogate U+D800
+  expect_error(with("two panels", "\xf4\x90\x80\x80"), 3, "(byte 0xF4)");      // U+110000
+  expect_error(with("two panels", "\xf8\x88\x80\x80\x80"), 3, "(byte 0xF8)");  // 5-byte form
+  expect_error(with("two panels", "\x80"), 3, "(byte 0x80)");                  // stray continuation
+  expect_error(with("<DampConst>0.25</DampConst>", "<DampConst>0.25</DampConst><!-- \xe9 -->"), 19, "(byte 0xE9)");
+  expect_error(std::string(kTwoPanels) + "\xe2\x82", 22, "(byte 0xE2)");  // truncated at the end
+  expect_error(with("two panels", "a\x1b"), 3, "character U+001B is not allowed in XML");
+  expect_error(with("two panels", "\xef\xbf\xbe"), 3, "U+FFFE is not allowed");
+  // Real UTF-8 (2, 3 and 4 bytes) and a byte-order mark are fine.
+  const auto s = io::parse_pmml("\xef\xbb\xbf" + with("two panels", "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x93\x84"), "u.pmml");
+  EXPECT_EQ(s.title, "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x93\x84");
+}
+
+TEST(PmmlErrors, RejectsCharacterReferencesToForbiddenCodePoints) {
+  expect_error(with("two panels", "&#xD800;"), 3, "character reference '&#xD800;' is not an allowed XML character");
+  expect_error(with("two panels", "a &#57343; b"), 3, "'&#57343;'");  // U+DFFF
+  expect_error(with("two panels", "&#x110000;"), 3, "'&#x110000;'");
+  expect_error(with("two panels", "&#x200000;"), 3, "'&#x200000;'");
+  expect_error(with("two panels", "&#0;"), 3, "'&#0;'");
+  expect_error(with("two panels", "&#x1B;"), 3, "'&#x1B;'");
+  expect_error(with("two panels", "&#xFFFF;"), 3, "'&#xFFFF;'");
+  expect_error(with("<ID>1</ID>", "<ID>1&#xD800;</ID>"), 5, "'&#xD800;'");
+  // Allowed references decode; in comments and CDATA "&#0;" is plain text.
+  const auto s = io::parse_pmml(with("two panels", "caf&#xE9; &#x1F4C4;&#9;x<!-- &#0; -->"), "r.pmml");
+  EXPECT_EQ(s.title, "caf\xc3\xa9 \xf0\x9f\x93\x84\tx");
+  EXPECT_EQ(io::parse_pmml(with("two panels", "<![CDATA[&#0;]]>"), "r.pmml").title, "&#0;");
+}
+
+TEST(PmmlErrors, RejectsDeclaredEncodingsOtherThanUtf8) {
+  const std::string latin1 = std::string("<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?>\n") + (kTwoPanels + 22);
+  expect_error(latin1, 1, "encoding 'ISO-8859-1' is not supported: convert the file to UTF-8");
+  // Reported before the first Latin-1 byte.
+  std::string latin1_cafe = latin1;
+  latin1_cafe.replace(latin1_cafe.find("two panels"), 10, "caf\xe9");
+  expect_error(latin1_cafe, 1, "encoding 'ISO-8859-1' is not supported");
+  // A declaration after leading whitespace is read from tinyxml2's declaration node.
+  expect_error("\n" + latin1, 2, "encoding 'ISO-8859-1' is not supported");
+  expect_error(std::string("<?xml version='1.0' encoding = 'windows-1252'?>\n") + (kTwoPanels + 22), 1, "'windows-1252'");
+  for (const char* ok : {"UTF-8", "utf-8"}) {
+    const std::string text = std::string("<?xml version=\"1.0\" encoding=\"") + ok + "\"?>\n" + (kTwoPanels + 22);
+    EXPECT_EQ(io::parse_pmml(text, "ok.pmml").title, "two panels");
+  }
+}
+
+TEST(Pmml, LeafTextJoinsTextCdataAndSkipsComments) {
+  EXPECT_EQ(io::parse_pmml(with("<ID>1</ID>", "<ID>1<!-- c -->2</ID>"), "x").actors[0].id, 12);
+  EXPECT_EQ(io::parse_pmml(with("<ID>1</ID>", "<ID>5<![CDATA[6]]></ID>"), "x").actors[0].id, 56);
+  EXPECT_EQ(io::parse_pmml(with("<SpringConst>2.5</SpringConst>", "<SpringConst><!-- k -->2<![CDATA[.]]>5</SpringConst>"), "x")
+                .joints[0].spring, 2.5);
+  EXPECT_EQ(io::parse_pmml(with("two panels", "two <!-- x -->panels<![CDATA[ & <more>]]>"), "x").title,
+            "two panels & <more>");
+  expect_error(with("<ID>1</ID>", "<ID>1 <!-- c --> 2</ID>"), 5, "must be an integer");
+}
+
+TEST(Pmml, TitleKeepsInnerWhitespace) {
+  EXPECT_EQ(io::parse_pmml(with("two panels", "  two   panels\n\tend  "), "x").title, "two   panels\n\tend");
+  geometry::PatternSpec s = test::two_by_two();
+  for (const std::string title : {"a   x", "line one\nline two", "a \t b\r\nc", "x  y  \n  z"}) {
+    s.title = title;
+    EXPECT_EQ(io::parse_pmml(io::write_pmml(s), "t.pmml").title, title);
+  }
+  // Whitespace elsewhere is tolerated as before.
+  const auto a = io::parse_pmml(with("<DampConst>0.25</DampConst>", "<DampConst>\n 0.25 \n</DampConst><Assignment> V\n</Assignment>"), "x");
+  EXPECT_EQ(a.joints[0].assignment, geometry::Assignment::Valley);
+  EXPECT_EQ(a.joints[0].damping, 0.25);
+}
+
+TEST(Pmml, WriterReplacesCharactersXmlForbids) {
+  geometry::PatternSpec s = test::two_by_two();
+  const std::string fffd = "\xef\xbf\xbd";
+  const std::pair<std::string, std::string> cases[] = {
+      {"esc\x1b[0m", "esc" + fffd + "[0m"},
+      {std::string("a\x01" "b\x1f" "c\x7f"), "a" + fffd + "b" + fffd + "c\x7f"},
+      {"x\xef\xbf\xbey\xef\xbf\xbf", "x" + fffd + "y" + fffd},   // U+FFFE, U+FFFF
+      {"caf\xe9 \xed\xa0\x80!", "caf" + fffd + " " + fffd + fffd + fffd + "!"},  // not UTF-8
+      {"tab\tok \xc3\xa9", "tab\tok \xc3\xa9"},
+  };
+  for (const auto& [title, expected] : cases) {
+    s.title = title;
+    const std::string file = io::write_pmml(s);
+    tinyxml2::XMLDocument doc;
+    ASSERT_EQ(doc.Parse(file.c_str(), file.size()), tinyxml2::XML_SUCCESS) << file;
+    EXPECT_EQ(io::parse_pmml(file, "w.pmml").title, expected);
+  }
+}
+
+TEST(Pmml, WriterRejectsNonFiniteNumbers) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  auto expect_throw = [](const geometry::PatternSpec& s, const std::string& fragment) {
+    try {
+      io::write_pmml(s);
+      FAIL() << "wrote " << fragment;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("not a finite number"), std::string::npos) << e.what();
+    }
+  };
+  geometry::PatternSpec s = test::two_by_two();
+  s.actors[1].triangles[0].corners[2] = Vec2(inf, 0);
+  expect_throw(s, "actor " + std::to_string(s.actors[1].id) + " triangle coordinate");
+  s = test::two_by_two();
+  s.actors[0].triangles[0].corners[0] = Vec2(0, nan);
+  expect_throw(s, "triangle coordinate");
+  s = test::two_by_two();
+  s.joints[0].coords[1] = Vec2(-inf, 1);
+  expect_throw(s, "joint " + std::to_string(s.joints[0].id) + " coordinate");
+  s = test::two_by_two();
+  s.joints[1].spring = nan;
+  expect_throw(s, "spring constant");
+  s = test::two_by_two();
+  s.joints[2].damping = inf;
+  expect_throw(s, "damping constant");
 }
 
 TEST(Pmml, ReadPmmlReportsGeometryWithLine) {

@@ -16,14 +16,16 @@ std::string format_degrees(double radians);
 double degrees_to_radians(double degrees);
 
 // Whitespace-separated finite numbers; an error text when a token is not one (NaN, inf,
-// out of range like 1e999, or garbage).
+// out of range like 1e999, or garbage). A token may start with one '+' followed by a digit or
+// '.' ("+1.5", "+.5"; not "+-5", "++5").
 struct NumberList {
   std::vector<double> values;
   std::string error;  // empty on success
 };
 NumberList parse_numbers(std::string_view text);
 
-// A whole integer within int range (no sign games, no fraction, no exponent).
+// A whole integer within int range, surrounding whitespace allowed: an optional '-' or one '+'
+// then digits ("+5" yes; "+-5", "++5", "+", fractions and exponents no).
 std::optional<int> parse_int(std::string_view text);
 
 }  // namespace foldkit::io
