@@ -84,15 +84,7 @@ TEST(BuildPattern, OrientsTrianglesCounterClockwise) {
 }
 
 TEST(BuildPattern, JointAlongTwoCollinearEdges) {
-  // Two 1×2 actors side by side; the left one has an extra corner at (1,1) on the shared line.
-  PatternSpec s;
-  ActorSpec left{1, {}, 0}, right{2, {}, 0};
-  left.triangles = {{{Vec2(0, 0), Vec2(1, 0), Vec2(1, 1)}, 0}, {{Vec2(0, 0), Vec2(1, 1), Vec2(0, 2)}, 0},
-                    {{Vec2(0, 2), Vec2(1, 1), Vec2(1, 2)}, 0}};
-  right.triangles = {{{Vec2(1, 0), Vec2(2, 0), Vec2(1, 1)}, 0}, {{Vec2(1, 1), Vec2(2, 0), Vec2(2, 2)}, 0},
-                     {{Vec2(1, 1), Vec2(2, 2), Vec2(1, 2)}, 0}};
-  s.actors = {left, right};
-  s.joints = {joint(7, Vec2(1, 0), Vec2(1, 2), 1, 2)};
+  const PatternSpec s = foldkit::test::straight_crease_through_vertex();
   const BuildResult r = build_pattern(s);
   ASSERT_TRUE(r.pattern) << all_messages(r);
   ASSERT_EQ(r.pattern->interior_vertices().size(), 1u);  // (1,1): the crease passes straight through

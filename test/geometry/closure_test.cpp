@@ -7,21 +7,14 @@
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/projection.hpp"
+#include "spec_helpers.hpp"
 
 namespace {
 
 using namespace foldkit::geometry;
 namespace gen = generators;
+using foldkit::test::random_sectors;
 
-// Random positive sectors summing to 2π, none below `smallest`.
-std::vector<double> random_sectors(int n, std::mt19937& rng, double smallest = 0.05) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<double> s(n);
-  double sum = 0;
-  for (double& x : s) sum += (x = u(rng));
-  for (double& x : s) x = smallest + x / sum * (2 * M_PI - n * smallest);
-  return s;
-}
 
 // Central differences of the residual, column by column.
 Eigen::MatrixXd numeric_jacobian(const ClosureSystem& sys, const FoldState& at, double h = 1e-6) {
@@ -252,15 +245,7 @@ namespace {
 // A crease that runs straight through a vertex (one joint over two collinear edges): its two
 // halves enter that vertex's loop as d and −d, which cancel at any angle.
 TEST(Closure, StraightCreaseThroughAVertex) {
-  PatternSpec s;
-  ActorSpec left{1, {}, 0}, right{2, {}, 0};
-  left.triangles = {{{Vec2(0, 0), Vec2(1, 0), Vec2(1, 1)}, 0}, {{Vec2(0, 0), Vec2(1, 1), Vec2(0, 2)}, 0},
-                    {{Vec2(0, 2), Vec2(1, 1), Vec2(1, 2)}, 0}};
-  right.triangles = {{{Vec2(1, 0), Vec2(2, 0), Vec2(1, 1)}, 0}, {{Vec2(1, 1), Vec2(2, 0), Vec2(2, 2)}, 0},
-                     {{Vec2(1, 1), Vec2(2, 2), Vec2(1, 2)}, 0}};
-  s.actors = {left, right};
-  s.joints = {{7, {Vec2(1, 0), Vec2(1, 2)}, {1, 2}, 1.0, 0.1, Assignment::Unassigned, 0}};
-  const CreasePattern p = build_or_throw(s);
+  const CreasePattern p = build_or_throw(foldkit::test::straight_crease_through_vertex());
   const ClosureSystem sys(p);
   ASSERT_EQ(sys.vertex_loops(), 1u);
   for (double a : {0.4, -2.0, M_PI}) {

@@ -1,4 +1,8 @@
 #pragma once
+#include <cmath>
+#include <random>
+#include <vector>
+
 #include "foldkit/geometry/pattern_spec.hpp"
 
 namespace foldkit::test {
@@ -22,6 +26,31 @@ inline geometry::PatternSpec two_by_two() {
   s.actors = {square_actor(1, 0, 0), square_actor(2, 1, 0), square_actor(3, 1, 1), square_actor(4, 0, 1)};
   s.joints = {joint(1, Vec2(1, 0), Vec2(1, 1), 1, 2), joint(2, Vec2(1, 1), Vec2(2, 1), 2, 3),
               joint(3, Vec2(1, 1), Vec2(1, 2), 3, 4), joint(4, Vec2(0, 1), Vec2(1, 1), 4, 1)};
+  return s;
+}
+
+// Two 1 × 2 actors side by side whose joint (ID 7) runs from (1,0) to (1,2) straight through
+// the vertex (1,1), which splits the shared line into two mesh edges.
+inline geometry::PatternSpec straight_crease_through_vertex() {
+  using geometry::Vec2;
+  geometry::PatternSpec s;
+  geometry::ActorSpec left{1, {}, 0}, right{2, {}, 0};
+  left.triangles = {{{Vec2(0, 0), Vec2(1, 0), Vec2(1, 1)}, 0}, {{Vec2(0, 0), Vec2(1, 1), Vec2(0, 2)}, 0},
+                    {{Vec2(0, 2), Vec2(1, 1), Vec2(1, 2)}, 0}};
+  right.triangles = {{{Vec2(1, 0), Vec2(2, 0), Vec2(1, 1)}, 0}, {{Vec2(1, 1), Vec2(2, 0), Vec2(2, 2)}, 0},
+                     {{Vec2(1, 1), Vec2(2, 2), Vec2(1, 2)}, 0}};
+  s.actors = {left, right};
+  s.joints = {joint(7, Vec2(1, 0), Vec2(1, 2), 1, 2)};
+  return s;
+}
+
+// n random positive sector angles summing to 2π, none below `smallest`.
+inline std::vector<double> random_sectors(int n, std::mt19937& rng, double smallest = 0.05) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> s(static_cast<std::size_t>(n));
+  double sum = 0;
+  for (double& x : s) sum += (x = u(rng));
+  for (double& x : s) x = smallest + x / sum * (2 * M_PI - n * smallest);
   return s;
 }
 
