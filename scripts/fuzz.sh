@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang (ASan + UBSan) in ./build-fuzz and runs one of them.
+#   bash scripts/fuzz.sh pmml|cmml|fold [SECONDS=600] [JOBS=1]
+# The corpus grows in ./build-fuzz/corpus-NAME, seeded from the examples, the shared fixtures
+# and the bad-input corpus; crashes are written to ./build-fuzz/crash-NAME-*.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+name=${1:?usage: fuzz.sh pmml|cmml|fold [seconds] [jobs]}
+seconds=${2:-600}
+jobs=${3:-1}
+command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ is needed (apt-get install clang)" >&2; exit 1; }
+flags="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -g -O1"
+cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DFOLDKIT_BUILD_FUZZERS=ON \
+  -DFOLDKIT_BUILD_TESTS=OFF -DFOLDKIT_BUILD_BENCHMARKS=OFF -DCMAKE_CXX_FLAGS="$flags" >&2
+cmake --build build-fuzz -j "$(nproc)" --target "fuzz_$name" foldkit >&2
+corpus=build-fuzz/corpus-$name
+if [ ! -d "$corpus" ]; then
+  mkdir -p "$corpus"
+  ./build-fuzz/apps/foldkit demo -o build-fuzz/seeds >/dev/null 2>&1
+  cp build-fuzz/seeds/*."$name" test/data/bad/*."$name" "$corpus"/ 2>/dev/null || true
+  cp ../shared/fixtures/fold/*."$name" "$corpus"/ 2>/dev/null || true
+fi
+parallel=()
+# With -jobs, libFuzzer forks workers that log to ./fuzz-N.log: give each target its own folder.
+[ "$jobs" -gt 1 ] && parallel=(-jobs="$jobs" -workers="$jobs")
+mkdir -p "build-fuzz/logs-$name"
+cd "build-fuzz/logs-$name"
+../test/fuzz/"fuzz_$name" "../corpus-$name" -max_total_time="$seconds" "${parallel[@]}" \
+  -max_len=65536 -timeout=10 -rss_limit_mb=4096 -artifact_prefix="../crash-$name-" -print_final_stats=1
