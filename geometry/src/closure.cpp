@@ -13,19 +13,15 @@ namespace {
 using detail::Mat3;
 using detail::V3;
 
-V3 lift(const Vec2& p) { return V3(p.x(), p.y(), 0.0); }
-
 // A joint's motion in the world: unit axis ω and a point q on it, for the actor on `side`.
 struct Twist {
   V3 w, v;  // v = q × ω
 };
 
 Twist joint_twist(const CreasePattern& p, int joint, double side, const Eigen::Isometry3d& parent) {
-  const Joint& j = p.joints()[joint];
-  const V3 a = lift(p.vertices()[j.v[0]]);
-  const V3 d = (lift(p.vertices()[j.v[1]]) - a).normalized();
-  const V3 w = parent.linear() * (side * d);
-  const V3 q = parent * a;
+  const JointAxis axis = joint_axis(p, joint);
+  const V3 w = parent.linear() * (side * axis.direction);
+  const V3 q = parent * axis.point;
   return {w, q.cross(w)};
 }
 
@@ -115,12 +111,7 @@ void ClosureSystem::evaluate_cycles(const FoldState& state, Eigen::VectorXd& r, 
   Eigen::Index row = static_cast<Eigen::Index>(3 * loops_.size());
   for (const HoleCycle& c : cycles_) {
     // W = T_from · G · T_to⁻¹ is the identity when the two ways round agree.
-    const Joint& j = p.joints()[c.joint];
-    const V3 a = lift(p.vertices()[j.v[0]]);
-    const V3 d = (lift(p.vertices()[j.v[1]]) - a).normalized();
-    Eigen::Isometry3d G = Eigen::Isometry3d::Identity();
-    G.linear() = detail::rotation(d, c.side * state.angles[c.joint]);
-    G.translation() = a - G.linear() * a;
+    const Eigen::Isometry3d G = joint_motion(joint_axis(p, c.joint), c.side * state.angles[c.joint]);
     const Eigen::Isometry3d W = pose[c.from] * G * pose[c.to].inverse();
     const V3 phi = detail::log_so3(W.linear());
     r.segment<3>(row) = phi;

@@ -12,6 +12,19 @@ Vec3 lift(const Vec2& p) { return Vec3(p.x(), p.y(), 0.0); }
 
 }  // namespace
 
+JointAxis joint_axis(const CreasePattern& pattern, int joint) {
+  const Joint& j = pattern.joints()[joint];
+  const Vec3 p = lift(pattern.vertices()[j.v[0]]);
+  return {p, (lift(pattern.vertices()[j.v[1]]) - p).normalized()};
+}
+
+Eigen::Isometry3d joint_motion(const JointAxis& axis, double angle) {
+  Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
+  m.linear() = detail::rotation(axis.direction, angle);
+  m.translation() = axis.point - m.linear() * axis.point;
+  return m;
+}
+
 double side_of(const CreasePattern& pattern, int joint, int actor) {
   const Joint& j = pattern.joints()[joint];
   const auto& V = pattern.vertices();
@@ -74,13 +87,7 @@ std::vector<Eigen::Isometry3d> facet_poses(const CreasePattern& pattern, const K
   for (int a : tree.order) {
     const int j = tree.parent_joint[a];
     if (j < 0) continue;
-    const Joint& joint = pattern.joints()[j];
-    const Vec3 p = lift(pattern.vertices()[joint.v[0]]);
-    const Vec3 d = (lift(pattern.vertices()[joint.v[1]]) - p).normalized();
-    Eigen::Isometry3d local = Eigen::Isometry3d::Identity();
-    local.linear() = detail::rotation(d, tree.side[a] * state.angles[j]);
-    local.translation() = p - local.linear() * p;
-    pose[a] = pose[tree.parent[a]] * local;
+    pose[a] = pose[tree.parent[a]] * joint_motion(joint_axis(pattern, j), tree.side[a] * state.angles[j]);
   }
   return pose;
 }

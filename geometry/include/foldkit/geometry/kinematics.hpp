@@ -23,6 +23,16 @@ struct KinematicTree {
 // Breadth-first from `root` (actor index; other components from their lowest actor index).
 KinematicTree make_tree(const CreasePattern& pattern, int root = 0);
 
+// A joint's axis in the flat sheet (z = 0): its first end and its unit direction v[0] → v[1].
+struct JointAxis {
+  Eigen::Vector3d point;
+  Eigen::Vector3d direction;
+};
+JointAxis joint_axis(const CreasePattern& pattern, int joint);
+
+// The rigid motion that turns a facet by `angle` (radians, right-hand rule) about `axis`.
+Eigen::Isometry3d joint_motion(const JointAxis& axis, double angle);
+
 // +1 when `actor` lies on the right of the axis of `joint` (v[0] → v[1]), −1 on its left.
 double side_of(const CreasePattern& pattern, int joint, int actor);
 
