@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "foldkit/io/parse_error.hpp"
+#include "text_lines.hpp"
 
 namespace foldkit::io::detail {
 namespace {
@@ -14,10 +15,6 @@ namespace {
 // keeps every recursive step after it (ours and nlohmann's) safe.
 constexpr int kMaxDepth = 64;
 
-int line_at(std::string_view text, std::size_t offset) {
-  offset = std::min(offset, text.size());
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
-}
 
 // nlohmann reports number overflow (1e999) without a position; find the token ourselves.
 int overflow_line(std::string_view text) {

@@ -11,6 +11,7 @@
 
 #include "foldkit/io/number_format.hpp"
 #include "foldkit/io/parse_error.hpp"
+#include "text_lines.hpp"
 
 namespace foldkit::io::detail {
 namespace {
@@ -75,9 +76,6 @@ std::string code_point_name(char32_t c) {
   return buf;
 }
 
-int line_at(std::string_view text, std::size_t pos) {
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(pos), '\n'));
-}
 
 // First offset of `text` that is not valid UTF-8 or not an XML character, with the complaint.
 std::optional<std::pair<std::size_t, std::string>> bad_character(std::string_view text) {

@@ -1,0 +1,13 @@
+#pragma once
+#include <algorithm>
+#include <string_view>
+
+namespace foldkit::io::detail {
+
+// 1-based line of the byte at `offset` in `text`.
+inline int line_at(std::string_view text, std::size_t offset) {
+  offset = std::min(offset, text.size());
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
+}
+
+}  // namespace foldkit::io::detail
