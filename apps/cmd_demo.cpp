@@ -1,4 +1,5 @@
 #include <filesystem>
+#include <functional>
 #include <iostream>
 
 #include "cli_common.hpp"
@@ -44,33 +45,56 @@ nlohmann::json fold_stage(const geometry::CreasePattern& pattern, const geometry
           {"iterations", r.iterations}};
 }
 
-// A rough start for each folded example: signs from the assignment where there is one.
-geometry::FoldState rough_start(const std::string& name, const geometry::CreasePattern& p) {
+using RoughStart = std::function<geometry::FoldState(const geometry::CreasePattern&)>;
+
+// A start for the projection, away from the flat state on the side of the intended fold.
+RoughStart alternating(double mountain, double valley) {
+  return [=](const geometry::CreasePattern& p) {
+    geometry::FoldState s = geometry::FoldState::flat(p);
+    for (Eigen::Index j = 0; j < s.angles.size(); ++j) s.angles[j] = j % 2 ? valley : mountain;
+    return s;
+  };
+}
+
+RoughStart along_assignment(double magnitude) {
+  return [=](const geometry::CreasePattern& p) {
+    geometry::FoldState s = geometry::FoldState::flat(p);
+    for (std::size_t j = 0; j < p.joints().size(); ++j)
+      s.angles[static_cast<Eigen::Index>(j)] =
+          p.joints()[j].assignment == geometry::Assignment::Mountain ? magnitude : -magnitude;
+    return s;
+  };
+}
+
+// The boat's keel folds up into a hull; bow and stern keels turn the other way (joint order in
+// docs/GENERATORS.md).
+geometry::FoldState boat_start(const geometry::CreasePattern& p) {
   geometry::FoldState s = geometry::FoldState::flat(p);
-  for (std::size_t j = 0; j < p.joints().size(); ++j) {
-    const auto i = static_cast<Eigen::Index>(j);
-    if (name == "degree8-vertex") s.angles[i] = j % 2 ? -0.45 : 0.5;
-    if (name == "miura-4x4") s.angles[i] = p.joints()[j].assignment == geometry::Assignment::Mountain ? 0.6 : -0.6;
-  }
-  if (name == "boat") s.angles << 0.8, -0.8, -0.8, 0.8, -0.8, -0.8, 0, 0, -0.8, -0.8;  // hull up, bow and stern up
+  s.angles << 0.8, -0.8, -0.8, 0.8, -0.8, -0.8, 0, 0, -0.8, -0.8;
   return s;
 }
 
+struct Example {
+  std::string name;
+  geometry::PatternSpec spec;
+  RoughStart fold;  // empty: the example is not folded
+};
+
 int run(const std::string& dir) {
   fs::create_directories(dir);
-  const std::vector<std::pair<std::string, geometry::PatternSpec>> examples = {
-      {"degree8-vertex", gen::single_vertex(std::vector<double>(8, M_PI / 4))},
-      {"boat", gen::boat()},
-      {"miura-4x4", gen::miura(4, 4)},
-      {"waterbomb-3x4", gen::waterbomb(3, 4)},
-      {"cube-sheet-2", gen::cube_sheet(2)},
-      {"strip-5", gen::strip(5)},
+  const std::vector<Example> examples = {
+      {"degree8-vertex", gen::single_vertex(std::vector<double>(8, M_PI / 4)), alternating(0.5, -0.45)},
+      {"boat", gen::boat(), boat_start},
+      {"miura-4x4", gen::miura(4, 4), along_assignment(0.6)},
+      {"waterbomb-3x4", gen::waterbomb(3, 4), {}},
+      {"cube-sheet-2", gen::cube_sheet(2), {}},
+      {"strip-5", gen::strip(5), {}},
   };
   nlohmann::json report = {{"output", dir},
                            {"stages", {"generate", "validate", "convert", "kinematics"}},
                            {"patterns", nlohmann::json::object()},
                            {"kinematics", nlohmann::json::object()}};
-  for (const auto& [name, spec] : examples) {
+  for (const auto& [name, spec, fold] : examples) {
     const geometry::CreasePattern pattern = geometry::build_or_throw(spec);
     const std::string base = (fs::path(dir) / name).string();
     save_pattern(base + ".pmml", pattern);
@@ -82,8 +106,8 @@ int run(const std::string& dir) {
     report["patterns"][name] = pattern_summary(pattern);
     std::cerr << "[demo] " << name << ": " << pattern.actors().size() << " actors, " << pattern.joints().size()
               << " joints -> " << base << ".{pmml,svg,fold}\n";
-    if (name == "degree8-vertex" || name == "boat" || name == "miura-4x4") {
-      const nlohmann::json k = fold_stage(pattern, rough_start(name, pattern), base);
+    if (fold) {
+      const nlohmann::json k = fold_stage(pattern, fold(pattern), base);
       report["kinematics"][name] = k;
       std::cerr << "[demo] " << name << ": DOF " << k["dof_flat"] << " flat, " << k["dof_folded"]
                 << " folded (closure error " << k["closure_error"].get<double>() << " rad) -> " << base
