@@ -1,0 +1,70 @@
+#pragma once
+#include <array>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "foldkit/geometry/crease_pattern.hpp"
+#include "foldkit/geometry/fold_state.hpp"
+
+namespace foldkit::simulation {
+
+enum class BroadPhase {
+  DynamicAabbTree,  // FCL's dynamic AABB tree manager (the default)
+  AllPairs,         // every pair through the narrow phase: the baseline benchmarks compare with
+};
+
+struct CollisionOptions {
+  // Distance (relative to the sheet's bounding-box diagonal) within which points count as
+  // touching: a facet must pass farther than this through another to cross it.
+  double tolerance = 1e-6;
+  // Absolute distance by which every facet's bounding box grows, so that pairs that may meet
+  // before the next check are compared now (the simulator passes its largest sweep per check).
+  double margin = 0.0;
+  BroadPhase broad_phase = BroadPhase::DynamicAabbTree;
+};
+
+enum class CrossingKind {
+  Mesh,     // the facets' triangles cut through each other
+  Stacked,  // facets lying flat on each other changed sides between two checks
+  Crease,   // a crease turned past ±180°: its two facets passed through each other
+};
+const char* to_string(CrossingKind kind);
+
+struct Crossing {
+  std::array<int, 2> actors{};  // actor indices, smaller first
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // world coordinates
+  CrossingKind kind = CrossingKind::Mesh;
+};
+
+// The sheet's facets as FCL triangle meshes. Pairs of facets that share a crease are left out of
+// the mesh test and judged by their fold angle instead; every other pair near enough for the
+// broad phase is judged by the rules of docs/SIMULATION.md: touching is allowed, crossing is not.
+class CollisionWorld {
+ public:
+  // Keeps a reference to `pattern`, which must outlive the world.
+  explicit CollisionWorld(const geometry::CreasePattern& pattern, const CollisionOptions& options = {});
+  CollisionWorld(geometry::CreasePattern&&, const CollisionOptions& = {}) = delete;
+  ~CollisionWorld();
+  CollisionWorld(CollisionWorld&&) noexcept;
+  CollisionWorld& operator=(CollisionWorld&&) noexcept;
+
+  // The crossings at `poses` (one per actor, as from geometry::facet_poses) and `state`. Each call
+  // remembers on which side of each other nearby stacked facets lie, so calls must follow the
+  // motion in order, close enough that no facet moves farther than `margin` between two.
+  std::vector<Crossing> check(const std::vector<Eigen::Isometry3d>& poses, const geometry::FoldState& state);
+  // Forgets that memory (a new motion starts).
+  void reset();
+
+  double tolerance() const;                 // absolute
+  std::size_t checked_pairs() const;        // pairs the broad phase passed on the last check
+  std::size_t mesh_tests() const;           // pairs that went to FCL's narrow phase on the last check
+  std::size_t skipped_pairs() const;        // facet pairs that share a crease
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace foldkit::simulation

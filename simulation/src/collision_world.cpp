@@ -1,0 +1,279 @@
+#include "foldkit/simulation/collision_world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <unordered_set>
+
+#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/narrowphase/collision.h>
+
+#include "foldkit/geometry/triangle_overlap.hpp"
+#include "triangle_crossing.hpp"
+
+namespace foldkit::simulation {
+
+const char* to_string(CrossingKind kind) {
+  switch (kind) {
+    case CrossingKind::Mesh: return "mesh";
+    case CrossingKind::Stacked: return "stacked";
+    case CrossingKind::Crease: return "crease";
+  }
+  return "?";
+}
+
+namespace {
+
+using geometry::CreasePattern;
+
+// FCL bounds a rotated object by the cube around its bounding sphere; a facet's own corners give a
+// much tighter box, which keeps the broad phase from pairing every neighbour of a folded sheet.
+class FacetObject : public fcl::CollisionObjectd {
+ public:
+  using fcl::CollisionObjectd::CollisionObjectd;
+  void set_box(const fcl::AABBd& box) { aabb = box; }
+};
+
+struct Facet {
+  std::vector<Eigen::Vector3d> points;          // flat position (z = 0), the facet's own frame
+  std::vector<std::array<int, 3>> triangles;    // into points
+  std::vector<geometry::Tri2> flat;             // the triangles in the plane
+  std::unique_ptr<FacetObject> object;
+};
+
+std::uint64_t key(int a, int b) { return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b); }
+
+enum Side : int { Below = -1, On = 0, Above = 1, Across = 2 };
+
+struct Memory {
+  int side = On;      // last side seen other than On
+  long sample = -1;   // check at which the pair was last seen
+};
+
+}  // namespace
+
+struct CollisionWorld::Impl {
+  const CreasePattern* pattern = nullptr;
+  CollisionOptions options;
+  double tol = 0.0;
+  std::vector<Facet> facets;
+  std::unordered_set<std::uint64_t> hinged;
+  fcl::DynamicAABBTreeCollisionManagerd manager;
+  std::unordered_map<std::uint64_t, Memory> memory;
+  long sample = 0;
+  std::vector<std::pair<int, int>> candidates;
+  std::size_t mesh_tests = 0;
+
+  Impl(const CreasePattern& p, const CollisionOptions& o) : pattern(&p), options(o) {
+    Eigen::Vector2d lo = p.vertices().front(), hi = lo;
+    for (const auto& v : p.vertices()) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    tol = o.tolerance * (hi - lo).norm();
+    for (const auto& j : p.joints()) hinged.insert(key(std::min(j.actors[0], j.actors[1]), std::max(j.actors[0], j.actors[1])));
+    facets.reserve(p.actors().size());
+    for (std::size_t a = 0; a < p.actors().size(); ++a) facets.push_back(make_facet(static_cast<int>(a)));
+    if (o.broad_phase == BroadPhase::DynamicAabbTree) {
+      for (auto& f : facets) manager.registerObject(f.object.get());
+      manager.setup();
+    }
+  }
+
+  Facet make_facet(int actor) const {
+    Facet f;
+    std::unordered_map<int, int> local;
+    std::vector<fcl::Vector3d> points;
+    std::vector<fcl::Triangle> triangles;
+    for (const auto& t : pattern->actors()[actor].triangles) {
+      std::array<int, 3> tri{};
+      geometry::Tri2 flat;
+      for (int k = 0; k < 3; ++k) {
+        const auto [it, fresh] = local.emplace(t.v[k], static_cast<int>(f.points.size()));
+        const geometry::Vec2& v = pattern->vertices()[t.v[k]];
+        if (fresh) f.points.emplace_back(v.x(), v.y(), 0.0);
+        tri[k] = it->second;
+        flat[k] = v;
+      }
+      f.triangles.push_back(tri);
+      f.flat.push_back(flat);
+      triangles.emplace_back(tri[0], tri[1], tri[2]);
+    }
+    points.assign(f.points.begin(), f.points.end());
+    auto mesh = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+    mesh->beginModel(static_cast<int>(triangles.size()), static_cast<int>(points.size()));
+    mesh->addSubModel(points, triangles);
+    mesh->endModel();
+    mesh->computeLocalAABB();
+    f.object = std::make_unique<FacetObject>(mesh);
+    f.object->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(actor)));
+    return f;
+  }
+
+  void place(const std::vector<Eigen::Isometry3d>& poses) {
+    const Eigen::Vector3d grow = Eigen::Vector3d::Constant(options.margin + tol);
+    for (std::size_t a = 0; a < facets.size(); ++a) {
+      Facet& f = facets[a];
+      Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+      for (const auto& p : f.points) {
+        const Eigen::Vector3d w = poses[a] * p;
+        lo = lo.cwiseMin(w);
+        hi = hi.cwiseMax(w);
+      }
+      f.object->setTransform(poses[a]);
+      f.object->set_box(fcl::AABBd(lo - grow, hi + grow));
+    }
+  }
+
+  static bool gather(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data) {
+    auto* self = static_cast<Impl*>(data);
+    int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
+    int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
+    if (a > b) std::swap(a, b);
+    if (!self->hinged.count(key(a, b))) self->candidates.emplace_back(a, b);
+    return false;
+  }
+
+  void find_candidates() {
+    candidates.clear();
+    if (options.broad_phase == BroadPhase::DynamicAabbTree) {
+      manager.update();
+      manager.collide(this, &Impl::gather);
+      // The tree's traversal order depends on its balance; sorted pairs keep reports stable.
+      std::sort(candidates.begin(), candidates.end());
+      return;
+    }
+    const int n = static_cast<int>(facets.size());
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b)
+        if (!hinged.count(key(a, b))) candidates.emplace_back(a, b);
+  }
+
+  // Where b lies relative to a's plane; `rel` maps b's frame into a's.
+  Side side_of(const Facet& b, const Eigen::Isometry3d& rel) const {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& p : b.points) {
+      const double z = (rel * p).z();
+      lo = std::min(lo, z);
+      hi = std::max(hi, z);
+    }
+    if (lo >= -tol && hi <= tol) return On;
+    if (lo >= -tol) return Above;
+    if (hi <= tol) return Below;
+    return Across;
+  }
+
+  bool overlap_in_plane(const Facet& a, const Facet& b, const Eigen::Isometry3d& rel) const {
+    for (const auto& t : b.triangles) {
+      geometry::Tri2 shadow;
+      for (int k = 0; k < 3; ++k) shadow[k] = (rel * b.points[t[k]]).head<2>();
+      for (const auto& s : a.flat)
+        if (geometry::triangles_overlap(s, shadow, tol)) return true;
+    }
+    return false;
+  }
+
+  std::optional<Eigen::Vector3d> mesh_crossing(int a, int b, const std::vector<Eigen::Isometry3d>& poses) {
+    ++mesh_tests;
+    const Facet& fa = facets[a];
+    const Facet& fb = facets[b];
+    const std::size_t most = fa.triangles.size() * fb.triangles.size();
+    fcl::CollisionRequestd request(most, true);
+    fcl::CollisionResultd result;
+    fcl::collide(fa.object.get(), fb.object.get(), request, result);
+    for (std::size_t c = 0; c < result.numContacts(); ++c) {
+      const auto& contact = result.getContact(c);
+      const bool swapped = contact.o1 != fa.object->collisionGeometry().get();
+      const auto ta = static_cast<std::size_t>(swapped ? contact.b2 : contact.b1);
+      const auto tb = static_cast<std::size_t>(swapped ? contact.b1 : contact.b2);
+      detail::Tri3 x, y;
+      for (int k = 0; k < 3; ++k) {
+        x[k] = poses[a] * fa.points[fa.triangles[ta][k]];
+        y[k] = poses[b] * fb.points[fb.triangles[tb][k]];
+      }
+      if (auto point = detail::triangles_cross(x, y, tol)) return point;
+    }
+    return std::nullopt;
+  }
+
+  std::optional<Crossing> test(int a, int b, const std::vector<Eigen::Isometry3d>& poses) {
+    const Eigen::Isometry3d rel = poses[a].inverse() * poses[b];
+    const Side side = side_of(facets[b], rel);
+    Memory& m = memory[key(a, b)];
+    const bool seen_last = m.sample == sample - 1;
+    const int before = seen_last ? m.side : On;
+    m.sample = sample;
+    if (side == Across) {
+      m.side = On;
+      if (auto point = mesh_crossing(a, b, poses)) return Crossing{{a, b}, *point, CrossingKind::Mesh};
+      return std::nullopt;
+    }
+    if (side == On) {
+      m.side = before;
+      return std::nullopt;
+    }
+    m.side = side;
+    // Wholly on one side of a's plane at the last check and wholly on the other now, without
+    // passing across it in between: b went through a unless it went round a's edge.
+    if (before != On && before != side && overlap_in_plane(facets[a], facets[b], rel)) {
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (const auto& p : facets[b].points) centre += rel * p;
+      centre /= static_cast<double>(facets[b].points.size());
+      centre.z() = 0.0;
+      return Crossing{{a, b}, poses[a] * centre, CrossingKind::Stacked};
+    }
+    return std::nullopt;
+  }
+
+  std::vector<Crossing> check(const std::vector<Eigen::Isometry3d>& poses, const geometry::FoldState& state) {
+    if (poses.size() != facets.size())
+      throw std::invalid_argument("CollisionWorld::check: " + std::to_string(poses.size()) + " poses for " +
+                                  std::to_string(facets.size()) + " actors");
+    if (static_cast<std::size_t>(state.angles.size()) != pattern->joints().size())
+      throw std::invalid_argument("CollisionWorld::check: state does not hold one angle per joint");
+    mesh_tests = 0;
+    place(poses);
+    find_candidates();
+    std::vector<Crossing> found;
+    for (const auto& [a, b] : candidates)
+      if (auto c = test(a, b, poses)) found.push_back(*c);
+    for (std::size_t j = 0; j < pattern->joints().size(); ++j) {
+      // Two facets turning about their common crease meet again only beyond ±180°.
+      if (std::abs(state.angles[static_cast<Eigen::Index>(j)]) <= M_PI + 1e-12) continue;
+      const auto& joint = pattern->joints()[j];
+      const geometry::Vec2 mid = 0.5 * (pattern->vertices()[joint.v[0]] + pattern->vertices()[joint.v[1]]);
+      const int a = std::min(joint.actors[0], joint.actors[1]);
+      const int b = std::max(joint.actors[0], joint.actors[1]);
+      found.push_back({{a, b}, poses[joint.actors[0]] * Eigen::Vector3d(mid.x(), mid.y(), 0.0), CrossingKind::Crease});
+    }
+    ++sample;
+    return found;
+  }
+};
+
+CollisionWorld::CollisionWorld(const CreasePattern& pattern, const CollisionOptions& options) {
+  if (!(options.tolerance >= 0.0) || !std::isfinite(options.tolerance))
+    throw std::invalid_argument("collision tolerance must be finite and non-negative");
+  if (!(options.margin >= 0.0) || !std::isfinite(options.margin))
+    throw std::invalid_argument("collision margin must be finite and non-negative");
+  impl_ = std::make_unique<Impl>(pattern, options);
+}
+CollisionWorld::~CollisionWorld() = default;
+CollisionWorld::CollisionWorld(CollisionWorld&&) noexcept = default;
+CollisionWorld& CollisionWorld::operator=(CollisionWorld&&) noexcept = default;
+
+std::vector<Crossing> CollisionWorld::check(const std::vector<Eigen::Isometry3d>& poses, const geometry::FoldState& state) {
+  return impl_->check(poses, state);
+}
+void CollisionWorld::reset() {
+  impl_->memory.clear();
+  impl_->sample = 0;
+}
+double CollisionWorld::tolerance() const { return impl_->tol; }
+std::size_t CollisionWorld::checked_pairs() const { return impl_->candidates.size(); }
+std::size_t CollisionWorld::mesh_tests() const { return impl_->mesh_tests; }
+std::size_t CollisionWorld::skipped_pairs() const { return impl_->hinged.size(); }
+
+}  // namespace foldkit::simulation

@@ -1,0 +1,211 @@
+#include "foldkit/simulation/simulate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <tuple>
+
+#include "actuation.hpp"
+#include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/kinematics.hpp"
+
+namespace foldkit::simulation {
+
+const char* to_string(Actuation model) {
+  switch (model) {
+    case Actuation::Motor: return "motor";
+    case Actuation::Spring: return "spring";
+    case Actuation::Synchronised: return "sync";
+  }
+  return "?";
+}
+
+Actuation parse_actuation(const std::string& name) {
+  if (name == "motor") return Actuation::Motor;
+  if (name == "spring") return Actuation::Spring;
+  if (name == "sync") return Actuation::Synchronised;
+  throw std::invalid_argument("unknown actuation model '" + name + "' (motor, spring or sync)");
+}
+
+double smallest_feature(const geometry::CreasePattern& pattern) {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const auto& actor : pattern.actors())
+    for (const auto& t : actor.triangles) {
+      const geometry::Vec2& a = pattern.vertices()[t.v[0]];
+      const geometry::Vec2& b = pattern.vertices()[t.v[1]];
+      const geometry::Vec2& c = pattern.vertices()[t.v[2]];
+      const double area2 = std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+      const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+      smallest = std::min(smallest, area2 / longest);
+    }
+  return smallest;
+}
+
+namespace {
+
+void check_options(const SimulationOptions& o) {
+  auto positive = [](double v, const char* what) {
+    if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument(std::string(what) + " must be positive and finite");
+  };
+  positive(o.time_step, "time step");
+  positive(o.closure_tolerance, "closure tolerance");
+  positive(o.max_sweep, "max sweep");
+  positive(o.max_step_angle, "max step angle");
+  positive(o.settle_angle, "settle angle");
+  positive(o.settle_speed, "settle speed");
+  positive(o.max_event_time, "max event time");
+  if (o.max_steps == 0) throw std::invalid_argument("max steps must be positive");
+}
+
+std::string seconds(double t) {
+  std::ostringstream s;
+  s.precision(6);
+  s << t << " s";
+  return s.str();
+}
+
+class Replay {
+ public:
+  Replay(const geometry::CreasePattern& pattern, const SimulationOptions& options)
+      : pattern_(pattern), options_(options), tree_(geometry::make_tree(pattern)), closure_(pattern) {
+    sweep_ = options.max_sweep * smallest_feature(pattern);
+    if (options.collisions) {
+      CollisionOptions c = options.collision;
+      c.margin = sweep_;
+      world_.emplace(pattern, c);
+    }
+    for (const auto& actor : pattern.actors()) {
+      std::vector<Eigen::Vector3d> corners;
+      std::set<int> seen;
+      for (const auto& t : actor.triangles)
+        for (int v : t.v)
+          if (seen.insert(v).second) corners.emplace_back(pattern.vertices()[v].x(), pattern.vertices()[v].y(), 0.0);
+      corners_.push_back(std::move(corners));
+    }
+    report_.model = options.model;
+    report_.time_step = options.time_step;
+    report_.closure_tolerance = options.closure_tolerance;
+  }
+
+  SimulationReport run(const geometry::FoldSequence& sequence) {
+    geometry::FoldState state = geometry::FoldState::flat(pattern_);
+    poses_ = geometry::facet_poses(pattern_, tree_, state);
+    EventReport start{};
+    current_ = &start;
+    check(state, poses_, 0.0, sequence.events.empty() ? 0 : sequence.events.front().number);
+    frame(state, -1);
+    for (const auto& event : sequence.events) {
+      report_.events.push_back({event.number, time_, time_, 0.0, true});
+      current_ = &report_.events.back();
+      detail::EventMotion motion(pattern_, event, state, options_);
+      guard_length(event, motion);
+      while (!motion.done()) {
+        const geometry::FoldState before = state;
+        const double h = motion.advance(state, options_.time_step);
+        ++report_.steps;
+        sweep(before, state, time_, h, event.number);
+        time_ += h;
+        if (options_.record_frames) frame(state, event.number);
+      }
+      current_->end = time_;
+      if (!motion.reached()) {
+        current_->reached = false;
+        problem("event " + std::to_string(event.number) + ": " + motion.failure());
+      }
+      if (!options_.record_frames) frame(state, event.number);
+    }
+    report_.duration = time_;
+    report_.final_state = state;
+    report_.ok = report_.problems.empty();
+    return std::move(report_);
+  }
+
+ private:
+  void guard_length(const geometry::FoldEvent& event, const detail::EventMotion& motion) const {
+    for (const auto& fold : event.folds)
+      if (options_.model != Actuation::Spring && (!(fold.velocity > 0.0) || !std::isfinite(fold.velocity)))
+        throw SequenceError(fold.line, "joint " + std::to_string(fold.joint_id) + ": velocity must be positive and finite");
+    const double steps = motion.planned_duration() / options_.time_step;
+    if (steps > static_cast<double>(options_.max_steps)) {
+      const int line = event.folds.empty() ? 0 : event.folds.front().line;
+      throw SequenceError(line, "event " + std::to_string(event.number) + " would take " + seconds(motion.planned_duration()) +
+                                    ", more than " + std::to_string(options_.max_steps) + " steps of " +
+                                    seconds(options_.time_step) + "; raise the velocities or the time step");
+    }
+  }
+
+  // Checks the states between `before` and `after` (a step of h seconds from t), in sub-steps
+  // short enough that no facet corner moves more than the sweep bound and no joint more than
+  // max_step_angle between two checks.
+  void sweep(const geometry::FoldState& before, const geometry::FoldState& after, double t, double h, int event) {
+    std::vector<Eigen::Isometry3d> end = geometry::facet_poses(pattern_, tree_, after);
+    double moved = 0.0;
+    for (std::size_t a = 0; a < corners_.size(); ++a)
+      for (const auto& p : corners_[a]) moved = std::max(moved, (end[a] * p - poses_[a] * p).norm());
+    const double turned = (after.angles - before.angles).cwiseAbs().maxCoeff();
+    const double parts = std::max({1.0, std::ceil(moved / sweep_), std::ceil(turned / options_.max_step_angle)});
+    const int n = static_cast<int>(std::min(parts, 1e6));
+    for (int i = 1; i < n; ++i) {
+      const double f = static_cast<double>(i) / n;
+      geometry::FoldState s{before.angles + (after.angles - before.angles) * f};
+      check(s, geometry::facet_poses(pattern_, tree_, s), t + h * f, event);
+    }
+    poses_ = std::move(end);
+    check(after, poses_, t + h, event);
+  }
+
+  void check(const geometry::FoldState& state, const std::vector<Eigen::Isometry3d>& poses, double t, int event) {
+    ++report_.checks;
+    const double error = closure_.max_error(state);
+    current_->max_closure_error = std::max(current_->max_closure_error, error);
+    report_.max_closure_error = std::max(report_.max_closure_error, error);
+    if (error > options_.closure_tolerance && !closure_reported_) {
+      closure_reported_ = true;
+      std::ostringstream s;
+      s << "event " << event << ": closure error " << error << " rad at t = " << seconds(t) << " exceeds the tolerance "
+        << options_.closure_tolerance << " rad";
+      problem(s.str());
+    }
+    if (!world_) return;
+    for (const Crossing& c : world_->check(poses, state)) {
+      const std::array<int, 2> ids{pattern_.actors()[c.actors[0]].id, pattern_.actors()[c.actors[1]].id};
+      if (!crossed_.insert({event, c.actors[0], c.actors[1]}).second) continue;
+      ++report_.collision_count;
+      if (report_.collision_count == 1) {
+        std::ostringstream s;
+        s << "event " << event << ": actors " << ids[0] << " and " << ids[1] << " collide at t = " << seconds(t);
+        problem(s.str());
+      }
+      if (report_.collisions.size() < options_.max_collisions) report_.collisions.push_back({t, event, ids, c.point, c.kind});
+    }
+  }
+
+  void frame(const geometry::FoldState& state, int event) { report_.frames.push_back({time_, event, state}); }
+  void problem(std::string what) { report_.problems.push_back(std::move(what)); }
+
+  const geometry::CreasePattern& pattern_;
+  const SimulationOptions& options_;
+  geometry::KinematicTree tree_;
+  geometry::ClosureSystem closure_;
+  std::optional<CollisionWorld> world_;
+  std::vector<std::vector<Eigen::Vector3d>> corners_;
+  std::vector<Eigen::Isometry3d> poses_;
+  double sweep_ = 0.0;
+  double time_ = 0.0;
+  bool closure_reported_ = false;
+  std::set<std::tuple<int, int, int>> crossed_;
+  EventReport* current_ = nullptr;
+  SimulationReport report_;
+};
+
+}  // namespace
+
+SimulationReport simulate(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence,
+                          const SimulationOptions& options) {
+  check_options(options);
+  return Replay(pattern, options).run(sequence);
+}
+
+}  // namespace foldkit::simulation
