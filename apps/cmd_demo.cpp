@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli_common.hpp"
+#include "simulation_report.hpp"
 #include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/geometry/mobility.hpp"
@@ -11,6 +12,7 @@
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/fold_format.hpp"
 #include "foldkit/io/pmml.hpp"
+#include "foldkit/simulation/simulate.hpp"
 
 namespace foldkit::apps {
 namespace {
@@ -30,19 +32,52 @@ geometry::FoldSequence zigzag(const geometry::CreasePattern& strip, double degre
   return seq;
 }
 
-// Folds a pattern by projecting a rough start onto the closure manifold, writes the fold as CMML
-// and FOLD (frames flat → folded), and reports mobility before and after.
+// Replays a sequence (as read back from its file) and writes the trajectory (FOLD frames), the
+// report (JSON) and snapshots (SVG) beside it.
+nlohmann::json simulation_stage(const geometry::CreasePattern& pattern, const geometry::FoldSequence& seq,
+                                const std::string& base, simulation::Actuation model) {
+  simulation::SimulationOptions o;
+  o.model = model;
+  o.record_frames = true;
+  const simulation::SimulationReport report = simulation::simulate(pattern, seq, o);
+  io::write_file_atomic(base + ".fold", trajectory_fold(pattern, report, 200));
+  const nlohmann::json j = report_json(pattern, report);
+  io::write_file_atomic(base + "-simulation.json", j.dump(2) + "\n");
+  write_snapshots(pattern, report, base + "-snapshots");
+  std::cerr << "[demo] " << fs::path(base).filename().string() << ": simulated (" << simulation::to_string(model) << "), "
+            << (report.ok ? "valid" : "INVALID") << ", max closure error " << report.max_closure_error << " rad, "
+            << report.collision_count << " collisions -> " << base << "{.fold,-simulation.json,-snapshots/}\n";
+  return {{"ok", report.ok},
+          {"max_closure_error", report.max_closure_error},
+          {"collisions", report.collision_count},
+          {"duration", report.duration},
+          {"checks", report.checks}};
+}
+
+// Folds a pattern along a path of closed states (each waypoint a fraction of the rough start,
+// projected onto closure from the previous one), writes it as CMML (one event per waypoint, the
+// joints of each arriving together) and reports mobility before and after.
 nlohmann::json fold_stage(const geometry::CreasePattern& pattern, const geometry::FoldState& rough, const std::string& base) {
   const geometry::ClosureSystem system(pattern);
-  const geometry::ProjectionResult r = geometry::project(system, rough);
-  if (!r.converged) throw std::runtime_error(base + ": projection failed: " + r.message);
-  const geometry::FoldSequence seq = geometry::sequence_to(pattern, r.state, 30.0 * M_PI / 180.0, pattern.title() + " folded");
+  const int waypoints = 24;
+  std::vector<geometry::FoldState> path;
+  geometry::FoldState at = geometry::FoldState::flat(pattern);
+  geometry::ProjectionResult r;
+  for (int k = 1; k <= waypoints; ++k) {
+    // The last closed state, moved on by one step of the rough path.
+    const geometry::FoldState target{at.angles + rough.angles / waypoints};
+    r = geometry::project(system, target);
+    if (!r.converged) throw std::runtime_error(base + ": projection failed at waypoint " + std::to_string(k) + ": " + r.message);
+    at = r.state;
+    path.push_back(at);
+  }
+  const geometry::FoldSequence seq = geometry::path_sequence(pattern, path, 30.0 * M_PI / 180.0, pattern.title() + " folded");
   io::write_file_atomic(base + "-folded.cmml", io::write_cmml(seq));
-  io::write_file_atomic(base + "-folded.fold", io::write_fold(pattern, {r.state, {geometry::FoldState::flat(pattern), r.state}}));
-  return {{"dof_flat", geometry::mobility(system, geometry::FoldState::flat(pattern)).dof},
-          {"dof_folded", geometry::mobility(system, r.state).dof},
-          {"closure_error", r.error},
-          {"iterations", r.iterations}};
+  nlohmann::json out = {{"dof_flat", geometry::mobility(system, geometry::FoldState::flat(pattern)).dof},
+                        {"dof_folded", geometry::mobility(system, r.state).dof},
+                        {"closure_error", r.error},
+                        {"waypoints", waypoints}};
+  return out;
 }
 
 using RoughStart = std::function<geometry::FoldState(const geometry::CreasePattern&)>;
@@ -91,9 +126,10 @@ int run(const std::string& dir) {
       {"strip-5", gen::strip(5), {}},
   };
   nlohmann::json report = {{"output", dir},
-                           {"stages", {"generate", "validate", "convert", "kinematics"}},
+                           {"stages", {"generate", "validate", "convert", "kinematics", "simulation"}},
                            {"patterns", nlohmann::json::object()},
-                           {"kinematics", nlohmann::json::object()}};
+                           {"kinematics", nlohmann::json::object()},
+                           {"simulation", nlohmann::json::object()}};
   for (const auto& [name, spec, fold] : examples) {
     const geometry::CreasePattern pattern = geometry::build_or_throw(spec);
     const std::string base = (fs::path(dir) / name).string();
@@ -111,16 +147,16 @@ int run(const std::string& dir) {
       report["kinematics"][name] = k;
       std::cerr << "[demo] " << name << ": DOF " << k["dof_flat"] << " flat, " << k["dof_folded"]
                 << " folded (closure error " << k["closure_error"].get<double>() << " rad) -> " << base
-                << "-folded.{cmml,fold}\n";
+                << "-folded.cmml\n";
+      report["simulation"][name + "-folded"] = simulation_stage(pattern, io::read_cmml(base + "-folded.cmml"), base + "-folded",
+                                                                simulation::Actuation::Motor);
     }
     if (name == "strip-5") {
       const geometry::FoldSequence seq = zigzag(pattern, 90.0);
       io::write_file_atomic(base + "-zigzag.cmml", io::write_cmml(seq));
-      const auto states = geometry::event_states(pattern, seq);
-      io::FoldExport frames{states.back(), {states.begin() + 1, states.end()}};
-      io::write_file_atomic(base + "-zigzag.fold", io::write_fold(pattern, frames));
-      std::cerr << "[demo] " << name << ": zig-zag CMML, " << seq.events.size() << " events -> " << base
-                << "-zigzag.{cmml,fold}\n";
+      std::cerr << "[demo] " << name << ": zig-zag CMML, " << seq.events.size() << " events -> " << base << "-zigzag.cmml\n";
+      report["simulation"][name + "-zigzag"] =
+          simulation_stage(pattern, io::read_cmml(base + "-zigzag.cmml"), base + "-zigzag", simulation::Actuation::Motor);
     }
   }
   io::write_file_atomic((fs::path(dir) / "report.json").string(), report.dump(2) + "\n");

@@ -45,6 +45,15 @@ double smallest_feature(const geometry::CreasePattern& pattern) {
 
 namespace {
 
+double sheet_diagonal(const geometry::CreasePattern& pattern) {
+  geometry::Vec2 lo = pattern.vertices().front(), hi = lo;
+  for (const auto& v : pattern.vertices()) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  return (hi - lo).norm();
+}
+
 void check_options(const SimulationOptions& o) {
   auto positive = [](double v, const char* what) {
     if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument(std::string(what) + " must be positive and finite");
@@ -70,7 +79,9 @@ class Replay {
  public:
   Replay(const geometry::CreasePattern& pattern, const SimulationOptions& options)
       : pattern_(pattern), options_(options), tree_(geometry::make_tree(pattern)), closure_(pattern) {
-    sweep_ = options.max_sweep * smallest_feature(pattern);
+    // Slivers (sector angles of 1e-6 rad) would ask for millions of checks per step; below a
+    // thousandth of the sheet's size the bound stops shrinking (docs/SIMULATION.md).
+    sweep_ = options.max_sweep * std::max(smallest_feature(pattern), 1e-3 * sheet_diagonal(pattern));
     if (options.collisions) {
       CollisionOptions c = options.collision;
       c.margin = sweep_;
@@ -101,6 +112,7 @@ class Replay {
       current_ = &report_.events.back();
       detail::EventMotion motion(pattern_, event, state, options_);
       guard_length(event, motion);
+      const std::size_t steps_before = report_.steps;
       while (!motion.done()) {
         const geometry::FoldState before = state;
         const double h = motion.advance(state, options_.time_step);
@@ -114,7 +126,7 @@ class Replay {
         current_->reached = false;
         problem("event " + std::to_string(event.number) + ": " + motion.failure());
       }
-      if (!options_.record_frames) frame(state, event.number);
+      if (!options_.record_frames || report_.steps == steps_before) frame(state, event.number);
     }
     report_.duration = time_;
     report_.final_state = state;
@@ -178,7 +190,7 @@ class Replay {
         s << "event " << event << ": actors " << ids[0] << " and " << ids[1] << " collide at t = " << seconds(t);
         problem(s.str());
       }
-      if (report_.collisions.size() < options_.max_collisions) report_.collisions.push_back({t, event, ids, c.point, c.kind});
+      if (report_.collisions.size() < options_.max_collisions) report_.collisions.push_back({t, event, ids, c.point, c.kind, state});
     }
   }
 

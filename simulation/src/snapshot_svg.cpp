@@ -13,6 +13,7 @@ struct Drawn {
   std::array<Eigen::Vector2d, 3> corners;
   double depth;
   bool marked;
+  double facing = 1.0;  // |cos| of the angle between the triangle's normal and the view
 };
 
 std::string escape(const std::string& text) {
@@ -51,6 +52,7 @@ std::string snapshot_svg(const geometry::CreasePattern& pattern, const std::vect
   for (std::size_t a = 0; a < pattern.actors().size(); ++a)
     for (const auto& t : pattern.actors()[a].triangles) {
       Drawn d{{}, 0.0, marked.count(static_cast<int>(a)) > 0};
+      d.facing = std::abs((view * poses[a].linear()).col(2).z());
       for (int k = 0; k < 3; ++k) {
         const geometry::Vec2& v = pattern.vertices()[t.v[k]];
         const Eigen::Vector3d p = view * (poses[a] * Eigen::Vector3d(v.x(), v.y(), 0.0));
@@ -80,7 +82,7 @@ std::string snapshot_svg(const geometry::CreasePattern& pattern, const std::vect
       const Eigen::Vector2d p = (d.corners[k] - lo) * scale + Eigen::Vector2d(20, 20);
       svg << (k ? " " : "") << p.x() << ',' << p.y();
     }
-    svg << "\" fill=\"" << grey((d.depth - far) / span, d.marked) << "\" stroke=\"#222\" stroke-width=\"0.6\" stroke-linejoin=\"round\"/>\n";
+    svg << "\" fill=\"" << grey(0.55 * (d.depth - far) / span + 0.45 * d.facing, d.marked) << "\" stroke=\"#222\" stroke-width=\"0.6\" stroke-linejoin=\"round\"/>\n";
   }
   if (!options.caption.empty())
     svg << "<text x=\"20\" y=\"" << height - 10 << "\" font-family=\"sans-serif\" font-size=\"14\">" << escape(options.caption)

@@ -205,6 +205,30 @@ TEST(Simulate, BadOptionsAreRefused) {
   EXPECT_EQ(parse_actuation("sync"), Actuation::Synchronised);
 }
 
+// path_sequence gives each joint the speed at which all of an event's joints arrive together, so
+// the motor model replays it exactly as the synchronised one does.
+TEST(Simulate, PathSequenceArrivesTogetherUnderMotors) {
+  const CreasePattern p = build_or_throw(gen::single_vertex({1.1, 0.7, M_PI - 1.1, M_PI - 0.7}));
+  std::vector<geometry::FoldState> path;
+  for (double t : {0.3, 0.7, 1.2}) {
+    geometry::FoldState s = geometry::FoldState::flat(p);
+    const double r1 = 2 * std::atan(-std::cos(0.9) / std::cos(0.2) * std::tan(t / 2));
+    s.angles << t, r1, t, -r1;
+    path.push_back(s);
+  }
+  const FoldSequence seq = geometry::path_sequence(p, path, 0.5);
+  ASSERT_EQ(seq.events.size(), 3u);
+  SimulationOptions o;
+  o.record_frames = true;
+  const SimulationReport motor = simulate(p, seq, o);
+  o.model = Actuation::Synchronised;
+  const SimulationReport sync = simulate(p, seq, o);
+  ASSERT_EQ(motor.frames.size(), sync.frames.size());
+  for (std::size_t i = 0; i < motor.frames.size(); ++i)
+    EXPECT_LT((motor.frames[i].state.angles - sync.frames[i].state.angles).cwiseAbs().maxCoeff(), 1e-12) << i;
+  EXPECT_NEAR(motor.duration, 1.2 / 0.5, 1e-12);  // the fastest joint (ρ0 = ρ2) at 0.5 rad/s throughout
+}
+
 TEST(Simulate, SameInputSameReport) {
   const CreasePattern miura = build_or_throw(gen::miura(4, 4));
   const geometry::ClosureSystem sys(miura);

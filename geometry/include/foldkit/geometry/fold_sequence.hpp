@@ -44,4 +44,11 @@ FoldState end_state(const CreasePattern& pattern, const FoldSequence& sequence);
 FoldSequence sequence_to(const CreasePattern& pattern, const FoldState& state, double velocity,
                          std::string title = {});
 
+// One event per waypoint (flat → waypoints[0] → waypoints[1] → …), naming the joints that move.
+// Within an event the fastest joint turns at `max_velocity` and every other one at the speed
+// that makes it arrive at the same moment, so motor replay follows the straight line between
+// waypoints in angle space: close waypoints on the closure manifold then keep loops closed.
+FoldSequence path_sequence(const CreasePattern& pattern, const std::vector<FoldState>& waypoints, double max_velocity,
+                           std::string title = {});
+
 }  // namespace foldkit::geometry

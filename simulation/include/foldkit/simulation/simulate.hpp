@@ -49,6 +49,7 @@ struct CollisionEvent {
   std::array<int, 2> actors{};       // actor IDs
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   CrossingKind kind = CrossingKind::Mesh;
+  geometry::FoldState state;         // the sheet when it happened (for snapshots)
 };
 
 struct EventReport {

@@ -17,7 +17,7 @@ struct SnapshotOptions {
 };
 
 // An orthographic view of the folded sheet as SVG: triangles drawn back to front, shaded by
-// depth (nearer is lighter), facets in `marked` in red.
+// depth (nearer is lighter) and by how squarely they face the viewer, facets in `marked` in red.
 std::string snapshot_svg(const geometry::CreasePattern& pattern, const std::vector<Eigen::Isometry3d>& poses,
                          const SnapshotOptions& options = {});
 

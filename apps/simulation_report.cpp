@@ -1,0 +1,99 @@
+#include "simulation_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+#include "foldkit/geometry/kinematics.hpp"
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/fold_format.hpp"
+#include "foldkit/simulation/snapshot.hpp"
+
+namespace foldkit::apps {
+
+nlohmann::json report_json(const geometry::CreasePattern& pattern, const simulation::SimulationReport& r) {
+  nlohmann::json events = nlohmann::json::array();
+  for (const auto& e : r.events)
+    events.push_back({{"number", e.number}, {"start", e.start}, {"end", e.end}, {"max_closure_error", e.max_closure_error},
+                      {"reached", e.reached}});
+  nlohmann::json collisions = nlohmann::json::array();
+  for (const auto& c : r.collisions)
+    collisions.push_back({{"actors", c.actors},
+                          {"time", c.time},
+                          {"event", c.event},
+                          {"point", {c.point.x(), c.point.y(), c.point.z()}},
+                          {"kind", simulation::to_string(c.kind)}});
+  nlohmann::json angles = nlohmann::json::array();
+  for (std::size_t j = 0; j < pattern.joints().size(); ++j)
+    angles.push_back({{"joint", pattern.joints()[j].id},
+                      {"angle", r.final_state.angles[static_cast<Eigen::Index>(j)] * 180.0 / M_PI}});
+  return {{"ok", r.ok},
+          {"model", simulation::to_string(r.model)},
+          {"time_step", r.time_step},
+          {"duration", r.duration},
+          {"steps", r.steps},
+          {"checks", r.checks},
+          {"max_closure_error", r.max_closure_error},
+          {"closure_tolerance", r.closure_tolerance},
+          {"events", events},
+          {"collisions", collisions},
+          {"collision_count", r.collision_count},
+          {"problems", r.problems},
+          {"final_angles", angles}};
+}
+
+void print_summary(const std::string& name, const simulation::SimulationReport& r) {
+  std::cerr << name << ": " << r.events.size() << " events, " << r.duration << " s (" << r.steps << " steps, " << r.checks
+            << " checks, model " << simulation::to_string(r.model) << "), max closure error " << r.max_closure_error << " rad, "
+            << r.collision_count << " collision" << (r.collision_count == 1 ? "" : "s") << ": "
+            << (r.ok ? "valid" : "INVALID") << '\n';
+  for (const auto& p : r.problems) std::cerr << "  " << p << '\n';
+}
+
+std::string trajectory_fold(const geometry::CreasePattern& pattern, const simulation::SimulationReport& r,
+                            std::size_t max_frames) {
+  io::FoldExport out;
+  out.state = r.final_state;
+  const std::size_t n = r.frames.size();
+  const std::size_t stride = std::max<std::size_t>(1, (n + max_frames - 1) / std::max<std::size_t>(1, max_frames));
+  for (std::size_t i = 0; i < n; i += stride) out.frames.push_back(r.frames[i].state);
+  if (n > 0 && (n - 1) % stride != 0) out.frames.push_back(r.frames.back().state);
+  return io::write_fold(pattern, out);
+}
+
+std::vector<std::string> write_snapshots(const geometry::CreasePattern& pattern, const simulation::SimulationReport& r,
+                                         const std::string& dir, std::size_t max_collisions) {
+  namespace fs = std::filesystem;
+  fs::create_directories(dir);
+  const geometry::KinematicTree tree = geometry::make_tree(pattern);
+  std::vector<std::string> written;
+  auto draw = [&](const std::string& file, const geometry::FoldState& state, simulation::SnapshotOptions o) {
+    const std::string path = (fs::path(dir) / file).string();
+    io::write_file_atomic(path, simulation::snapshot_svg(pattern, geometry::facet_poses(pattern, tree, state), o));
+    written.push_back(path);
+  };
+  for (std::size_t e = 0; e < r.events.size(); ++e) {
+    const int number = r.events[e].number;
+    const auto last = std::find_if(r.frames.rbegin(), r.frames.rend(), [&](const auto& f) { return f.event == number; });
+    if (last == r.frames.rend()) continue;
+    simulation::SnapshotOptions o;
+    for (const auto& c : r.collisions)
+      if (c.event == number)
+        for (int id : c.actors) o.marked.push_back(*pattern.actor_index(id));
+    o.caption = pattern.title() + " — event " + std::to_string(number) + ", t = " + std::to_string(last->time) + " s" +
+                (o.marked.empty() ? "" : " (collisions in red)");
+    draw("event-" + std::to_string(number) + ".svg", last->state, o);
+  }
+  for (std::size_t k = 0; k < r.collisions.size() && k < max_collisions; ++k) {
+    const auto& c = r.collisions[k];
+    simulation::SnapshotOptions o;
+    for (int id : c.actors) o.marked.push_back(*pattern.actor_index(id));
+    o.caption = "collision " + std::to_string(k + 1) + ": actors " + std::to_string(c.actors[0]) + " and " +
+                std::to_string(c.actors[1]) + ", event " + std::to_string(c.event) + ", t = " + std::to_string(c.time) + " s";
+    draw("collision-" + std::to_string(k + 1) + ".svg", c.state, o);
+  }
+  return written;
+}
+
+}  // namespace foldkit::apps
