@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (ASan + UBSan) in ./build-fuzz and runs one of them.
-#   bash scripts/fuzz.sh pmml|cmml|fold [SECONDS=600] [JOBS=1]
+#   bash scripts/fuzz.sh pmml|cmml|fold|loadcase [SECONDS=600] [JOBS=1]
 # The corpus grows in ./build-fuzz/corpus-NAME, seeded from the examples, the shared fixtures
 # and the bad-input corpus; crashes are written to ./build-fuzz/crash-NAME-*.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-name=${1:?usage: fuzz.sh pmml|cmml|fold [seconds] [jobs]}
+name=${1:?usage: fuzz.sh pmml|cmml|fold|loadcase [seconds] [jobs]}
 seconds=${2:-600}
 jobs=${3:-1}
 command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ is needed (apt-get install clang)" >&2; exit 1; }
@@ -18,7 +18,7 @@ if [ ! -d "$corpus" ]; then
   mkdir -p "$corpus"
   ./build-fuzz/apps/foldkit demo -o build-fuzz/seeds >/dev/null 2>&1
   cp build-fuzz/seeds/*."$name" test/data/bad/*."$name" "$corpus"/ 2>/dev/null || true
-  cp ../shared/fixtures/fold/*."$name" "$corpus"/ 2>/dev/null || true
+  cp ../shared/fixtures/fold/*."$name" test/data/good/*."$name" "$corpus"/ 2>/dev/null || true
 fi
 parallel=()
 # With -jobs, libFuzzer forks workers that log to ./fuzz-N.log: give each target its own folder.

@@ -5,13 +5,13 @@
 
 #include <boost/graph/connected_components.hpp>
 
-#include "so3.hpp"
+#include "foldkit/geometry/so3.hpp"
 
 namespace foldkit::geometry {
 namespace {
 
-using detail::Mat3;
-using detail::V3;
+using so3::Mat3;
+using so3::V3;
 
 // A joint's motion in the world: unit axis ω and a point q on it, for the actor on `side`.
 struct Twist {
@@ -93,11 +93,11 @@ void ClosureSystem::evaluate_vertex(const VertexLoop& loop, const FoldState& sta
     const double c = std::cos(half), s = std::sin(half);
     A = A * Eigen::Quaterniond(c, s * loop.axes[k].x(), s * loop.axes[k].y(), s * loop.axes[k].z());
   }
-  const V3 phi = detail::log_quaternion(A);
+  const V3 phi = so3::log_quaternion(A);
   r.segment<3>(row) = phi;
   if (!jac) return;
   // ∂A/∂ρ_k · A⁻¹ = −[P_k d_k]×, with P_k the product before crease k (Eq. 3).
-  const Mat3 Jinv = detail::left_jacobian_inverse(phi);
+  const Mat3 Jinv = so3::left_jacobian_inverse(phi);
   for (std::size_t k = 0; k < n; ++k) {
     const V3 column = -(Jinv * current_axes[k]);
     for (int i = 0; i < 3; ++i) jac->add(row + i, loop.joints[k], column[i]);
@@ -113,11 +113,11 @@ void ClosureSystem::evaluate_cycles(const FoldState& state, Eigen::VectorXd& r, 
     // W = T_from · G · T_to⁻¹ is the identity when the two ways round agree.
     const Eigen::Isometry3d G = joint_motion(joint_axis(p, c.joint), c.side * state.angles[c.joint]);
     const Eigen::Isometry3d W = pose[c.from] * G * pose[c.to].inverse();
-    const V3 phi = detail::log_so3(W.linear());
+    const V3 phi = so3::log(W.linear());
     r.segment<3>(row) = phi;
     r.segment<3>(row + 3) = W.translation() / size_;
     if (jac) {
-      const Mat3 Jinv = detail::left_jacobian_inverse(phi);
+      const Mat3 Jinv = so3::left_jacobian_inverse(phi);
       const V3 t = W.translation();
       // dW·W⁻¹ = Σ ξ (joints above `from`, and the cycle's joint) − Σ Ad_W ξ (joints above `to`).
       auto add = [&](int joint, const Twist& xi, double sign) {

@@ -3,7 +3,7 @@
 #include <deque>
 #include <stdexcept>
 
-#include "so3.hpp"
+#include "foldkit/geometry/so3.hpp"
 
 namespace foldkit::geometry {
 namespace {
@@ -20,7 +20,7 @@ JointAxis joint_axis(const CreasePattern& pattern, int joint) {
 
 Eigen::Isometry3d joint_motion(const JointAxis& axis, double angle) {
   Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
-  m.linear() = detail::rotation(axis.direction, angle);
+  m.linear() = so3::rotation(axis.direction, angle);
   m.translation() = axis.point - m.linear() * axis.point;
   return m;
 }

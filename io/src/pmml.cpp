@@ -8,7 +8,7 @@
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/number_format.hpp"
 #include "foldkit/io/parse_error.hpp"
-#include "xml_reader.hpp"
+#include "foldkit/io/xml_reader.hpp"
 
 namespace foldkit::io {
 namespace {

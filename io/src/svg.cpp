@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "foldkit/io/number_format.hpp"
-#include "xml_reader.hpp"
+#include "foldkit/io/xml_reader.hpp"
 
 namespace foldkit::io {
 namespace {

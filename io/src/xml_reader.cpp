@@ -1,4 +1,4 @@
-#include "xml_reader.hpp"
+#include "foldkit/io/xml_reader.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -234,14 +234,19 @@ std::vector<const tinyxml2::XMLElement*> XmlInput::children(const tinyxml2::XMLE
   return out;
 }
 
-std::vector<double> XmlInput::numbers(const tinyxml2::XMLElement& e, std::size_t count) const {
+std::vector<double> XmlInput::numbers(const tinyxml2::XMLElement& e) const {
   NumberList list = parse_numbers(leaf_text(e));
-  const std::string tag = std::string("<") + e.Name() + ">";
-  if (!list.error.empty()) fail(e, tag + ": " + list.error);
-  if (list.values.size() != count)
-    fail(e, tag + (count == 1 ? " must hold one number" : " needs " + std::to_string(count) + " numbers") + ", found " +
-                std::to_string(list.values.size()));
+  if (!list.error.empty()) fail(e, std::string("<") + e.Name() + ">: " + list.error);
   return list.values;
+}
+
+std::vector<double> XmlInput::numbers(const tinyxml2::XMLElement& e, std::size_t count) const {
+  const std::vector<double> values = numbers(e);
+  const std::string tag = std::string("<") + e.Name() + ">";
+  if (values.size() != count)
+    fail(e, tag + (count == 1 ? " must hold one number" : " needs " + std::to_string(count) + " numbers") + ", found " +
+                std::to_string(values.size()));
+  return values;
 }
 
 int XmlInput::integer(const tinyxml2::XMLElement& e, const std::string& expected) const {

@@ -3,7 +3,9 @@
 
 #include <Eigen/Geometry>
 
-namespace foldkit::geometry::detail {
+// Rotation-vector calculus on SO(3), shared by the closure equations (geometry) and the spring
+// model (analysis).
+namespace foldkit::geometry::so3 {
 
 using Mat3 = Eigen::Matrix3d;
 using V3 = Eigen::Vector3d;
@@ -16,9 +18,16 @@ inline Mat3 hat(const V3& w) {
 
 inline Mat3 rotation(const V3& unit_axis, double angle) { return Eigen::AngleAxisd(angle, unit_axis).toRotationMatrix(); }
 
+// exp of a rotation vector.
+inline Mat3 exp(const V3& phi) {
+  const double angle = phi.norm();
+  if (angle < 1e-300) return Mat3::Identity();
+  return rotation(phi / angle, angle);
+}
+
 // Rotation vector of R (angle in [0, π] times axis); Eigen's quaternion route stays accurate
 // near the identity, where closure residuals live.
-inline V3 log_so3(const Mat3& R) {
+inline V3 log(const Mat3& R) {
   const Eigen::AngleAxisd aa(R);
   return aa.angle() * aa.axis();
 }
@@ -32,15 +41,19 @@ inline V3 log_quaternion(const Eigen::Quaterniond& q) {
   return (2.0 * std::atan2(s, w) / s) * v;
 }
 
-// Inverse of the left Jacobian of SO(3): d log(R) = J_l⁻¹(φ) δ for R ← exp(δ) R.
-inline Mat3 left_jacobian_inverse(const V3& phi) {
-  const double t = phi.norm();
-  const Mat3 P = hat(phi);
-  // 1/t² − (1 + cos t)/(2 t sin t), by its series below 1e-4 where the closed form cancels.
-  const double c = t < 1e-4 ? 1.0 / 12.0 + t * t / 720.0
-                   : t > M_PI - 1e-9 ? 1.0 / (t * t)
-                                     : 1.0 / (t * t) - (1.0 + std::cos(t)) / (2.0 * t * std::sin(t));
-  return Mat3::Identity() - 0.5 * P + c * P * P;
+// β(t) = 1/t² − (1 + cos t)/(2 t sin t) of the inverse left Jacobian; its series below 1e-3 rad,
+// where the closed form loses digits by cancellation (the series' error there is 3e-17).
+inline double beta(double t) {
+  if (t < 1e-3) return 1.0 / 12.0 + t * t / 720.0;
+  if (t > M_PI - 1e-9) return 1.0 / (t * t);
+  return 1.0 / (t * t) - (1.0 + std::cos(t)) / (2.0 * t * std::sin(t));
 }
 
-}  // namespace foldkit::geometry::detail
+// Inverse of the left Jacobian of SO(3): d log(R) = J_l⁻¹(φ) δ for R ← exp(δ) R;
+// J_l⁻¹ = I − ½[φ]× + β(|φ|)[φ]×².
+inline Mat3 left_jacobian_inverse(const V3& phi) {
+  const Mat3 P = hat(phi);
+  return Mat3::Identity() - 0.5 * P + beta(phi.norm()) * P * P;
+}
+
+}  // namespace foldkit::geometry::so3

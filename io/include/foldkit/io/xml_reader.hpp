@@ -5,6 +5,8 @@
 
 #include <tinyxml2.h>
 
+// Shared by foldkit's readers of XML formats in the style of PMML (PMML and CMML here, load cases
+// in foldkit::analysis), so that all of them hold the same rules; not meant as a general API.
 namespace foldkit::io::detail {
 
 // A strictly read XML file: every problem is a ParseError at the line of the offending node.
@@ -29,6 +31,8 @@ class XmlInput {
 
   // Exactly `count` finite numbers (NaN, inf, 1e999 and garbage are errors).
   std::vector<double> numbers(const tinyxml2::XMLElement& e, std::size_t count) const;
+  // As many finite numbers as the element holds.
+  std::vector<double> numbers(const tinyxml2::XMLElement& e) const;
   double number(const tinyxml2::XMLElement& e) const { return numbers(e, 1)[0]; }
 
   // A whole number in int range; `expected` completes "<Tag> must be …" in the message.

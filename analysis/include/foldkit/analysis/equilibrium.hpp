@@ -1,0 +1,81 @@
+#pragma once
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "foldkit/analysis/structure.hpp"
+
+namespace foldkit::analysis {
+
+// A dead load (fixed direction) at a point of a module, both in the folded state's frame.
+struct PointLoad {
+  int module = 0;  // index into Structure::modules
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+};
+
+struct Problem {
+  Structure structure;
+  std::array<Matrix6, 3> stiffness{default_stiffness(ConnectionKind::Hinged), default_stiffness(ConnectionKind::Face),
+                                   default_stiffness(ConnectionKind::Edge)};  // by ConnectionKind
+  std::vector<bool> fixed;  // per module; empty = none fixed
+  std::vector<PointLoad> loads;
+};
+
+// The index of a module that no chain of connections ties to a fixed module, or −1.
+int unrestrained_module(const Problem& problem);
+
+// Static equilibrium of the springs in nondimensional units: lengths in L = the tile size,
+// forces in F₀ = the largest load (1 N without loads), moments in F₀·L. Unknowns x: per free
+// module [u/L; φ], its centroid's displacement and rotation vector (pose x ↦ R(φ)(x − c) + c + u).
+// The residual is the gradient of the potential (spring energy minus the work of the loads) with
+// respect to a left perturbation (δu, δφ) of each free module: per module [force; moment about
+// its centroid]; it vanishes at equilibrium.
+class EquilibriumSystem {
+ public:
+  explicit EquilibriumSystem(const Problem& problem);
+
+  int size() const { return 6 * static_cast<int>(free_.size()); }
+  double length_unit() const { return length_; }
+  double force_unit() const { return force_; }
+  // Free modules in unknown order (module indices); −1 for fixed ones in index_of().
+  const std::vector<int>& free_modules() const { return free_; }
+  int index_of(int module) const { return index_[module]; }
+  // The largest stiffness entry in scaled units, and the longest lever from a centroid to a
+  // spring (at least 1): with the displacements they set the round-off floor of the residual.
+  double stiffness_scale() const { return stiffness_scale_; }
+  double extent() const { return extent_; }
+  double residual_floor(const Eigen::VectorXd& x) const;
+
+  Eigen::VectorXd residual(const Eigen::VectorXd& x, double load_factor = 1.0) const;
+
+  // ∂residual/∂(δu, δφ) at x. `geometric` false: the small-displacement stiffness at x = 0
+  // (Σ Dᵀ K D, no geometric or load stiffness), whatever x is.
+  Eigen::SparseMatrix<double> tangent(const Eigen::VectorXd& x, double load_factor = 1.0, bool geometric = true) const;
+
+  // x after the left perturbation dx, applied as the screw motion of the twist whose angular part
+  // is δφ and which moves the centroid at δu: u ← u + J(δφ)·δu, φ ← log(exp(δφ)·exp(φ)).
+  Eigen::VectorXd retract(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const;
+
+ private:
+  struct Spring {
+    int a, b;                  // module indices
+    Eigen::Matrix3d q;         // frame
+    Eigen::Vector3d ra, rb;    // frame origin from each centroid, scaled
+    Eigen::Vector3d ca, cb;    // centroids, scaled
+    Matrix6 k;                 // scaled stiffness
+  };
+  struct Load {
+    int module;
+    Eigen::Vector3d force, arm;  // scaled
+  };
+
+  std::vector<Spring> springs_;
+  std::vector<Load> loads_;
+  std::vector<int> free_, index_;
+  double length_ = 1.0, force_ = 1.0, stiffness_scale_ = 0.0, extent_ = 1.0;
+};
+
+}  // namespace foldkit::analysis
