@@ -7,6 +7,7 @@
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/fold_format.hpp"
+#include "foldkit/io/parse_error.hpp"
 #include "foldkit/io/pmml.hpp"
 #include "foldkit/io/svg.hpp"
 
@@ -81,6 +82,18 @@ nlohmann::json pattern_summary(const geometry::CreasePattern& p) {
           {"boundary_edges", p.boundary_edges().size()},
           {"interior_vertex_degrees", degree_json},
           {"bounds", {{box.min().x(), box.min().y()}, {box.max().x(), box.max().y()}}}};
+}
+
+geometry::FoldSequence load_sequence(const geometry::CreasePattern& pattern, const std::string& cmml) {
+  geometry::FoldSequence seq = io::read_cmml(cmml);
+  for (const auto& d : geometry::check_sequence(pattern, seq))
+    if (d.severity == geometry::Severity::Error) throw io::ParseError(cmml, d.line, d.message);
+  return seq;
+}
+
+geometry::FoldState state_from(const geometry::CreasePattern& pattern, const std::string& cmml) {
+  if (cmml.empty()) return geometry::FoldState::flat(pattern);
+  return geometry::end_state(pattern, load_sequence(pattern, cmml));
 }
 
 }  // namespace foldkit::apps

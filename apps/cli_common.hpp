@@ -50,6 +50,14 @@ LoadedPattern load_pattern(const std::string& path, const geometry::BuildOptions
 void save_pattern(const std::string& path, const geometry::CreasePattern& pattern,
                   const std::optional<geometry::FoldState>& state = std::nullopt, bool joint_ids = false);
 
+// A CMML checked against its pattern: ParseError at the CMML's line for joints the pattern lacks
+// or a joint twice in one event.
+geometry::FoldSequence load_sequence(const geometry::CreasePattern& pattern, const std::string& cmml);
+
+// The state at the end of a CMML (angles carried through from flat), or flat for an empty path;
+// ParseError at the CMML's line for joints the pattern lacks.
+geometry::FoldState state_from(const geometry::CreasePattern& pattern, const std::string& cmml);
+
 // One JSON object on stdout.
 void print_json(const nlohmann::json& j);
 

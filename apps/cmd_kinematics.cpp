@@ -10,19 +10,6 @@
 #include "foldkit/io/parse_error.hpp"
 
 namespace foldkit::apps {
-namespace {
-
-// The state at the end of a CMML (angles carried through from flat), or flat without one.
-geometry::FoldState state_from(const geometry::CreasePattern& pattern, const std::string& cmml) {
-  if (cmml.empty()) return geometry::FoldState::flat(pattern);
-  const geometry::FoldSequence seq = io::read_cmml(cmml);
-  const geometry::Diagnostics problems = geometry::check_sequence(pattern, seq);
-  for (const auto& d : problems)
-    if (d.severity == geometry::Severity::Error) throw io::ParseError(cmml, d.line, d.message);
-  return geometry::end_state(pattern, seq);
-}
-
-}  // namespace
 
 Command add_dof(CLI::App& root) {
   struct Options {

@@ -46,9 +46,7 @@ Command add_simulate(CLI::App& root) {
             if (!opt->frames.empty() && kind_of(opt->frames) != FileKind::Fold)
               throw UsageError("--frames needs a .fold file name, not '" + opt->frames + "'");
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
-            const geometry::FoldSequence seq = io::read_cmml(opt->sequence);
-            for (const auto& d : geometry::check_sequence(pattern, seq))
-              if (d.severity == geometry::Severity::Error) throw io::ParseError(opt->sequence, d.line, d.message);
+            const geometry::FoldSequence seq = load_sequence(pattern, opt->sequence);
             simulation::SimulationOptions sim = opt->sim;
             sim.model = simulation::parse_actuation(opt->model);
             sim.collisions = !opt->no_collision;

@@ -11,14 +11,6 @@
 namespace foldkit::apps {
 namespace {
 
-geometry::FoldState end_state_of(const geometry::CreasePattern& pattern, const std::string& cmml) {
-  if (cmml.empty()) return geometry::FoldState::flat(pattern);
-  const geometry::FoldSequence seq = io::read_cmml(cmml);
-  for (const auto& d : geometry::check_sequence(pattern, seq))
-    if (d.severity == geometry::Severity::Error) throw io::ParseError(cmml, d.line, d.message);
-  return geometry::end_state(pattern, seq);
-}
-
 // JSON never carries NaN or inf: a non-finite figure is written as null.
 nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 nlohmann::json vec(const Eigen::Vector3d& v) { return {number(v.x()), number(v.y()), number(v.z())}; }
@@ -47,7 +39,7 @@ Command add_stiffness(CLI::App& root) {
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
   return {app, [opt] {
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
-            const geometry::FoldState state = end_state_of(pattern, opt->state);
+            const geometry::FoldState state = state_from(pattern, opt->state);
             const analysis::LoadCase lc = analysis::read_load_case(opt->load_case);
             analysis::DetectOptions detect;
             detect.tolerance = opt->tolerance;

@@ -170,8 +170,9 @@ TEST(Cli, DemoWritesItsFolder) {
     EXPECT_TRUE(fs::exists(dir + "/" + f)) << f;
   EXPECT_EQ(foldkit({"validate", dir + "/strip-5-zigzag.cmml", "--pattern", dir + "/strip-5.pmml"}).exit, 0);
   // The simulation stage: every CMML the demo wrote replays as valid, with closure held.
-  for (const char* name : {"degree8-vertex-folded", "boat-folded", "miura-4x4-folded", "strip-5-zigzag"}) {
+  for (const char* name : {"degree8-vertex-folded", "boat-folded", "miura-4x4-folded", "strip-5-zigzag", "cube-1-folded"}) {
     const auto& sim = report["simulation"][name];
+    ASSERT_TRUE(sim.is_object()) << name;
     EXPECT_TRUE(sim["ok"].get<bool>()) << name;
     EXPECT_LT(sim["max_closure_error"].get<double>(), 1e-3) << name;
     EXPECT_EQ(sim["collisions"], 0) << name;
@@ -182,6 +183,16 @@ TEST(Cli, DemoWritesItsFolder) {
               0)
         << name;
   }
+  // The stiffness stage: a closed cube (5 hinges, 7 edges meeting) converges to a small sag, and
+  // the files it wrote give the same answer through the command line.
+  EXPECT_TRUE(report["stiffness"]["converged"].get<bool>());
+  EXPECT_EQ(report["stiffness"]["connections"]["hinged"], 5);
+  EXPECT_EQ(report["stiffness"]["connections"]["edge"], 7);
+  const CliResult s = foldkit({"stiffness", dir + "/cube-1.pmml", dir + "/cube-1-top-load.loadcase", "--state",
+                               dir + "/cube-1-folded.cmml", "--json"});
+  ASSERT_EQ(s.exit, 0) << s.err;
+  EXPECT_DOUBLE_EQ(nlohmann::json::parse(s.out)["max_displacement"].get<double>(),
+                   report["stiffness"]["max_displacement"].get<double>());
 }
 
 }  // namespace
