@@ -28,6 +28,7 @@ Command add_demo(CLI::App& root);
 Command add_dof(CLI::App& root);
 Command add_project(CLI::App& root);
 Command add_simulate(CLI::App& root);
+Command add_plan(CLI::App& root);
 Command add_stiffness(CLI::App& root);
 
 // Usage errors (bad parameters the parser could not catch) are thrown as UsageError → exit 2.

@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("foldkit 0.1.0"));
   app.require_subcommand(1);
   const std::vector<Command> commands = {add_validate(app), add_info(app), add_generate(app), add_convert(app),
-                                         add_dof(app),      add_project(app),  add_simulate(app), add_stiffness(app), add_demo(app)};
+                                         add_dof(app),      add_project(app),  add_simulate(app), add_plan(app), add_stiffness(app), add_demo(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -44,9 +44,7 @@ ClosureSystem::ClosureSystem(const CreasePattern& pattern, int root) : pattern_(
     for (double angle : star.directions) loop.axes.emplace_back(std::cos(angle), std::sin(angle), 0.0);
     loops_.push_back(std::move(loop));
   }
-  Eigen::AlignedBox2d box;
-  for (const Vec2& v : pattern.vertices()) box.extend(v);
-  size_ = std::max(box.diagonal().norm(), 1e-300);
+  size_ = std::max(pattern.diagonal(), 1e-300);
   // Around a hole no vertex loop closes the chain of facets: add every fundamental cycle.
   if (hole_count(pattern) > 0) {
     for (std::size_t j = 0; j < pattern.joints().size(); ++j) {

@@ -1,8 +1,16 @@
 #include "foldkit/geometry/crease_pattern.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 
 namespace foldkit::geometry {
+
+double CreasePattern::diagonal() const {
+  Eigen::AlignedBox2d box;
+  for (const Vec2& v : vertices_) box.extend(v);
+  return box.diagonal().norm();
+}
 
 std::size_t CreasePattern::boundary_vertex_count() const {
   return static_cast<std::size_t>(std::count(on_boundary_.begin(), on_boundary_.end(), true));

@@ -67,12 +67,7 @@ struct CollisionWorld::Impl {
   std::size_t mesh_tests = 0;
 
   Impl(const CreasePattern& p, const CollisionOptions& o) : pattern(&p), options(o) {
-    Eigen::Vector2d lo = p.vertices().front(), hi = lo;
-    for (const auto& v : p.vertices()) {
-      lo = lo.cwiseMin(v);
-      hi = hi.cwiseMax(v);
-    }
-    tol = o.tolerance * (hi - lo).norm();
+    tol = o.tolerance * p.diagonal();
     for (const auto& j : p.joints()) hinged.insert(key(std::min(j.actors[0], j.actors[1]), std::max(j.actors[0], j.actors[1])));
     facets.reserve(p.actors().size());
     for (std::size_t a = 0; a < p.actors().size(); ++a) facets.push_back(make_facet(static_cast<int>(a)));

@@ -45,15 +45,6 @@ double smallest_feature(const geometry::CreasePattern& pattern) {
 
 namespace {
 
-double sheet_diagonal(const geometry::CreasePattern& pattern) {
-  geometry::Vec2 lo = pattern.vertices().front(), hi = lo;
-  for (const auto& v : pattern.vertices()) {
-    lo = lo.cwiseMin(v);
-    hi = hi.cwiseMax(v);
-  }
-  return (hi - lo).norm();
-}
-
 void check_options(const SimulationOptions& o) {
   auto positive = [](double v, const char* what) {
     if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument(std::string(what) + " must be positive and finite");
@@ -81,7 +72,7 @@ class Replay {
       : pattern_(pattern), options_(options), tree_(geometry::make_tree(pattern)), closure_(pattern) {
     // Slivers (sector angles of 1e-6 rad) would ask for millions of checks per step; below a
     // thousandth of the sheet's size the bound stops shrinking (docs/SIMULATION.md).
-    sweep_ = options.max_sweep * std::max(smallest_feature(pattern), 1e-3 * sheet_diagonal(pattern));
+    sweep_ = options.max_sweep * std::max(smallest_feature(pattern), 1e-3 * pattern.diagonal());
     if (options.collisions) {
       CollisionOptions c = options.collision;
       c.margin = sweep_;

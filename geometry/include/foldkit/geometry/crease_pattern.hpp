@@ -80,6 +80,8 @@ class CreasePattern {
   const std::vector<std::array<int, 2>>& boundary_edges() const { return boundary_edges_; }
   bool is_boundary_vertex(int v) const { return on_boundary_[v]; }
   std::size_t boundary_vertex_count() const;
+  // Length of the diagonal of the flat sheet's bounding box: the scale relative tolerances use.
+  double diagonal() const;
   // Every vertex off the boundary, with its creases in cyclic order.
   const std::vector<VertexStar>& interior_vertices() const { return stars_; }
   const FacetGraph& facet_graph() const { return graph_; }

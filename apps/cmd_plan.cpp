@@ -1,0 +1,89 @@
+// foldkit plan: a collision-free, closed fold sequence from a start to a goal, by an OMPL planner.
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/cmml.hpp"
+#include "foldkit/io/parse_error.hpp"
+#include "foldkit/planners/plan.hpp"
+#include "foldkit/planners/planner_factory.hpp"
+
+namespace foldkit::apps {
+
+Command add_plan(CLI::App& root) {
+  struct Options {
+    std::string pattern, goal, start, space = "auto", planner = "RRTConnect", output;
+    double time = 5.0;
+    unsigned int seed = 1;
+    bool no_collision = false, free_signs = false, json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* app = root.add_subcommand("plan", "Plan a closed, collision-free fold sequence with an OMPL planner");
+  app->add_option("pattern", opt->pattern, "Crease pattern (.pmml or .fold)")->required();
+  app->add_option("--goal", opt->goal, "CMML whose end state is the goal")->required();
+  app->add_option("--start", opt->start, "CMML whose end state is the start (default: flat)");
+  app->add_option("--space", opt->space, "auto, single-vertex, projected, atlas, tangent-bundle")
+      ->check(CLI::IsMember({"auto", "single-vertex", "projected", "atlas", "tangent-bundle"}))
+      ->capture_default_str();
+  app->add_option("--planner", opt->planner, "OMPL geometric planner by name (RRTConnect, RRT*, PRM, KPIECE1, BiTRRT, …)")
+      ->capture_default_str();
+  app->add_option("--time", opt->time, "Seconds for the planner")->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_option("--seed", opt->seed, "Random seed (same seed, same plan)")->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_flag("--no-collision", opt->no_collision, "Closure only (no collision world is built)");
+  app->add_flag("--free-signs", opt->free_signs, "Ignore the pattern's mountain/valley assignment");
+  app->add_option("-o,--output", opt->output, "Output CMML")->required();
+  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  return {app, [opt] {
+            if (kind_of(opt->output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt->output + "'");
+            try {
+              opt->planner = planners::canonical_planner(opt->planner);
+            } catch (const std::invalid_argument& e) {
+              throw UsageError(e.what());
+            }
+            const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
+            auto read = [&](const std::string& file) {
+              const geometry::FoldSequence seq = io::read_cmml(file);
+              for (const auto& d : geometry::check_sequence(pattern, seq))
+                if (d.severity == geometry::Severity::Error) throw io::ParseError(file, d.line, d.message);
+              return seq;
+            };
+            planners::PlanRequest req;
+            req.pattern = &pattern;
+            const geometry::FoldSequence goal_seq = read(opt->goal);
+            req.goal = geometry::end_state(pattern, goal_seq);
+            if (!opt->start.empty()) {
+              req.start_sequence = read(opt->start);
+              req.start = geometry::end_state(pattern, req.start_sequence);
+            }
+            req.space = planners::parse_space(opt->space);
+            req.planner = opt->planner;
+            req.time = opt->time;
+            req.seed = opt->seed;
+            req.collisions = !opt->no_collision;
+            req.use_assignment = !opt->free_signs;
+            planners::PlanResult r;
+            try {
+              r = planners::plan(req);
+            } catch (const std::invalid_argument& e) {
+              throw io::ParseError(opt->goal, 0, e.what());
+            }
+            std::cerr << (r.solved ? "solved" : "no plan") << ": " << r.message << " (" << r.planner << " in " << r.space
+                      << ", " << r.time << " s, " << r.waypoints.size() << " waypoints)\n";
+            if (r.solved) {
+              io::write_file_atomic(opt->output, io::write_cmml(r.sequence));
+              std::cerr << "wrote " << opt->output << '\n';
+            }
+            if (opt->json)
+              print_json({{"solved", r.solved},
+                          {"planner", r.planner},
+                          {"space", r.space},
+                          {"time", r.time},
+                          {"path_length", r.path_length},
+                          {"max_closure_error", r.max_closure_error},
+                          {"waypoints", r.waypoints.size()},
+                          {"message", r.message}});
+            return r.solved ? kOk : kNoPlan;
+          }};
+}
+
+}  // namespace foldkit::apps

@@ -1,0 +1,77 @@
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/fold_sequence.hpp"
+#include "foldkit/simulation/simulate.hpp"
+
+namespace foldkit::planners {
+
+// Which space the planner searches (docs/PLANNING.md).
+enum class SpaceKind {
+  Auto,           // single-vertex for a pattern with one interior vertex, else projected
+  SingleVertex,   // the exact (n − 3)-dimensional space of one vertex
+  Projected,      // OMPL ProjectedStateSpace on the closure constraint (analytic Jacobian)
+  Atlas,          // OMPL AtlasStateSpace
+  TangentBundle,  // OMPL TangentBundleStateSpace
+};
+// "auto", "single-vertex", "projected", "atlas", "tangent-bundle"; std::invalid_argument otherwise.
+SpaceKind parse_space(const std::string& name);
+const char* to_string(SpaceKind kind);
+
+struct PlanRequest {
+  const geometry::CreasePattern* pattern = nullptr;
+  // Where the plan starts, and the CMML that reaches it from the flat sheet (empty: flat start).
+  std::optional<geometry::FoldState> start;
+  geometry::FoldSequence start_sequence;
+  geometry::FoldState goal;  // closed, one angle per joint
+  SpaceKind space = SpaceKind::Auto;
+  std::string planner = "RRTConnect";
+  double time = 5.0;          // seconds for the planner
+  unsigned int seed = 1;
+  bool collisions = true;
+  bool use_assignment = true;  // mountain/valley assignments of the pattern become angle bounds
+  bool numerical_jacobian = false;  // constrained spaces: OMPL's finite differences (a baseline)
+  bool simplify = true;
+  double resolution = 0.02;     // motion validator: radians per check (single-vertex); manifold step/2.5 otherwise
+  double waypoint_step = 0.02;  // largest joint change between two CMML waypoints, radians
+  double velocity = 1.0;        // fastest joint's speed in the CMML, rad/s
+  bool replay = true;           // replay the plan in the simulator before accepting it
+  bool quiet = true;            // silence OMPL's console messages
+};
+
+struct PlanResult {
+  bool solved = false;          // a valid plan, replayed by the simulator when requested
+  std::string planner, space, message;
+  double time = 0.0;            // seconds the planner ran
+  double path_length = 0.0;     // Σ Euclidean joint-angle distance between waypoints, radians
+  double max_closure_error = 0.0;  // largest loop error over the waypoints and the replay
+  std::vector<geometry::FoldState> waypoints;  // start … goal, dense
+  geometry::FoldSequence sequence;             // from the flat sheet (start_sequence first)
+  std::optional<simulation::SimulationReport> replay;
+};
+
+// The pipeline: space → planner → path → simplify → densify → CMML → simulator replay.
+// Throws std::invalid_argument for a request that cannot be planned (a start or goal that is
+// not closed, an unknown planner, a single-vertex space on a multi-vertex pattern).
+PlanResult plan(const PlanRequest& request);
+
+// Inserts closed states (straight-line points projected onto the closure manifold, signs kept)
+// until no joint changes more than `max_step` between neighbours. Returns nothing when a
+// projection fails or lands farther than `max_step` from its straight-line point (a jump).
+std::optional<std::vector<geometry::FoldState>> densify(const geometry::ClosureSystem& system,
+                                                         const std::vector<geometry::FoldState>& waypoints,
+                                                         double max_step);
+
+// A short closed path out of a singular start (e.g. the flat sheet): projections of
+// start + s·(goal − start) for growing s, signs kept, ending at a state where the closure
+// Jacobian has rank `rank`. Empty when none is found.
+std::vector<geometry::FoldState> lead_in(const geometry::ClosureSystem& system, const geometry::FoldState& start,
+                                         const geometry::FoldState& goal, Eigen::Index rank, double max_step);
+
+// Rank of the closure Jacobian at `state` (dense column-pivoted QR, threshold 1e-8).
+Eigen::Index closure_rank(const geometry::ClosureSystem& system, const geometry::FoldState& state);
+
+}  // namespace foldkit::planners

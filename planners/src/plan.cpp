@@ -1,0 +1,302 @@
+#include "foldkit/planners/plan.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include <Eigen/QR>
+#include <ompl/base/PlannerTerminationCondition.h>
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/spaces/constraint/AtlasStateSpace.h>
+#include <ompl/geometric/PathSimplifier.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include "foldkit/geometry/projection.hpp"
+#include "foldkit/planners/planner_factory.hpp"
+#include "foldkit/statespaces/closure_constraint.hpp"
+#include "foldkit/statespaces/single_vertex_space.hpp"
+#include "foldkit/statespaces/validity.hpp"
+
+namespace foldkit::planners {
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+using geometry::FoldState;
+
+SpaceKind parse_space(const std::string& name) {
+  if (name == "auto") return SpaceKind::Auto;
+  if (name == "single-vertex") return SpaceKind::SingleVertex;
+  if (name == "projected") return SpaceKind::Projected;
+  if (name == "atlas") return SpaceKind::Atlas;
+  if (name == "tangent-bundle") return SpaceKind::TangentBundle;
+  throw std::invalid_argument("unknown space '" + name + "' (auto, single-vertex, projected, atlas, tangent-bundle)");
+}
+
+const char* to_string(SpaceKind kind) {
+  switch (kind) {
+    case SpaceKind::SingleVertex: return "single-vertex";
+    case SpaceKind::Projected: return "projected";
+    case SpaceKind::Atlas: return "atlas";
+    case SpaceKind::TangentBundle: return "tangent-bundle";
+    default: return "auto";
+  }
+}
+
+Eigen::Index closure_rank(const geometry::ClosureSystem& system, const FoldState& state) {
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> j;
+  system.evaluate(state, r, j);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr{Eigen::MatrixXd(j)};
+  qr.setThreshold(1e-8);
+  return qr.rank();
+}
+
+std::optional<std::vector<FoldState>> densify(const geometry::ClosureSystem& system, const std::vector<FoldState>& waypoints,
+                                              double max_step) {
+  if (waypoints.empty()) return std::vector<FoldState>{};
+  std::vector<FoldState> out{waypoints.front()};
+  geometry::ProjectionOptions po;
+  po.tolerance = 1e-10;
+  for (std::size_t i = 1; i < waypoints.size(); ++i) {
+    const FoldState& a = waypoints[i - 1];
+    const FoldState& b = waypoints[i];
+    const double longest = (b.angles - a.angles).cwiseAbs().maxCoeff();
+    const int parts = std::max(1, static_cast<int>(std::ceil(longest / max_step - 1e-9)));
+    for (int k = 1; k < parts; ++k) {
+      const FoldState line{a.angles + (static_cast<double>(k) / parts) * (b.angles - a.angles)};
+      const geometry::ProjectionResult p = geometry::project(system, line, po);
+      if (!p.converged || (p.state.angles - line.angles).cwiseAbs().maxCoeff() > 0.5 * max_step) return std::nullopt;
+      out.push_back(p.state);
+    }
+    out.push_back(b);
+  }
+  // A projected point may still sit a little farther from its neighbours than max_step.
+  for (std::size_t i = 1; i < out.size(); ++i)
+    if ((out[i].angles - out[i - 1].angles).cwiseAbs().maxCoeff() > 2.0 * max_step) return std::nullopt;
+  return out;
+}
+
+std::vector<FoldState> lead_in(const geometry::ClosureSystem& system, const FoldState& start, const FoldState& goal,
+                               Eigen::Index rank, double max_step) {
+  Eigen::VectorXd dir = goal.angles - start.angles;
+  const double norm = dir.cwiseAbs().maxCoeff();
+  if (!(norm > 0.0)) return {};
+  dir /= norm;
+  geometry::ProjectionOptions po;
+  po.tolerance = 1e-12;
+  for (double scale : {0.02, 0.05, 0.1, 0.2, 0.4}) {
+    const int parts = std::max(2, static_cast<int>(std::ceil(scale / max_step)));
+    std::vector<FoldState> pts{start};
+    bool ok = true;
+    for (int k = 1; k <= parts && ok; ++k) {
+      const geometry::ProjectionResult p =
+          geometry::project(system, FoldState{start.angles + (scale * k / parts) * dir}, po);
+      ok = p.converged;
+      pts.push_back(p.state);
+    }
+    if (!ok || closure_rank(system, pts.back()) < rank) continue;
+    if (auto dense = densify(system, pts, max_step)) return *dense;
+  }
+  return {};
+}
+
+namespace {
+
+double elapsed(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+PlanResult plan(const PlanRequest& req) {
+  if (!req.pattern) throw std::invalid_argument("plan: no pattern");
+  const geometry::CreasePattern& pattern = *req.pattern;
+  const auto n = static_cast<Eigen::Index>(pattern.joints().size());
+  if (req.goal.angles.size() != n) throw std::invalid_argument("plan: the goal does not hold one angle per joint");
+  const FoldState start = req.start ? *req.start : FoldState::flat(pattern);
+  if (start.angles.size() != n) throw std::invalid_argument("plan: the start does not hold one angle per joint");
+  if (!(req.time > 0.0) || !std::isfinite(req.time)) throw std::invalid_argument("plan: the time limit must be positive");
+  if (!(req.resolution > 0.0) || !(req.waypoint_step > 0.0) || !(req.velocity > 0.0))
+    throw std::invalid_argument("plan: resolution, waypoint step and velocity must be positive");
+
+  if (req.quiet) ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  ompl::RNG::setSeed(std::max(1u, req.seed));
+
+  PlanResult result;
+  result.planner = req.planner;
+  SpaceKind kind = req.space;
+  if (kind == SpaceKind::Auto)
+    kind = pattern.interior_vertices().size() == 1 && geometry::hole_count(pattern) == 0 ? SpaceKind::SingleVertex
+                                                                                       : SpaceKind::Projected;
+  result.space = to_string(kind);
+
+  const geometry::ClosureSystem system(pattern);
+  if (system.rows() == 0) throw std::invalid_argument("plan: the pattern has no closed loop (every state is closed)");
+  const double start_error = system.max_error(start), goal_error = system.max_error(req.goal);
+  if (start_error > 1e-6) throw std::invalid_argument("plan: the start is not closed (error " + std::to_string(start_error) + " rad)");
+  if (goal_error > 1e-6) throw std::invalid_argument("plan: the goal is not closed (error " + std::to_string(goal_error) + " rad)");
+  const statespaces::AngleBounds bounds = statespaces::AngleBounds::of(pattern, req.use_assignment);
+  if (!bounds.contains(start, 1e-9)) throw std::invalid_argument("plan: the start breaks the mountain/valley assignment");
+  if (!bounds.contains(req.goal, 1e-9)) throw std::invalid_argument("plan: the goal breaks the mountain/valley assignment");
+  auto validity = std::make_shared<statespaces::FoldValidity>(pattern, bounds, req.collisions);
+  if (!validity->valid(start)) throw std::invalid_argument("plan: the start state is not valid (facets cross)");
+  if (!validity->valid(req.goal)) throw std::invalid_argument("plan: the goal state is not valid (facets cross)");
+
+  ob::SpaceInformationPtr si;
+  ob::StateSpacePtr space;
+  statespaces::StateReader reader;
+  std::shared_ptr<statespaces::SingleVertexStateSpace> sv;
+  statespaces::ConstrainedSetup cs;
+  std::vector<FoldState> prefix{start};
+
+  if (kind == SpaceKind::SingleVertex) {
+    auto chain = std::make_shared<statespaces::SingleVertexChain>(pattern);
+    sv = std::make_shared<statespaces::SingleVertexStateSpace>(chain, bounds);
+    space = sv;
+    si = std::make_shared<ob::SpaceInformation>(space);
+    reader = statespaces::single_vertex_reader(sv);
+    si->setMotionValidator(
+        std::make_shared<statespaces::FoldMotionValidator>(si, validity, reader, req.resolution, 2.5 * req.resolution));
+    ob::ScopedState<> probe_state(space);
+    if (!sv->from_fold_state(start, probe_state.get())) {
+      // The start is singular for the closed form (e.g. a flat vertex whose passive axes line up):
+      // leave it along a short closed segment first.
+      prefix = lead_in(system, start, req.goal, 3, req.waypoint_step);
+      if (prefix.empty() || !sv->from_fold_state(prefix.back(), probe_state.get()))
+        throw std::invalid_argument("plan: no closed way out of the singular start state");
+    }
+  } else {
+    const auto ck = kind == SpaceKind::Atlas           ? statespaces::ConstrainedKind::Atlas
+                    : kind == SpaceKind::TangentBundle ? statespaces::ConstrainedKind::TangentBundle
+                                                       : statespaces::ConstrainedKind::Projected;
+    cs = statespaces::make_constrained(pattern, req.goal, ck, bounds, req.numerical_jacobian, 2.5 * req.resolution);
+    space = cs.space;
+    si = cs.si;
+    reader = statespaces::constrained_reader();
+    const auto rank = static_cast<Eigen::Index>(cs.constraint->getCoDimension());
+    if (closure_rank(system, start) < rank) {
+      // Flat (or another singular state): the Jacobian loses rank, charts cannot be anchored
+      // and projections may flip branches; plan from a nearby regular state instead.
+      prefix = lead_in(system, start, req.goal, rank, req.waypoint_step);
+      if (prefix.empty()) throw std::invalid_argument("plan: no closed way out of the singular start state");
+    }
+  }
+  si->setStateValidityChecker(std::make_shared<statespaces::FoldValidityChecker>(si, validity, reader));
+  for (std::size_t i = 1; i < prefix.size(); ++i)
+    if (!validity->valid(prefix[i])) {
+      result.message = "the way out of the start state collides";
+      return result;
+    }
+
+  og::SimpleSetup ss(si);
+  ss.setPlanner(make_planner(req.planner, si));
+  ob::ScopedState<> s(space), g(space);
+  if (sv) {
+    sv->from_fold_state(prefix.back(), s.get());
+    if (!sv->from_fold_state(req.goal, g.get()))
+      throw std::invalid_argument("plan: the goal is a singular state of the single-vertex space (try --space projected)");
+  } else {
+    s->as<ob::ConstrainedStateSpace::StateType>()->copy(prefix.back().angles);
+    g->as<ob::ConstrainedStateSpace::StateType>()->copy(req.goal.angles);
+  }
+  ss.setStartAndGoalStates(s, g, 1e-9);
+  if (kind == SpaceKind::Atlas || kind == SpaceKind::TangentBundle) {
+    auto atlas = std::static_pointer_cast<ob::AtlasStateSpace>(cs.space);
+    atlas->anchorChart(s.get());
+    atlas->anchorChart(g.get());
+  }
+  ss.setup();
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const ob::PlannerStatus status =
+      ss.solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(req.time),
+                                                 ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition())));
+  result.time = elapsed(t0);
+  if (status != ob::PlannerStatus::EXACT_SOLUTION) {
+    result.message = "no plan found within " + std::to_string(req.time) + " s";
+    return result;
+  }
+  og::PathGeometric path = ss.getSolutionPath();
+  if (req.simplify) {
+    og::PathSimplifier simplifier(si);
+    simplifier.reduceVertices(path);
+    simplifier.shortcutPath(path);
+  }
+
+  // The path's states, densified along the space's own interpolation: single-vertex segments
+  // are linear in the active angles; constrained ones follow the manifold (OMPL's geodesic).
+  std::vector<FoldState> states;
+  if (sv) {
+    ob::State* tmp = si->allocState();
+    for (unsigned int i = 0; i < static_cast<unsigned int>(path.getStateCount()); ++i) {
+      FoldState f;
+      if (i > 0) {
+        const FoldState a = sv->to_fold_state(path.getState(i - 1)), b = sv->to_fold_state(path.getState(i));
+        const int parts = std::max(1, static_cast<int>(std::ceil((b.angles - a.angles).cwiseAbs().maxCoeff() / req.waypoint_step)));
+        for (int k = 1; k < parts; ++k) {
+          sv->interpolate(path.getState(i - 1), path.getState(i), static_cast<double>(k) / parts, tmp);
+          if (!reader(tmp, f)) break;
+          states.push_back(f);
+        }
+      }
+      if (reader(path.getState(i), f)) states.push_back(f);
+    }
+    si->freeState(tmp);
+  } else {
+    path.interpolate();
+    for (unsigned int i = 0; i < static_cast<unsigned int>(path.getStateCount()); ++i) {
+      FoldState f;
+      reader(path.getState(i), f);
+      states.push_back(f);
+    }
+  }
+  std::vector<FoldState> full = prefix;
+  full.insert(full.end(), states.begin() + (states.empty() ? 0 : 1), states.end());
+  if (full.size() < 2 || (full.back().angles - req.goal.angles).cwiseAbs().maxCoeff() > 1e-6) full.push_back(req.goal);
+  const auto dense = densify(system, full, req.waypoint_step);
+  if (!dense) {
+    result.message = "the planned path jumps (interpolation left the manifold)";
+    return result;
+  }
+  // Every path is checked: closed everywhere, no jumps, from the start to the goal.
+  result.waypoints = *dense;
+  for (std::size_t i = 0; i < result.waypoints.size(); ++i) {
+    result.max_closure_error = std::max(result.max_closure_error, system.max_error(result.waypoints[i]));
+    if (i > 0) result.path_length += (result.waypoints[i].angles - result.waypoints[i - 1].angles).norm();
+  }
+  if (result.max_closure_error > 1e-6) {
+    result.message = "the planned path is not closed (error " + std::to_string(result.max_closure_error) + " rad)";
+    return result;
+  }
+
+  geometry::FoldSequence seq = geometry::path_sequence(pattern, result.waypoints, req.velocity, pattern.title());
+  if (!req.start_sequence.events.empty()) {
+    // path_sequence starts from the flat sheet: its first event (flat → start) is replaced by
+    // the start's own sequence.
+    geometry::FoldSequence joined = req.start_sequence;
+    const bool start_flat = start.angles.cwiseAbs().maxCoeff() == 0.0;
+    for (std::size_t e = start_flat ? 0 : 1; e < seq.events.size(); ++e) joined.events.push_back(seq.events[e]);
+    for (std::size_t e = 0; e < joined.events.size(); ++e) joined.events[e].number = static_cast<int>(e) + 1;
+    joined.title = seq.title;
+    seq = std::move(joined);
+  }
+  result.sequence = seq;
+  if (req.replay) {
+    simulation::SimulationOptions so;
+    so.collisions = req.collisions;
+    result.replay = simulation::simulate(pattern, seq, so);
+    result.max_closure_error = std::max(result.max_closure_error, result.replay->max_closure_error);
+    if (!result.replay->ok) {
+      result.message = "the simulator rejects the plan: " +
+                       (result.replay->problems.empty() ? std::string("invalid") : result.replay->problems.front());
+      return result;
+    }
+  }
+  result.solved = true;
+  result.message = "solved";
+  return result;
+}
+
+}  // namespace foldkit::planners

@@ -1,0 +1,122 @@
+#include "foldkit/statespaces/closure_constraint.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <Eigen/QR>
+#include <ompl/base/ConstrainedSpaceInformation.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/constraint/AtlasStateSpace.h>
+#include <ompl/base/spaces/constraint/ProjectedStateSpace.h>
+#include <ompl/base/spaces/constraint/TangentBundleStateSpace.h>
+
+namespace foldkit::statespaces {
+
+namespace ob = ompl::base;
+
+unsigned int ClosureConstraint::rank_at(const geometry::ClosureSystem& system, const geometry::FoldState& reference,
+                                        std::vector<Eigen::Index>* rows) {
+  if (system.rows() == 0) throw std::invalid_argument("constrained space: the pattern has no closed loop");
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> j;
+  system.evaluate(reference, r, j);
+  const Eigen::MatrixXd jt = Eigen::MatrixXd(j).transpose();
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(jt);
+  qr.setThreshold(1e-8);
+  const auto rank = qr.rank();
+  if (rank <= 0 || rank >= system.cols())
+    throw std::invalid_argument("constrained space: the closure Jacobian has rank " + std::to_string(rank) + " for " +
+                                std::to_string(system.cols()) + " creases at the reference state (no motion)");
+  rows->clear();
+  for (Eigen::Index i = 0; i < rank; ++i) rows->push_back(qr.colsPermutation().indices()[i]);
+  std::sort(rows->begin(), rows->end());
+  return static_cast<unsigned int>(rank);
+}
+
+ClosureConstraint::ClosureConstraint(const geometry::CreasePattern& pattern, const geometry::FoldState& reference,
+                                     bool numerical_jacobian, double tolerance)
+    : ob::Constraint(static_cast<unsigned int>(pattern.joints().size()),
+                     [&] {
+                       geometry::ClosureSystem s(pattern);
+                       std::vector<Eigen::Index> r;
+                       return rank_at(s, reference, &r);
+                     }(),
+                     tolerance),
+      system_(pattern),
+      numerical_(numerical_jacobian) {
+  rank_at(system_, reference, &rows_);
+  setManifoldDimension(static_cast<unsigned int>(system_.cols()) - static_cast<unsigned int>(rows_.size()));
+  setMaxIterations(100);
+}
+
+void ClosureConstraint::function(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> out) const {
+  const Eigen::VectorXd r = system_.residual(geometry::FoldState{x});
+  for (std::size_t i = 0; i < rows_.size(); ++i) out[static_cast<Eigen::Index>(i)] = r[rows_[i]];
+}
+
+void ClosureConstraint::jacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::MatrixXd> out) const {
+  if (numerical_) return ob::Constraint::jacobian(x, out);
+  thread_local Eigen::VectorXd r;
+  thread_local Eigen::SparseMatrix<double> j;
+  system_.evaluate(geometry::FoldState{x}, r, j);
+  out.setZero();
+  std::vector<Eigen::Index> where(static_cast<std::size_t>(system_.rows()), -1);
+  for (std::size_t i = 0; i < rows_.size(); ++i) where[static_cast<std::size_t>(rows_[i])] = static_cast<Eigen::Index>(i);
+  for (int k = 0; k < j.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(j, k); it; ++it) {
+      const Eigen::Index row = where[static_cast<std::size_t>(it.row())];
+      if (row >= 0) out(row, it.col()) = it.value();
+    }
+}
+
+ConstrainedKind parse_constrained_kind(const std::string& name) {
+  if (name == "projected") return ConstrainedKind::Projected;
+  if (name == "atlas") return ConstrainedKind::Atlas;
+  if (name == "tangent-bundle" || name == "tb") return ConstrainedKind::TangentBundle;
+  throw std::invalid_argument("unknown constrained space '" + name + "' (projected, atlas, tangent-bundle)");
+}
+
+const char* to_string(ConstrainedKind kind) {
+  switch (kind) {
+    case ConstrainedKind::Atlas: return "atlas";
+    case ConstrainedKind::TangentBundle: return "tangent-bundle";
+    default: return "projected";
+  }
+}
+
+ConstrainedSetup make_constrained(const geometry::CreasePattern& pattern, const geometry::FoldState& reference,
+                                  ConstrainedKind kind, const AngleBounds& bounds, bool numerical_jacobian, double delta) {
+  ConstrainedSetup out;
+  out.kind = kind;
+  out.constraint = std::make_shared<ClosureConstraint>(pattern, reference, numerical_jacobian);
+  const auto n = static_cast<unsigned int>(pattern.joints().size());
+  auto ambient = std::make_shared<ob::RealVectorStateSpace>(n);
+  ob::RealVectorBounds rb(n);
+  for (unsigned int j = 0; j < n; ++j) {
+    rb.setLow(j, bounds.lower[j]);
+    rb.setHigh(j, bounds.upper[j]);
+  }
+  ambient->setBounds(rb);
+  switch (kind) {
+    case ConstrainedKind::Projected:
+      out.space = std::make_shared<ob::ProjectedStateSpace>(ambient, out.constraint);
+      out.si = std::make_shared<ob::ConstrainedSpaceInformation>(out.space);
+      break;
+    case ConstrainedKind::Atlas:
+      out.space = std::make_shared<ob::AtlasStateSpace>(ambient, out.constraint);
+      out.si = std::make_shared<ob::ConstrainedSpaceInformation>(out.space);
+      break;
+    case ConstrainedKind::TangentBundle:
+      out.space = std::make_shared<ob::TangentBundleStateSpace>(ambient, out.constraint);
+      out.si = std::make_shared<ob::TangentBundleSpaceInformation>(out.space);
+      break;
+  }
+  out.space->setDelta(delta);
+  return out;
+}
+
+geometry::FoldState to_fold_state(const ob::ConstrainedStateSpace::StateType* state) {
+  return geometry::FoldState{Eigen::VectorXd(*state)};
+}
+
+}  // namespace foldkit::statespaces

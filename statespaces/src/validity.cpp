@@ -1,0 +1,131 @@
+#include "foldkit/statespaces/validity.hpp"
+
+#include <cmath>
+
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/spaces/constraint/ConstrainedStateSpace.h>
+
+namespace foldkit::statespaces {
+
+namespace ob = ompl::base;
+
+StateReader single_vertex_reader(std::shared_ptr<const SingleVertexStateSpace> space) {
+  return [space](const ob::State* state, geometry::FoldState& out) {
+    const auto* s = state->as<SingleVertexStateSpace::StateType>();
+    if (!s->closed) return false;
+    out.angles = Eigen::Map<const Eigen::VectorXd>(s->angles, static_cast<Eigen::Index>(space->joints()));
+    return true;
+  };
+}
+
+StateReader constrained_reader() {
+  return [](const ob::State* state, geometry::FoldState& out) {
+    out.angles = *state->as<ob::ConstrainedStateSpace::StateType>();
+    return true;
+  };
+}
+
+FoldValidity::FoldValidity(const geometry::CreasePattern& p, AngleBounds b, bool check_collisions,
+                           double tolerance, const simulation::CollisionOptions& collision)
+    : pattern(&p),
+      bounds(std::move(b)),
+      closure_tolerance(tolerance),
+      system_(std::make_shared<geometry::ClosureSystem>(p)),
+      tree_(geometry::make_tree(p)) {
+  if (check_collisions) collisions = std::make_shared<simulation::CollisionWorld>(p, collision);
+}
+
+bool FoldValidity::valid(const geometry::FoldState& state) const {
+  if (collisions) collisions->reset();
+  return valid_next(state);
+}
+
+bool FoldValidity::valid_next(const geometry::FoldState& state) const {
+  if (!state.angles.allFinite() || !bounds.contains(state, 1e-9)) return false;
+  if (system_->max_error(state) > closure_tolerance) return false;
+  if (!collisions) return true;
+  return collisions->check(geometry::facet_poses(*pattern, tree_, state), state).empty();
+}
+
+FoldValidityChecker::FoldValidityChecker(const ob::SpaceInformationPtr& si, std::shared_ptr<const FoldValidity> validity,
+                                         StateReader reader)
+    : ob::StateValidityChecker(si), validity_(std::move(validity)), reader_(std::move(reader)) {}
+
+bool FoldValidityChecker::isValid(const ob::State* state) const {
+  thread_local geometry::FoldState f;
+  return reader_(state, f) && validity_->valid(f);
+}
+
+FoldMotionValidator::FoldMotionValidator(const ob::SpaceInformationPtr& si, std::shared_ptr<const FoldValidity> validity,
+                                         StateReader reader, double resolution, double max_jump)
+    : ob::MotionValidator(si),
+      validity_(std::move(validity)),
+      reader_(std::move(reader)),
+      resolution_(resolution),
+      max_jump_(max_jump) {}
+
+bool FoldMotionValidator::checkMotion(const ob::State* s1, const ob::State* s2) const { return check(s1, s2, nullptr); }
+
+bool FoldMotionValidator::checkMotion(const ob::State* s1, const ob::State* s2,
+                                      std::pair<ob::State*, double>& lastValid) const {
+  return check(s1, s2, &lastValid);
+}
+
+bool FoldMotionValidator::check(const ob::State* s1, const ob::State* s2, std::pair<ob::State*, double>* lastValid) const {
+  const ob::StateSpace& space = *si_->getStateSpace();
+  geometry::FoldState f1, f2;
+  double last_t = 0.0;
+  auto fail = [&] {
+    if (lastValid) {
+      if (lastValid->first) space.interpolate(s1, s2, last_t, lastValid->first);
+      lastValid->second = last_t;
+    }
+    ++invalid_;
+    return false;
+  };
+  if (!reader_(s1, f1) || !validity_->valid(f1)) return fail();
+  if (!reader_(s2, f2)) return fail();
+  ob::State* tmp = space.allocState();
+  struct Guard {
+    const ob::StateSpace& space;
+    ob::State* s;
+    ~Guard() { space.freeState(s); }
+  } guard{space, tmp};
+
+  // Walks from (ta, fa), already checked, to tb with state fb; bisects changes above max_jump.
+  std::function<bool(double, const geometry::FoldState&, double, const geometry::FoldState&, int)> advance =
+      [&](double ta, const geometry::FoldState& fa, double tb, const geometry::FoldState& fb, int depth) -> bool {
+    if ((fb.angles - fa.angles).cwiseAbs().maxCoeff() <= max_jump_) {
+      if (!validity_->valid_next(fb)) return false;
+      last_t = tb;
+      return true;
+    }
+    if (depth == 0) return false;
+    const double tm = 0.5 * (ta + tb);
+    space.interpolate(s1, s2, tm, tmp);
+    geometry::FoldState fm;
+    if (!reader_(tmp, fm)) return false;
+    return advance(ta, fa, tm, fm, depth - 1) && advance(tm, fm, tb, fb, depth - 1);
+  };
+
+  const double longest = (f2.angles - f1.angles).cwiseAbs().maxCoeff();
+  const int steps = std::max(1, static_cast<int>(std::ceil(longest / resolution_)));
+  geometry::FoldState prev = f1, next;
+  double prev_t = 0.0;
+  for (int i = 1; i <= steps; ++i) {
+    const double t = static_cast<double>(i) / steps;
+    if (i == steps) {
+      next = f2;
+    } else {
+      space.interpolate(s1, s2, t, tmp);
+      if (!reader_(tmp, next)) return fail();
+    }
+    if (!advance(prev_t, prev, t, next, 12)) return fail();
+    prev = next;
+    prev_t = t;
+  }
+  ++valid_;
+  return true;
+}
+
+}  // namespace foldkit::statespaces

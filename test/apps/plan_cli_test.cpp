@@ -1,0 +1,84 @@
+// foldkit plan: exit codes, JSON keys, byte-identical output for one seed, and the simulator's
+// verdict on the written CMML (oracle: `foldkit simulate`, a separate verb).
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+#include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/generators.hpp"
+#include "foldkit/geometry/projection.hpp"
+#include "foldkit/io/cmml.hpp"
+#include "foldkit/io/pmml.hpp"
+
+namespace {
+
+using foldkit::test::foldkit;
+using foldkit::test::slurp;
+using foldkit::test::temp_dir;
+namespace geo = foldkit::geometry;
+
+struct Case {
+  std::string dir, pattern, goal, bad_goal;
+};
+
+Case make_case() {
+  Case c{temp_dir() + "/plan-cli", "", "", ""};
+  std::filesystem::create_directories(c.dir);
+  const double pi = 3.14159265358979323846;
+  const geo::CreasePattern p = geo::build_or_throw(geo::generators::single_vertex({pi / 2, pi / 3, pi / 2, pi / 3, pi / 3}));
+  c.pattern = c.dir + "/vertex.pmml";
+  std::ofstream(c.pattern) << foldkit::io::write_pmml(p.to_spec());
+  // A mildly folded closed goal: a guess projected onto the closure manifold, signs kept.
+  Eigen::VectorXd guess(5);
+  guess << 0.5, -0.4, 0.5, 0.3, -0.3;
+  geo::ProjectionOptions po;
+  po.tolerance = 1e-12;
+  const auto r = geo::project(geo::ClosureSystem(p), geo::FoldState{guess}, po);
+  EXPECT_TRUE(r.converged);
+  c.goal = c.dir + "/goal.cmml";
+  std::ofstream(c.goal) << foldkit::io::write_cmml(geo::sequence_to(p, r.state, 0.5));
+  c.bad_goal = c.dir + "/open.cmml";
+  std::ofstream(c.bad_goal) << foldkit::io::write_cmml(geo::sequence_to(p, geo::FoldState{guess}, 0.5));
+  return c;
+}
+
+TEST(PlanCli, PlansFromFlatAndTheSimulatorAcceptsThePlan) {
+  const Case c = make_case();
+  const std::string out = c.dir + "/plan.cmml";
+  const auto r = foldkit({"plan", c.pattern, "--goal", c.goal, "--planner", "RRTConnect", "--time", "2", "--seed", "4",
+                          "-o", out, "--json"});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"solved", "planner", "time", "path_length", "max_closure_error", "waypoints"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_TRUE(j["solved"].get<bool>());
+  EXPECT_LT(j["max_closure_error"].get<double>(), 1e-3);
+  const auto sim = foldkit({"simulate", c.pattern, out, "--json"});
+  EXPECT_EQ(sim.exit, 0) << sim.err;
+}
+
+TEST(PlanCli, SameSeedGivesTheSameFile) {
+  const Case c = make_case();
+  const std::string a = c.dir + "/a.cmml", b = c.dir + "/b.cmml";
+  for (const auto& out : {a, b})
+    ASSERT_EQ(foldkit({"plan", c.pattern, "--goal", c.goal, "--planner", "RRTConnect", "--time", "2", "--seed", "9",
+                       "--no-collision", "-o", out})
+                  .exit,
+              0);
+  EXPECT_EQ(slurp(a), slurp(b));
+}
+
+TEST(PlanCli, BadInputAndUsage) {
+  const Case c = make_case();
+  const std::string out = c.dir + "/never.cmml";
+  EXPECT_EQ(foldkit({"plan", c.pattern, "--goal", c.goal, "--planner", "NoSuchPlanner", "-o", out}).exit, 2);
+  EXPECT_EQ(foldkit({"plan", c.pattern, "--goal", c.goal, "--space", "nonsense", "-o", out}).exit, 2);
+  EXPECT_EQ(foldkit({"plan", c.pattern, "--goal", c.bad_goal, "--time", "1", "-o", out}).exit, 1);
+  EXPECT_EQ(foldkit({"plan", c.pattern, "--goal", c.dir + "/missing.cmml", "-o", out}).exit, 1);
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace

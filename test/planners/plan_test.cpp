@@ -1,0 +1,145 @@
+// Plans end to end: every accepted plan is replayed by the simulator (the oracle), and its
+// waypoints are closed by geometry::ClosureSystem.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+#include <ompl/base/ScopedState.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/generators.hpp"
+#include "foldkit/geometry/kinematics.hpp"
+#include "foldkit/geometry/projection.hpp"
+#include "foldkit/planners/plan.hpp"
+#include "foldkit/planners/planner_factory.hpp"
+#include "foldkit/simulation/collision_world.hpp"
+#include "foldkit/statespaces/single_vertex_space.hpp"
+#include "foldkit/statespaces/validity.hpp"
+#include "spec_helpers.hpp"
+
+namespace {
+
+namespace ob = ompl::base;
+namespace gen = foldkit::geometry::generators;
+using foldkit::geometry::build_or_throw;
+using foldkit::geometry::ClosureSystem;
+using foldkit::geometry::CreasePattern;
+using foldkit::geometry::FoldState;
+using foldkit::planners::plan;
+using foldkit::planners::PlanRequest;
+using foldkit::planners::PlanResult;
+using foldkit::planners::SpaceKind;
+
+// A random closed folded goal (active angles within `max_angle` of flat) that is reachable: the
+// straight way from flat in the active angles is closed and, when asked, collision-free.
+FoldState random_goal(const CreasePattern& p, unsigned seed, bool collision_free, double max_angle = 2.0) {
+  using namespace foldkit::statespaces;
+  ompl::RNG::setSeed(seed);
+  auto space = std::make_shared<SingleVertexStateSpace>(std::make_shared<SingleVertexChain>(p), AngleBounds::of(p, false));
+  auto sampler = space->allocDefaultStateSampler();
+  auto si = std::make_shared<ob::SpaceInformation>(space);
+  auto validity = std::make_shared<FoldValidity>(p, AngleBounds::of(p, false), collision_free);
+  si->setStateValidityChecker(std::make_shared<FoldValidityChecker>(si, validity, single_vertex_reader(space)));
+  FoldMotionValidator motion(si, validity, single_vertex_reader(space));
+  ob::ScopedState<> s(space), flat(space);
+  space->from_fold_state(FoldState::flat(p), flat.get());
+  foldkit::simulation::CollisionWorld world(p);
+  const auto tree = foldkit::geometry::make_tree(p);
+  for (int k = 0; k < 10000; ++k) {
+    sampler->sampleUniformNear(s.get(), flat.get(), max_angle);
+    if (!s->as<SingleVertexStateSpace::StateType>()->closed) continue;
+    const FoldState f = space->to_fold_state(s.get());
+    if (f.angles.cwiseAbs().maxCoeff() > max_angle || f.angles.cwiseAbs().maxCoeff() < 0.5) continue;
+    world.reset();
+    if (collision_free && !world.check(foldkit::geometry::facet_poses(p, tree, f), f).empty()) continue;
+    if (!motion.checkMotion(flat.get(), s.get())) continue;  // reachable: the straight way is free
+    return f;
+  }
+  throw std::runtime_error("no goal");
+}
+
+void expect_valid_plan(const CreasePattern& p, const PlanRequest& req, const PlanResult& r) {
+  ASSERT_TRUE(r.solved) << r.message;
+  ASSERT_TRUE(r.replay.has_value());
+  EXPECT_TRUE(r.replay->ok);
+  EXPECT_LT(r.replay->max_closure_error, 1e-3);
+  EXPECT_TRUE(r.replay->collisions.empty());
+  const ClosureSystem sys(p);
+  for (const FoldState& w : r.waypoints) EXPECT_LT(sys.max_error(w), 1e-6);
+  EXPECT_LT((r.waypoints.back().angles - req.goal.angles).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT(r.waypoints.front().angles.cwiseAbs().maxCoeff(), 1e-12);  // flat start
+}
+
+TEST(Plan, SingleVerticesOfDegree4To12FromFlatWithAndWithoutCollision) {
+  std::mt19937 rng(2024);
+  for (int n = 4; n <= 12; ++n) {
+    const CreasePattern p = build_or_throw(gen::single_vertex(foldkit::test::random_sectors(n, rng, 0.2)));
+    for (bool collisions : {false, true}) {
+      PlanRequest req;
+      req.pattern = &p;
+      req.goal = random_goal(p, static_cast<unsigned>(100 + n), collisions);
+      req.space = SpaceKind::SingleVertex;
+      req.time = 2.0;
+      req.seed = static_cast<unsigned>(n);
+      req.collisions = collisions;
+      const PlanResult r = plan(req);
+      SCOPED_TRACE("degree " + std::to_string(n) + (collisions ? " with collision" : ""));
+      expect_valid_plan(p, req, r);
+    }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+FoldState projected_goal(const CreasePattern& p, const Eigen::VectorXd& guess) {
+  foldkit::geometry::ProjectionOptions po;
+  po.tolerance = 1e-12;
+  const auto r = foldkit::geometry::project(ClosureSystem(p), FoldState{guess}, po);
+  EXPECT_TRUE(r.converged);
+  return r.state;
+}
+
+FoldState boat_goal(const CreasePattern& p) {
+  // Keel folded (mountain), bow and stern diagonals valley: the boat of Fig. 3b, a little open.
+  Eigen::VectorXd g(10);
+  g << 0.9, 0.9, 0.9, 0.9, -0.5, 0.5, 0.0, 0.0, 0.5, -0.5;
+  return projected_goal(p, g);
+}
+
+void plan_constrained(const CreasePattern& p, const FoldState& goal, SpaceKind kind, bool collisions) {
+  PlanRequest req;
+  req.pattern = &p;
+  req.goal = goal;
+  req.space = kind;
+  req.time = 2.0;
+  req.seed = 3;
+  req.collisions = collisions;
+  req.use_assignment = false;
+  const PlanResult r = plan(req);
+  SCOPED_TRACE(std::string("space ") + foldkit::planners::to_string(kind));
+  expect_valid_plan(p, req, r);
+}
+
+TEST(Plan, BoatThroughTheConstrainedSpaces) {
+  const CreasePattern p = build_or_throw(gen::boat());
+  const FoldState goal = boat_goal(p);
+  ASSERT_LT(ClosureSystem(p).max_error(goal), 1e-10);
+  for (SpaceKind kind : {SpaceKind::Projected, SpaceKind::Atlas, SpaceKind::TangentBundle}) plan_constrained(p, goal, kind, true);
+}
+
+// Disabled: RRTConnect on ProjectedStateSpace does not yet find this 1-DOF plan within 2 s (see
+// docs/PLANNING.md, open items).
+TEST(Plan, DISABLED_Miura4x4ThroughTheProjectedSpace) {
+  const CreasePattern p = build_or_throw(gen::miura(4, 4));
+  // Along its assignment, half folded.
+  Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
+  for (std::size_t j = 0; j < p.joints().size(); ++j)
+    g[static_cast<Eigen::Index>(j)] = p.joints()[j].assignment == foldkit::geometry::Assignment::Mountain ? 0.6 : -0.6;
+  const FoldState goal = projected_goal(p, g);
+  plan_constrained(p, goal, SpaceKind::Projected, false);
+}
+
+}  // namespace
