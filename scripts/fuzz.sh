@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (ASan + UBSan) in ./build-fuzz and runs one of them.
-#   bash scripts/fuzz.sh pmml|cmml|fold|loadcase [SECONDS=600] [JOBS=1]
+#   bash scripts/fuzz.sh pmml|cmml|fold|loadcase|cli [SECONDS=600] [JOBS=1]
 # The corpus grows in ./build-fuzz/corpus-NAME, seeded from the examples, the shared fixtures
 # and the bad-input corpus; crashes are written to ./build-fuzz/crash-NAME-*.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-name=${1:?usage: fuzz.sh pmml|cmml|fold|loadcase [seconds] [jobs]}
+name=${1:?usage: fuzz.sh pmml|cmml|fold|loadcase|cli [seconds] [jobs]}
 seconds=${2:-600}
 jobs=${3:-1}
 command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ is needed (apt-get install clang)" >&2; exit 1; }
@@ -19,6 +19,15 @@ if [ ! -d "$corpus" ]; then
   ./build-fuzz/apps/foldkit demo -o build-fuzz/seeds >/dev/null 2>&1
   cp build-fuzz/seeds/*."$name" test/data/bad/*."$name" "$corpus"/ 2>/dev/null || true
   cp ../shared/fixtures/fold/*."$name" test/data/good/*."$name" "$corpus"/ 2>/dev/null || true
+  # Command lines: every verb's --help, and the README's examples, NUL-separated.
+  if [ "$name" = cli ]; then
+    for verb in validate info generate convert dof project simulate plan stiffness demo; do
+      printf '%s\000--help' "$verb" > "$corpus/help-$verb"
+    done
+    printf 'generate\000miura\000--rows\000040\000--cols\000040\000-o\000miura.pmml' > "$corpus/generate"
+    printf 'simulate\000a.pmml\000b.cmml\000--json\000--model\000spring\000--frames\000t.fold' > "$corpus/simulate"
+    printf 'plan\000a.pmml\000--goal\000g.cmml\000--planner\000RRTConnect\000--time\000001\000--seed\000003\000-o\000p.cmml' > "$corpus/plan"
+  fi
 fi
 parallel=()
 # With -jobs, libFuzzer forks workers that log to ./fuzz-N.log: give each target its own folder.
