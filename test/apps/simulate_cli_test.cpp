@@ -71,6 +71,20 @@ TEST(SimulateCli, RollingCollisionExitsThreeAndNamesTheActors) {
   EXPECT_EQ(foldkit({"simulate", c.pmml, c.cmml, "--no-collision"}).exit, 0);
 }
 
+// Same input, same bytes: the report, the trajectory and the snapshots.
+TEST(SimulateCli, DeterministicOutputs) {
+  const StripCase c = strip_case("170", "170");
+  std::vector<std::string> outs;
+  for (const char* run : {"a", "b"}) {
+    const std::string frames = c.dir + "/" + run + ".fold", svg = c.dir + "/" + run + "-svg";
+    const auto r = foldkit({"simulate", c.pmml, c.cmml, "--json", "--model", "spring", "--frames", frames, "--svg", svg});
+    ASSERT_EQ(r.exit, 3) << r.err;
+    outs.push_back(r.out + slurp(frames) + slurp(svg + "/collision-1.svg") + slurp(svg + "/event-1.svg"));
+  }
+  EXPECT_GT(outs[0].size(), 1000u);
+  EXPECT_EQ(outs[0], outs[1]);
+}
+
 TEST(SimulateCli, ModelsAndOptions) {
   const StripCase c = strip_case("90", "-90");
   for (const char* model : {"motor", "spring", "sync"}) {
