@@ -5,14 +5,64 @@
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
+#include "foldkit/geometry/projection.hpp"
+#include "foldkit/io/number_format.hpp"
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 
 namespace foldkit::apps {
+namespace {
+
+// "ID:DEG,ID:DEG,…" → the angle (radians) of each named joint, by joint index.
+std::vector<std::pair<int, double>> parse_goal_angles(const geometry::CreasePattern& pattern, const std::string& text) {
+  std::vector<std::pair<int, double>> out;
+  std::vector<bool> seen(pattern.joints().size(), false);
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t end = std::min(text.find(',', begin), text.size());
+    const std::string item = text.substr(begin, end - begin);
+    const std::size_t colon = item.find(':');
+    if (colon == std::string::npos) throw UsageError("--goal-angles: '" + item + "' is not ID:DEGREES");
+    const auto id = io::parse_int(item.substr(0, colon));
+    const io::NumberList deg = io::parse_numbers(item.substr(colon + 1));
+    if (!id) throw UsageError("--goal-angles: '" + item.substr(0, colon) + "' is not a joint ID");
+    if (!deg.error.empty() || deg.values.size() != 1 || std::abs(deg.values[0]) > 180.0)
+      throw UsageError("--goal-angles: '" + item.substr(colon + 1) + "' is not an angle in degrees within [-180, 180]");
+    const auto j = pattern.joint_index(*id);
+    if (!j) throw UsageError("--goal-angles: the pattern has no joint " + std::to_string(*id));
+    if (seen[static_cast<std::size_t>(*j)]) throw UsageError("--goal-angles: joint " + std::to_string(*id) + " is named twice");
+    seen[static_cast<std::size_t>(*j)] = true;
+    out.emplace_back(*j, deg.values[0] * M_PI / 180.0);
+    begin = end + 1;
+  }
+  return out;
+}
+
+// The closed state nearest to the flat sheet in which the named creases have their angles: the
+// other creases move (Levenberg–Marquardt), the named ones are held. Empty when none is found.
+std::optional<geometry::FoldState> goal_from_angles(const geometry::CreasePattern& pattern,
+                                                    const std::vector<std::pair<int, double>>& angles, std::string& why) {
+  geometry::FoldState rough = geometry::FoldState::flat(pattern);
+  geometry::ProjectionOptions o;
+  o.held.assign(pattern.joints().size(), false);
+  for (const auto& [j, a] : angles) {
+    rough.angles[j] = a;
+    o.held[static_cast<std::size_t>(j)] = true;
+  }
+  const geometry::ClosureSystem system(pattern);
+  const geometry::ProjectionResult r = geometry::project(system, rough, o);
+  if (!r.converged) {
+    why = r.message;
+    return std::nullopt;
+  }
+  return r.state;
+}
+
+}  // namespace
 
 Command add_plan(CLI::App& root) {
   struct Options {
-    std::string pattern, goal, start, space = "auto", planner = "RRTConnect", output;
+    std::string pattern, goal, goal_angles, start, space = "auto", planner = "RRTConnect", output;
     double time = 5.0;
     unsigned int seed = 1;
     bool no_collision = false, free_signs = false, json = false;
@@ -20,7 +70,12 @@ Command add_plan(CLI::App& root) {
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("plan", "Plan a closed, collision-free fold sequence with an OMPL planner");
   app->add_option("pattern", opt->pattern, "Crease pattern (.pmml or .fold)")->required();
-  app->add_option("--goal", opt->goal, "CMML whose end state is the goal")->required();
+  CLI::Option* goal = app->add_option("--goal", opt->goal, "CMML whose end state is the goal");
+  CLI::Option* goal_angles =
+      app->add_option("--goal-angles", opt->goal_angles,
+                      "Goal as ID:DEGREES,… for some creases: the nearest closed state to flat that holds them");
+  goal->excludes(goal_angles);
+  goal_angles->excludes(goal);
   app->add_option("--start", opt->start, "CMML whose end state is the start (default: flat)");
   app->add_option("--space", opt->space, "auto, single-vertex, projected, atlas, tangent-bundle")
       ->check(CLI::IsMember({"auto", "single-vertex", "projected", "atlas", "tangent-bundle"}))
@@ -49,8 +104,19 @@ Command add_plan(CLI::App& root) {
             };
             planners::PlanRequest req;
             req.pattern = &pattern;
-            const geometry::FoldSequence goal_seq = read(opt->goal);
-            req.goal = geometry::end_state(pattern, goal_seq);
+            if (opt->goal.empty() == opt->goal_angles.empty()) throw UsageError("give the goal as --goal CMML or --goal-angles ID:DEG,…");
+            if (!opt->goal.empty()) {
+              req.goal = geometry::end_state(pattern, read(opt->goal));
+            } else {
+              std::string why;
+              const auto g = goal_from_angles(pattern, parse_goal_angles(pattern, opt->goal_angles), why);
+              if (!g) {
+                std::cerr << "no plan: no closed state holds the angles of --goal-angles (" << why << ")\n";
+                if (opt->json) print_json({{"solved", false}, {"message", "no closed goal state: " + why}});
+                return kNoPlan;
+              }
+              req.goal = *g;
+            }
             if (!opt->start.empty()) {
               req.start_sequence = read(opt->start);
               req.start = geometry::end_state(pattern, req.start_sequence);
@@ -65,7 +131,7 @@ Command add_plan(CLI::App& root) {
             try {
               r = planners::plan(req);
             } catch (const std::invalid_argument& e) {
-              throw io::ParseError(opt->goal, 0, e.what());
+              throw io::ParseError(opt->goal.empty() ? "--goal-angles" : opt->goal, 0, e.what());
             }
             std::cerr << (r.solved ? "solved" : "no plan") << ": " << r.message << " (" << r.planner << " in " << r.space
                       << ", " << r.time << " s, " << r.waypoints.size() << " waypoints)\n";

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <Eigen/SparseCholesky>
 
@@ -31,9 +32,19 @@ ProjectionResult project(const ClosureSystem& system, const FoldState& start, co
       out.error = std::numeric_limits<double>::infinity();
       return out;
     }
+  if (!options.held.empty() && options.held.size() != static_cast<std::size_t>(x.size()))
+    throw std::invalid_argument("project: `held` must have one entry per joint");
+  // Held creases get no column in the step: J·diag(free).
+  Eigen::VectorXd free = Eigen::VectorXd::Ones(x.size());
+  for (std::size_t i = 0; i < options.held.size(); ++i)
+    if (options.held[i]) free[static_cast<Eigen::Index>(i)] = 0.0;
   Eigen::VectorXd r;
   Eigen::SparseMatrix<double> J;
-  system.evaluate(out.state, r, J);
+  auto evaluate = [&] {
+    system.evaluate(out.state, r, J);
+    if (!options.held.empty()) J = J * free.asDiagonal();
+  };
+  evaluate();
   out.error = system.max_error(out.state);
   double mu = 1e-2;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
@@ -70,7 +81,7 @@ ProjectionResult project(const ClosureSystem& system, const FoldState& start, co
       out.error = system.max_error(out.state);
       return out;
     }
-    system.evaluate(out.state, r, J);
+    evaluate();
     out.error = system.max_error(out.state);
   }
   out.converged = true;

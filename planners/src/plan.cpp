@@ -171,7 +171,12 @@ PlanResult plan(const PlanRequest& req) {
     const auto ck = kind == SpaceKind::Atlas           ? statespaces::ConstrainedKind::Atlas
                     : kind == SpaceKind::TangentBundle ? statespaces::ConstrainedKind::TangentBundle
                                                        : statespaces::ConstrainedKind::Projected;
-    cs = statespaces::make_constrained(pattern, req.goal, ck, bounds, req.numerical_jacobian, 2.5 * req.resolution);
+    statespaces::AngleBounds box = bounds;
+    if (req.search_margin >= 0.0) {
+      box.lower = box.lower.array().max(start.angles.cwiseMin(req.goal.angles).array() - req.search_margin).matrix();
+      box.upper = box.upper.array().min(start.angles.cwiseMax(req.goal.angles).array() + req.search_margin).matrix();
+    }
+    cs = statespaces::make_constrained(pattern, req.goal, ck, box, req.numerical_jacobian, 2.5 * req.resolution);
     space = cs.space;
     si = cs.si;
     reader = statespaces::constrained_reader();

@@ -30,11 +30,15 @@ SingleVertexChain::SingleVertexChain(const geometry::CreasePattern& pattern, std
 
   // The passive triple: consecutive creases whose sectors α, β are far from 0 and π (the root
   // interval of C has length 2 sin α sin β) and whose outer axes are far from parallel
-  // (sin(α + β): at the flat state R(u₂, 0)u₃ = u₃ must not lie along u₁).
+  // (sin(α + β): at the flat state R(u₂, 0)u₃ = u₃ must not lie along u₁). With α = β the outer
+  // axes line up at b = ±π (R(u₂, π)u₃ = u₁: a and c are then undetermined, e.g. the flap of the
+  // corner cube folded shut), so a triple with unequal sectors is preferred. (Only exact ties:
+  // near-equal sectors are merely ill-conditioned near b = ±π, and the choice stays as it was.)
   double best = -1.0;
   for (std::size_t k = 0; k < n; ++k) {
     const double alpha = star.sectors[k], beta = star.sectors[(k + 1) % n];
-    const double score = std::abs(std::sin(alpha)) * std::abs(std::sin(beta)) * std::abs(std::sin(alpha + beta));
+    const double lock = std::abs(alpha - beta) < 1e-9 ? 0.5 : 1.0;
+    const double score = lock * std::abs(std::sin(alpha)) * std::abs(std::sin(beta)) * std::abs(std::sin(alpha + beta));
     if (score > best + 1e-12) {
       best = score;
       first_passive_ = k;

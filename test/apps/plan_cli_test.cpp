@@ -82,3 +82,27 @@ TEST(PlanCli, BadInputAndUsage) {
 }
 
 }  // namespace
+
+namespace {
+
+// A goal given by two creases' angles: the plan ends with those creases exactly there, closed
+// (the simulator replays it), and impossible or malformed angle lists are refused.
+TEST(PlanCli, GoalAnglesForSomeCreases) {
+  const Case c = make_case();
+  const std::string out = c.dir + "/angles.cmml";
+  const auto r = foldkit({"plan", c.pattern, "--goal-angles", "1:30,3:-20", "--planner", "RRTConnect", "--time", "2",
+                          "--seed", "4", "--no-collision", "-o", out, "--json"});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  EXPECT_TRUE(nlohmann::json::parse(r.out)["solved"].get<bool>());
+  const auto sim = foldkit({"simulate", c.pattern, out, "--json", "--no-collision"});
+  ASSERT_EQ(sim.exit, 0) << sim.err;
+  const auto angles = nlohmann::json::parse(sim.out)["final_angles"];
+  EXPECT_NEAR(angles[0]["angle"].get<double>(), 30.0, 1e-9);
+  EXPECT_NEAR(angles[2]["angle"].get<double>(), -20.0, 1e-9);
+  for (const char* bad : {"1:30,9:10", "1:30,1:20", "1:200", "one:30", "1=30"})
+    EXPECT_EQ(foldkit({"plan", c.pattern, "--goal-angles", bad, "--time", "1", "-o", out}).exit, 2) << bad;
+  EXPECT_EQ(foldkit({"plan", c.pattern, "--goal", c.goal, "--goal-angles", "1:30", "--time", "1", "-o", out}).exit, 2);
+  EXPECT_EQ(foldkit({"plan", c.pattern, "--time", "1", "-o", out}).exit, 2);
+}
+
+}  // namespace

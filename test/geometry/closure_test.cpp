@@ -107,7 +107,7 @@ TEST(Mobility, SingleVertexFlatAndFolded) {
     EXPECT_EQ(flat.rank, 2) << n;
     EXPECT_EQ(flat.dof, n - 2) << n;
     // A folded closed state: project a random non-flat state.
-    const ProjectionResult folded = project(sys, random_state(p, rng, 0.6), {1e-12, 200, false});
+    const ProjectionResult folded = project(sys, random_state(p, rng, 0.6), {1e-12, 200, false, {}});
     ASSERT_TRUE(folded.converged) << n << ": " << folded.message;
     const Mobility m = mobility(sys, folded.state);
     EXPECT_EQ(m.rank, 3) << n;
@@ -120,7 +120,7 @@ TEST(Mobility, PaperFigure2DegreeEight) {
   const ClosureSystem sys(p);
   EXPECT_EQ(mobility(sys, FoldState::flat(p)).dof, 6);
   std::mt19937 rng(8);
-  const ProjectionResult folded = project(sys, random_state(p, rng, 0.7), {1e-12, 200, false});
+  const ProjectionResult folded = project(sys, random_state(p, rng, 0.7), {1e-12, 200, false, {}});
   ASSERT_TRUE(folded.converged) << folded.message;
   EXPECT_EQ(mobility(sys, folded.state).dof, 5);
 }
@@ -133,7 +133,7 @@ FoldState fold_along_assignment(const ClosureSystem& sys, const CreasePattern& p
     const Assignment a = p.joints()[j].assignment;
     s.angles[static_cast<Eigen::Index>(j)] = a == Assignment::Mountain ? magnitude : a == Assignment::Valley ? -magnitude : 0.0;
   }
-  const ProjectionResult r = project(sys, s, {1e-12, 500, true});
+  const ProjectionResult r = project(sys, s, {1e-12, 500, true, {}});
   EXPECT_TRUE(r.converged) << r.message;
   return r.state;
 }
@@ -227,7 +227,7 @@ TEST(Mobility, BoatFoldsWithOneDof) {
     // Joints (docs/GENERATORS.md): 1–4 keel bow to stern, 5–6 bow diagonals, 7–8 transverse,
     // 9–10 stern diagonals.
     s.angles << t, -t, -t, t, -t, -t, 0, 0, -t, -t;
-    const ProjectionResult r = project(sys, s, {1e-12, 300, false});
+    const ProjectionResult r = project(sys, s, {1e-12, 300, false, {}});
     ASSERT_TRUE(r.converged) << r.message;
     const Mobility m = mobility(sys, r.state);
     EXPECT_EQ(m.dof, 1) << t;

@@ -74,7 +74,7 @@ TEST(Kinematics, ClosedStatesHoldTogetherAtEveryCrease) {
     std::uniform_real_distribution<double> u(-0.5, 0.5);
     FoldState s = FoldState::flat(p);
     for (Eigen::Index i = 0; i < s.angles.size(); ++i) s.angles[i] = u(rng);
-    const ProjectionResult r = project(sys, s, {1e-13, 300, false});
+    const ProjectionResult r = project(sys, s, {1e-13, 300, false, {}});
     ASSERT_TRUE(r.converged) << spec.title << ": " << r.message;
     for (int root = 0; root < static_cast<int>(p.actors().size()); root += 3)
       EXPECT_LT(crease_gap(p, facet_poses(p, make_tree(p, root), r.state)), 1e-10) << spec.title;

@@ -23,7 +23,7 @@ TEST(Projection, ThousandRandomPerturbations) {
   const ClosureSystem sys(p);
   FoldState start = FoldState::flat(p);
   start.angles << 0.6, -0.5, 0.7, -0.4, 0.5, -0.6;
-  const ProjectionResult base = project(sys, start, {1e-12, 200, false});
+  const ProjectionResult base = project(sys, start, {1e-12, 200, false, {}});
   ASSERT_TRUE(base.converged) << base.message;
   std::uniform_real_distribution<double> u(-0.2, 0.2);
   int ok = 0;
@@ -31,7 +31,7 @@ TEST(Projection, ThousandRandomPerturbations) {
   for (int trial = 0; trial < 1000; ++trial) {
     FoldState s = base.state;
     for (Eigen::Index i = 0; i < s.angles.size(); ++i) s.angles[i] += u(rng);
-    const ProjectionResult r = project(sys, s, {1e-10, 100, false});
+    const ProjectionResult r = project(sys, s, {1e-10, 100, false, {}});
     ok += r.converged;
     if (r.converged) worst = std::max(worst, r.error);
     EXPECT_TRUE(r.state.angles.allFinite());
@@ -70,12 +70,37 @@ TEST(Projection, NearFlatKeepsTheAssignedSigns) {
   for (Eigen::Index j = 0; j < s.angles.size(); ++j) EXPECT_GT(r.state.angles[j] * s.angles[j], 0.0) << j;
 }
 
+// Holding crease 0 of a degree-4 flat-foldable vertex at 0.8 rad: the other three move to a closed
+// state on one of the two closed-form modes (NOTES.md), and crease 0 stays exactly where it was.
+TEST(Projection, HeldCreasesStayPut) {
+  const double alpha = 1.1, beta = 0.7, t = 0.8;
+  const CreasePattern p = build_or_throw(gen::single_vertex({alpha, beta, M_PI - alpha, M_PI - beta}));
+  const ClosureSystem sys(p);
+  ProjectionOptions o;
+  o.held = {true, false, false, false};
+  for (const Eigen::Vector4d& rough : {Eigen::Vector4d(t, -0.3, 0.6, 0.3), Eigen::Vector4d(t, 1.2, -0.5, 1.1)}) {
+    FoldState start = FoldState::flat(p);
+    start.angles = rough;
+    const ProjectionResult r = project(sys, start, o);
+    ASSERT_TRUE(r.converged) << r.message;
+    EXPECT_EQ(r.state.angles[0], t);
+    EXPECT_LT(sys.max_error(r.state), 1e-10);
+    const double r1 = 2 * std::atan(-std::cos((alpha + beta) / 2) / std::cos((alpha - beta) / 2) * std::tan(t / 2));
+    const double t2 = 2 * std::atan(std::tan(t / 2) * std::sin((alpha + beta) / 2) / std::sin((alpha - beta) / 2));
+    const Eigen::Vector4d mode1(t, r1, t, -r1), mode2(t, t2, -t, t2);
+    const double off = std::min((r.state.angles - mode1).norm(), (r.state.angles - mode2).norm());
+    EXPECT_LT(off, 1e-8) << r.state.angles.transpose();
+  }
+  o.held = {true, false};
+  EXPECT_THROW(project(sys, FoldState::flat(p), o), std::invalid_argument);
+}
+
 TEST(Projection, ReportsFailure) {
   const CreasePattern p = build_or_throw(gen::single_vertex({1.0, 1.0, 1.0, 2 * M_PI - 3.0}));
   const ClosureSystem sys(p);
   FoldState s = FoldState::flat(p);
   s.angles << 2.5, 2.5, 2.5, 2.5;
-  const ProjectionResult r = project(sys, s, {1e-10, 3, true});
+  const ProjectionResult r = project(sys, s, {1e-10, 3, true, {}});
   EXPECT_FALSE(r.converged);
   EXPECT_FALSE(r.message.empty());
   EXPECT_GT(r.error, 1e-10);
@@ -105,7 +130,7 @@ TEST(NumericalExtremes, SliverSectorsHighDegreeAndNearPi) {
     sys.evaluate(s, r, J);
     EXPECT_TRUE(r.allFinite());
     EXPECT_TRUE(Eigen::MatrixXd(J).allFinite());
-    const ProjectionResult pr = project(sys, s, {1e-10, 300, false});
+    const ProjectionResult pr = project(sys, s, {1e-10, 300, false, {}});
     EXPECT_TRUE(pr.state.angles.allFinite());
     EXPECT_TRUE(std::isfinite(pr.error));
     EXPECT_TRUE(pr.converged) << sectors.size() << ": " << pr.message;

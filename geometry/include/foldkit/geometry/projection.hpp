@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <vector>
 
 #include "foldkit/geometry/closure.hpp"
 
@@ -11,6 +12,9 @@ struct ProjectionOptions {
   // Keep each crease on the side (mountain/valley) it starts on: near the flat state, where the
   // Jacobian drops rank, an unbiased step can flip creases to the other branch.
   bool keep_signs = true;
+  // Creases (by joint index) held at their starting angles: only the others move. Empty: none.
+  // A goal given by the angles of some creases is the closed state nearest to them this way.
+  std::vector<bool> held;
 };
 
 struct ProjectionResult {

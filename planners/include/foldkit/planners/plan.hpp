@@ -35,6 +35,11 @@ struct PlanRequest {
   bool use_assignment = true;  // mountain/valley assignments of the pattern become angle bounds
   bool numerical_jacobian = false;  // constrained spaces: OMPL's finite differences (a baseline)
   bool simplify = true;
+  // Constrained spaces: when ≥ 0, the ambient box the sampler draws from (and the plan stays in)
+  // is narrowed to [min(start, goal) − margin, max(start, goal) + margin] per crease (within the
+  // bounds). On patterns whose closure variety has many branches through flat (Miura) uniform
+  // ambient samples project onto those other branches and RRTConnect never heads for the goal.
+  double search_margin = -1.0;
   double resolution = 0.02;     // motion validator: radians per check (single-vertex); manifold step/2.5 otherwise
   double waypoint_step = 0.02;  // largest joint change between two CMML waypoints, radians
   double velocity = 1.0;        // fastest joint's speed in the CMML, rad/s
