@@ -63,7 +63,7 @@ std::optional<geometry::FoldState> goal_from_angles(const geometry::CreasePatter
 Command add_plan(CLI::App& root) {
   struct Options {
     std::string pattern, goal, goal_angles, start, space = "auto", planner = "RRTConnect", output;
-    double time = 5.0;
+    double time = 5.0, search_margin = -1.0;
     unsigned int seed = 1;
     bool no_collision = false, free_signs = false, json = false;
   };
@@ -85,6 +85,9 @@ Command add_plan(CLI::App& root) {
   app->add_option("--time", opt->time, "Seconds for the planner")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_option("--seed", opt->seed, "Random seed (same seed, same plan)")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_flag("--no-collision", opt->no_collision, "Closure only (no collision world is built)");
+  app->add_option("--search-margin", opt->search_margin,
+                  "Constrained spaces: sample only within the box of start and goal widened by this (radians)")
+      ->check(CLI::NonNegativeNumber);
   app->add_flag("--free-signs", opt->free_signs, "Ignore the pattern's mountain/valley assignment");
   app->add_option("-o,--output", opt->output, "Output CMML")->required();
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
@@ -126,6 +129,7 @@ Command add_plan(CLI::App& root) {
             req.time = opt->time;
             req.seed = opt->seed;
             req.collisions = !opt->no_collision;
+            req.search_margin = opt->search_margin;
             req.use_assignment = !opt->free_signs;
             planners::PlanResult r;
             try {

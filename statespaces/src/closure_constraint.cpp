@@ -49,12 +49,24 @@ ClosureConstraint::ClosureConstraint(const geometry::CreasePattern& pattern, con
   setMaxIterations(100);
 }
 
+// OMPL's Newton projection (Constraint::project) takes full pseudo-inverse steps; near a singular
+// Jacobian they can throw x to ±inf, and a non-finite Jacobian then aborts inside Eigen's
+// JacobiSVD (seen on Miura-ori). Off the finite box we answer a large residual and a zero
+// Jacobian: the steps stop, the projection fails, and the sampler draws again.
 void ClosureConstraint::function(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> out) const {
+  if (!x.allFinite()) {
+    out.setConstant(1e3);
+    return;
+  }
   const Eigen::VectorXd r = system_.residual(geometry::FoldState{x});
   for (std::size_t i = 0; i < rows_.size(); ++i) out[static_cast<Eigen::Index>(i)] = r[rows_[i]];
 }
 
 void ClosureConstraint::jacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::MatrixXd> out) const {
+  if (!x.allFinite()) {
+    out.setZero();
+    return;
+  }
   if (numerical_) return ob::Constraint::jacobian(x, out);
   thread_local Eigen::VectorXd r;
   thread_local Eigen::SparseMatrix<double> j;
@@ -67,6 +79,22 @@ void ClosureConstraint::jacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eig
       const Eigen::Index row = where[static_cast<std::size_t>(it.row())];
       if (row >= 0) out(row, it.col()) = it.value();
     }
+}
+
+bool ClosureConstraint::project(Eigen::Ref<Eigen::VectorXd> x) const {
+  Eigen::VectorXd f(getCoDimension());
+  Eigen::MatrixXd j(getCoDimension(), x.size());
+  const double tolerance2 = getTolerance() * getTolerance();
+  function(x, f);
+  for (unsigned int iteration = 0; !(f.squaredNorm() <= tolerance2); ++iteration) {
+    if (iteration >= getMaxIterations() || !f.allFinite()) return false;
+    jacobian(x, j);
+    const Eigen::VectorXd step = j.completeOrthogonalDecomposition().solve(f);
+    if (!step.allFinite()) return false;
+    x -= step;
+    function(x, f);
+  }
+  return true;
 }
 
 ConstrainedKind parse_constrained_kind(const std::string& name) {

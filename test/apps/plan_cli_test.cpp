@@ -106,3 +106,19 @@ TEST(PlanCli, GoalAnglesForSomeCreases) {
 }
 
 }  // namespace
+
+namespace {
+
+// The demo's folded Miura-ori as a goal, through the projected space with a search margin: OMPL
+// 1.5.2's own Newton projection aborted inside Eigen's SVD here (regression).
+TEST(PlanCli, MiuraFromTheDemoThroughTheProjectedSpace) {
+  const std::string dir = temp_dir();
+  ASSERT_EQ(foldkit({"demo", "-o", dir}).exit, 0);
+  const std::string out = dir + "/miura-plan.cmml";
+  const auto r = foldkit({"plan", dir + "/miura-4x4.pmml", "--goal", dir + "/miura-4x4-folded.cmml", "--space", "projected",
+                          "--search-margin", "0.2", "--time", "5", "--seed", "2", "-o", out, "--json"});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  EXPECT_EQ(foldkit({"simulate", dir + "/miura-4x4.pmml", out}).exit, 0);
+}
+
+}  // namespace

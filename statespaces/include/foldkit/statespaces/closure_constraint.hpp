@@ -28,6 +28,11 @@ class ClosureConstraint : public ompl::base::Constraint {
   using ompl::base::Constraint::jacobian;
   void function(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> out) const override;
   void jacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::MatrixXd> out) const override;
+  // OMPL's Newton projection with minimum-norm steps, made safe: Constraint::project of OMPL
+  // 1.5.2 aborts inside Eigen's JacobiSVD on some Miura samples (an assertion in SVD::solve);
+  // this one solves by complete orthogonal decomposition and gives up on non-finite values.
+  using ompl::base::Constraint::project;
+  bool project(Eigen::Ref<Eigen::VectorXd> x) const override;
 
   const geometry::ClosureSystem& system() const { return system_; }
   const std::vector<Eigen::Index>& rows() const { return rows_; }
