@@ -14,7 +14,8 @@ std::unique_ptr<Cli> make_cli() {
   app.set_version_flag("--version", std::string("foldkit 0.1.0"));
   app.require_subcommand(1);
   cli->commands = {add_validate(app), add_info(app),     add_generate(app), add_convert(app),   add_dof(app),
-                   add_project(app),  add_simulate(app), add_plan(app),     add_stiffness(app), add_demo(app)};
+                   add_project(app),  add_simulate(app), add_plan(app),     add_stiffness(app), add_demo(app),
+                   add_hamiltonian(app)};
   return cli;
 }
 

@@ -30,6 +30,7 @@ Command add_project(CLI::App& root);
 Command add_simulate(CLI::App& root);
 Command add_plan(CLI::App& root);
 Command add_stiffness(CLI::App& root);
+Command add_hamiltonian(CLI::App& root);
 
 // Usage errors (bad parameters the parser could not catch) are thrown as UsageError → exit 2.
 struct UsageError : std::runtime_error {

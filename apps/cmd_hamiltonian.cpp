@@ -1,0 +1,106 @@
+// foldkit hamiltonian: a Hamiltonian path (chain of cubes) through a pixel or voxel shape.
+#include <iostream>
+#include <sstream>
+
+#include "cli_common.hpp"
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/planners/hamiltonian.hpp"
+
+namespace foldkit::apps {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+std::string path_text(const planners::HamiltonianResult& r, bool three_d) {
+  std::ostringstream out;
+  for (const planners::Cell& c : r.path) {
+    out << c.x << ' ' << c.y;
+    if (three_d) out << ' ' << c.z;
+    out << '\n';
+  }
+  return out.str();
+}
+
+// "X,Y" or "X,Y,Z" (Z only for voxels).
+planners::Cell parse_start(const std::string& text, bool three_d) {
+  planners::Cell c;
+  char comma1 = 0, comma2 = 0, extra = 0;
+  std::istringstream in(text);
+  in >> c.x >> comma1 >> c.y;
+  if (three_d) in >> comma2 >> c.z;
+  if (!in || comma1 != ',' || (three_d && comma2 != ',') || (in >> extra))
+    throw UsageError("--start " + text + ": expected " + (three_d ? "X,Y,Z" : "X,Y"));
+  return c;
+}
+
+}  // namespace
+
+Command add_hamiltonian(CLI::App& root) {
+  struct Options {
+    std::string shape, output, start;
+    bool refine = false, cycle = false, json = false;
+    std::uint64_t budget = planners::ExactOptions{}.node_budget;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* app = root.add_subcommand("hamiltonian", "Hamiltonian path (chain of cubes) through a pixel or voxel shape");
+  app->add_option("shape", opt->shape, "Shape: ASCII grid (.txt, .grid), PBM (.pbm) or voxel layers (.vox)")->required();
+  app->add_flag("--refine", opt->refine, "Refine each cell 2× (2×2 or 2×2×2) and build a Hamiltonian cycle in linear time");
+  app->add_flag("--cycle", opt->cycle, "Exact search for a Hamiltonian cycle instead of a path");
+  app->add_option("--budget", opt->budget, "Node budget of the exact search")->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_option("--start", opt->start, "Exact path from this cell, X,Y (X,Y,Z for voxels)");
+  app->add_option("-o,--output", opt->output, "Write the path, one 'x y' or 'x y z' per line");
+  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  return {app, [opt] {
+            const std::string& path = opt->shape;
+            const bool three_d = planners::is_voxel_path(path);
+            if (!three_d && !ends_with(path, ".txt") && !ends_with(path, ".grid") && !ends_with(path, ".pbm"))
+              throw UsageError(path + ": unknown shape format (expected .txt, .grid, .pbm or .vox)");
+            if (opt->refine && opt->cycle) throw UsageError("--refine always builds a cycle; --cycle is for the exact search");
+            planners::ExactOptions exact;
+            exact.node_budget = opt->budget;
+            exact.cycle = opt->cycle;
+    if (!opt->start.empty()) {
+      if (opt->refine || opt->cycle) throw UsageError("--start is for the exact path search (not --refine or --cycle)");
+      exact.start = parse_start(opt->start, three_d);
+    }
+            planners::HamiltonianResult r;
+            std::size_t cells = 0;
+            if (three_d) {
+              const planners::VoxelShape s = planners::read_voxel_shape(path);
+              cells = s.count() * (opt->refine ? 8 : 1);
+              r = opt->refine ? planners::refined_hamiltonian_cycle(s) : planners::exact_hamiltonian(s, exact);
+            } else {
+              const planners::PixelShape s = planners::read_pixel_shape(path);
+              cells = s.count() * (opt->refine ? 4 : 1);
+              r = opt->refine ? planners::refined_hamiltonian_cycle(s) : planners::exact_hamiltonian(s, exact);
+            }
+            const bool found = r.verdict == planners::Verdict::Found;
+            if (found && !opt->output.empty()) io::write_file_atomic(opt->output, path_text(r, three_d));
+            const char* method = opt->refine ? "refined" : "exact";
+            if (found)
+              std::cerr << path << ": Hamiltonian " << (r.cycle ? "cycle" : "path") << " through " << r.path.size() << " cells ("
+                        << method << ")\n";
+            else
+              std::cerr << path << ": " << (r.verdict == planners::Verdict::None ? "no Hamiltonian " : "undecided Hamiltonian ")
+                        << (opt->cycle ? "cycle" : "path") << ": " << r.reason << '\n';
+            if (opt->json) {
+              nlohmann::json j = {{"found", found},
+                                  {"verdict", planners::to_string(r.verdict)},
+                                  {"method", method},
+                                  {"dimension", three_d ? 3 : 2},
+                                  {"cells", cells},
+                                  {"length", r.path.size()},
+                                  {"cycle", found && r.cycle},
+                                  {"nodes", r.nodes}};
+              if (!found) j["reason"] = r.reason;
+              print_json(j);
+            } else if (found && opt->output.empty()) {
+              std::cout << path_text(r, three_d);
+            }
+            return found ? kOk : kNoPlan;
+          }};
+}
+
+}  // namespace foldkit::apps
