@@ -100,4 +100,49 @@ TEST(ClosedForm, LinearAndNonlinearAgreeForSmallLoads) {
     EXPECT_LT((a.modules[i].displacement - b.modules[i].displacement).norm(), 1e-5 * a.max_displacement + 1e-15);
 }
 
+TEST(ClosedForm, TinyLoadOnStiffSpringsIsNotRoundedToZero) {
+  // Translational springs 1e9 times stiffer than the hinges: the load is far below the round-off
+  // floor of the spring forces at any displaced state, yet the hinges still turn by P·dᵢ/k. The
+  // unloaded state is exact, so it must not pass for the solution.
+  constexpr int kTiles = 11;
+  for (double load : {1e-7, 1e-9}) {
+    auto p = strip_problem(kTiles, 1.0, 1e9);
+    const Vector3d tip(kTiles, 0.5, 0.0);
+    p.loads.push_back({kTiles - 1, Vector3d(0, 0, -load), tip});
+    double sum = 0.0;
+    for (int i = 1; i < kTiles; ++i) sum += (kTiles - i) * (kTiles - i);
+    const double expected = load * sum + (kTiles - 1) * load / 1e9;
+    for (bool linear : {true, false}) {
+      analysis::SolveOptions o;
+      o.linear = linear;
+      const auto r = analysis::solve(p, o);
+      ASSERT_TRUE(r.converged) << r.message << (linear ? " linear" : " nonlinear") << " load " << load;
+      // Ill-conditioning (ratio 1e9) leaves about four digits.
+      const auto& m = r.modules[kTiles - 1];
+      const Vector3d arm = tip - p.structure.modules[kTiles - 1].centroid;
+      const double d = linear ? -(m.displacement + m.rotation.cross(arm)).z() : -point_displacement(p, r, kTiles - 1, tip).z();
+      EXPECT_NEAR(d, expected, 1e-4 * expected) << (linear ? "linear" : "nonlinear") << " load " << load;
+    }
+  }
+}
+
+TEST(ClosedForm, LinearSolveAcceptedAtLargeLoads) {
+  // The linear model at a large load (α = 10 on the 10-link elastica): the solution's residual is
+  // judged against the round-off floor at the solution, not at the unloaded state.
+  auto p = strip_problem(11, 1.0, 1e6);
+  const double load = 0.1;
+  const Vector3d tip(11.0, 0.5, 0.0);
+  p.loads.push_back({10, Vector3d(0, 0, -load), tip});
+  analysis::SolveOptions o;
+  o.linear = true;
+  const auto r = analysis::solve(p, o);
+  ASSERT_TRUE(r.converged) << r.message;
+  double sum = 0.0;
+  for (int i = 1; i < 11; ++i) sum += (11 - i) * (11 - i);
+  const double expected = load * sum + 10 * load / 1e6;
+  const auto& m = r.modules[10];  // the linear model's small-rotation displacement of the tip
+  const Vector3d arm = tip - p.structure.modules[10].centroid;
+  EXPECT_NEAR(-(m.displacement + m.rotation.cross(arm)).z(), expected, 1e-6 * expected);
+}
+
 }  // namespace
