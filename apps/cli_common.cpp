@@ -7,6 +7,7 @@
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/fold_format.hpp"
+#include "foldkit/io/number_format.hpp"
 #include "foldkit/io/parse_error.hpp"
 #include "foldkit/io/pmml.hpp"
 #include "foldkit/io/svg.hpp"
@@ -94,6 +95,32 @@ geometry::FoldSequence load_sequence(const geometry::CreasePattern& pattern, con
 geometry::FoldState state_from(const geometry::CreasePattern& pattern, const std::string& cmml) {
   if (cmml.empty()) return geometry::FoldState::flat(pattern);
   return geometry::end_state(pattern, load_sequence(pattern, cmml));
+}
+
+std::vector<std::pair<int, double>> parse_joint_values(const geometry::CreasePattern& pattern, const std::string& text,
+                                                       const std::string& option, const std::string& item,
+                                                       const std::function<bool(double)>& valid, const std::string& rule) {
+  std::vector<std::pair<int, double>> out;
+  std::vector<bool> seen(pattern.joints().size(), false);
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t end = std::min(text.find(',', begin), text.size());
+    const std::string entry = text.substr(begin, end - begin);
+    const std::size_t colon = entry.find(':');
+    if (colon == std::string::npos) throw UsageError(option + ": '" + entry + "' is not " + item);
+    const auto id = io::parse_int(entry.substr(0, colon));
+    const io::NumberList value = io::parse_numbers(entry.substr(colon + 1));
+    if (!id) throw UsageError(option + ": '" + entry.substr(0, colon) + "' is not a joint ID");
+    if (!value.error.empty() || value.values.size() != 1 || !valid(value.values[0]))
+      throw UsageError(option + ": '" + entry.substr(colon + 1) + "' is not " + rule);
+    const auto j = pattern.joint_index(*id);
+    if (!j) throw UsageError(option + ": the pattern has no joint " + std::to_string(*id));
+    if (seen[static_cast<std::size_t>(*j)]) throw UsageError(option + ": joint " + std::to_string(*id) + " is named twice");
+    seen[static_cast<std::size_t>(*j)] = true;
+    out.emplace_back(*j, value.values[0]);
+    begin = end + 1;
+  }
+  return out;
 }
 
 }  // namespace foldkit::apps

@@ -2,6 +2,8 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -31,6 +33,10 @@ Command add_simulate(CLI::App& root);
 Command add_plan(CLI::App& root);
 Command add_stiffness(CLI::App& root);
 Command add_hamiltonian(CLI::App& root);
+Command add_carpenter(CLI::App& root);
+Command add_fold(CLI::App& root);
+Command add_bench(CLI::App& root);
+Command add_bench_merge(CLI::App& root);
 
 // Usage errors (bad parameters the parser could not catch) are thrown as UsageError → exit 2.
 struct UsageError : std::runtime_error {
@@ -62,6 +68,13 @@ geometry::FoldState state_from(const geometry::CreasePattern& pattern, const std
 
 // One JSON object on stdout.
 void print_json(const nlohmann::json& j);
+
+// "ID:VALUE,ID:VALUE,…" → (joint index, value) per named joint of `pattern`. `option` names the
+// option in messages, `item` the expected item ("ID:DEGREES"); a value for which `valid` is false
+// is refused as "not <rule>". UsageError on any bad item, unknown joint or joint named twice.
+std::vector<std::pair<int, double>> parse_joint_values(const geometry::CreasePattern& pattern, const std::string& text,
+                                                       const std::string& option, const std::string& item,
+                                                       const std::function<bool(double)>& valid, const std::string& rule);
 
 // Facts `foldkit info` reports, shared with the demo.
 nlohmann::json pattern_summary(const geometry::CreasePattern& pattern);

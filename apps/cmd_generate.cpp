@@ -78,7 +78,7 @@ Command add_generate(CLI::App& root) {
     unsigned seed = 0;
     int n = 4, rows = 4, cols = 4, rings = 3, spokes = 8, units = 3, cubes = 2;
     double width = 1, height = 1, cell = 1, ring_width = 1, a = 1, b = 1, angle = 60, radius = 1;
-    double length = 4, half_width = 1, bow = 1, tile = 1;
+    double length = 4, half_width = 1, bow = 1, tile = 1, side = 1, twist = 60, pleat = 1;
   };
   auto p = std::make_shared<Params>();
   const auto positive = CLI::PositiveNumber;
@@ -138,6 +138,17 @@ Command add_generate(CLI::App& root) {
   cubes->add_option("--cubes", p->cubes, "Number of cube nets")->check(count)->capture_default_str();
   cubes->add_option("--tile", p->tile, "Tile size")->check(positive)->capture_default_str();
   cubes->callback([=] { *make = [=] { return gen::cube_sheet(p->cubes, p->tile, common->joints); }; });
+
+  CLI::App* twist = kind(app, "square-twist", "The classic square twist (not rigidly foldable)", common);
+  twist->add_option("--side", p->side, "Side of the central square")->check(positive)->capture_default_str();
+  twist->add_option("--twist", p->twist, "Twist angle in degrees, (0, 90)")->check(CLI::Range(0.0, 90.0))->capture_default_str();
+  twist->add_option("--pleat", p->pleat, "Pleat length")->check(positive)->capture_default_str();
+  twist->callback([=] {
+    *make = [=] {
+      if (p->twist <= 0.0 || p->twist >= 90.0) throw UsageError("--twist must lie strictly between 0 and 90 degrees");
+      return gen::square_twist(p->side, radians(p->twist), p->pleat, common->joints);
+    };
+  });
 
   return {app, [=] {
             // rows × cols style products: at most four million actors.

@@ -6,7 +6,6 @@
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
 #include "foldkit/geometry/projection.hpp"
-#include "foldkit/io/number_format.hpp"
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 
@@ -15,26 +14,9 @@ namespace {
 
 // "ID:DEG,ID:DEG,…" → the angle (radians) of each named joint, by joint index.
 std::vector<std::pair<int, double>> parse_goal_angles(const geometry::CreasePattern& pattern, const std::string& text) {
-  std::vector<std::pair<int, double>> out;
-  std::vector<bool> seen(pattern.joints().size(), false);
-  std::size_t begin = 0;
-  while (begin <= text.size()) {
-    const std::size_t end = std::min(text.find(',', begin), text.size());
-    const std::string item = text.substr(begin, end - begin);
-    const std::size_t colon = item.find(':');
-    if (colon == std::string::npos) throw UsageError("--goal-angles: '" + item + "' is not ID:DEGREES");
-    const auto id = io::parse_int(item.substr(0, colon));
-    const io::NumberList deg = io::parse_numbers(item.substr(colon + 1));
-    if (!id) throw UsageError("--goal-angles: '" + item.substr(0, colon) + "' is not a joint ID");
-    if (!deg.error.empty() || deg.values.size() != 1 || std::abs(deg.values[0]) > 180.0)
-      throw UsageError("--goal-angles: '" + item.substr(colon + 1) + "' is not an angle in degrees within [-180, 180]");
-    const auto j = pattern.joint_index(*id);
-    if (!j) throw UsageError("--goal-angles: the pattern has no joint " + std::to_string(*id));
-    if (seen[static_cast<std::size_t>(*j)]) throw UsageError("--goal-angles: joint " + std::to_string(*id) + " is named twice");
-    seen[static_cast<std::size_t>(*j)] = true;
-    out.emplace_back(*j, deg.values[0] * M_PI / 180.0);
-    begin = end + 1;
-  }
+  auto out = parse_joint_values(pattern, text, "--goal-angles", "ID:DEGREES", [](double v) { return std::abs(v) <= 180.0; },
+                                "an angle in degrees within [-180, 180]");
+  for (auto& entry : out) entry.second *= M_PI / 180.0;
   return out;
 }
 

@@ -1,8 +1,8 @@
 // One simulator step (forward kinematics, closure error, self-collision check) on a Miura-ori
 // folding along its mode, with three ways of finding crossings side by side:
-//   Tree          — our CollisionWorld: FCL dynamic AABB tree, then the touching/crossing rules;
-//   AllPairsRules — the same rules on every pair, no broad phase;
-//   NaiveFcl      — the generic way: fcl::collide on every pair of facet meshes.
+//   BM_Collision_Ours          — our CollisionWorld: FCL dynamic AABB tree, then the touching/crossing rules;
+//   BM_Collision_AllPairsRules — the same rules on every pair, no broad phase;
+//   BM_Collision_Baseline      — the generic way: fcl::collide on every pair of facet meshes.
 #include <map>
 #include <memory>
 
@@ -82,10 +82,10 @@ void run_world(benchmark::State& st, simulation::BroadPhase phase) {
   report(st, sc, pairs, mesh);
 }
 
-void BM_Step_Tree(benchmark::State& st) { run_world(st, simulation::BroadPhase::DynamicAabbTree); }
-void BM_Step_AllPairsRules(benchmark::State& st) { run_world(st, simulation::BroadPhase::AllPairs); }
+void BM_Collision_Ours(benchmark::State& st) { run_world(st, simulation::BroadPhase::DynamicAabbTree); }
+void BM_Collision_AllPairsRules(benchmark::State& st) { run_world(st, simulation::BroadPhase::AllPairs); }
 
-void BM_Step_NaiveFcl(benchmark::State& st) {
+void BM_Collision_Baseline(benchmark::State& st) {
   const Scene& sc = scene(static_cast<int>(st.range(0)));
   const CreasePattern& p = sc.pattern;
   const geometry::KinematicTree tree = geometry::make_tree(p);
@@ -127,7 +127,7 @@ void BM_Step_NaiveFcl(benchmark::State& st) {
 
 }  // namespace
 
-BENCHMARK(BM_Step_Tree)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_Step_AllPairsRules)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_Step_NaiveFcl)->Arg(20)->Arg(40)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Collision_Ours)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Collision_AllPairsRules)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Collision_Baseline)->Arg(20)->Arg(40)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

@@ -57,15 +57,6 @@ struct Options {
   std::string csv = "measure_planning.csv";
 };
 
-// Positive sectors summing to 2π, none below `smallest` (as the tests' random_sectors).
-std::vector<double> random_sectors(int n, std::mt19937& rng, double smallest = 0.2) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<double> s(static_cast<std::size_t>(n));
-  double sum = 0.0;
-  for (double& x : s) sum += (x = u(rng));
-  for (double& x : s) x = smallest + x / sum * (2 * M_PI - n * smallest);
-  return s;
-}
 
 // A closed goal whose active angles are uniform in [−2, 2] (largest |angle| in [0.5, 2]) on a random
 // branch, reachable from flat along the straight segment in the active angles.
@@ -210,7 +201,7 @@ int main(int argc, char** argv) try {
   for (int degree : o.degrees)
     for (int seed = 1; seed <= o.seeds; ++seed) {
       std::mt19937 rng(static_cast<unsigned>(1000 * degree + seed));
-      const CreasePattern p = foldkit::geometry::build_or_throw(foldkit::geometry::generators::single_vertex(random_sectors(degree, rng)));
+      const CreasePattern p = foldkit::geometry::build_or_throw(foldkit::geometry::generators::single_vertex(foldkit::geometry::generators::random_sectors(degree, rng, 0.2)));
       const FoldState goal = connected_goal(p, rng, o.collision);
       for (char m : o.methods) {
         if (m == 'd' && seed > o.rejection_seeds) continue;

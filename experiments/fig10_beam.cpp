@@ -2,13 +2,14 @@
 //
 //   fig10_beam [--out DIR] [--check]
 //
-// Writes fig10_beam.md and fig10_beam.csv into DIR (default: the current folder); --check exits 1
-// when a figure leaves the band recorded in docs/STIFFNESS.md, so a regression shows in ctest.
+// Writes fig10_beam.md and fig10_beam.csv into DIR (default: experiment-output/fig10, created when
+// missing); --check exits 1 when a figure leaves the band recorded in docs/STIFFNESS.md, so a
+// regression shows in ctest.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <fstream>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <set>
@@ -19,6 +20,7 @@
 #include "foldkit/analysis/solver.hpp"
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/geometry/kinematics.hpp"
+#include "foldkit/io/atomic_write.hpp"
 
 namespace {
 
@@ -157,7 +159,7 @@ Outcome run(const analysis::Structure& base, const Case& c, bool linear) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string dir = ".";
+  std::string dir = "experiment-output/fig10";
   bool check = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--check")) check = true;
@@ -200,8 +202,9 @@ int main(int argc, char** argv) {
         << paper[i] << ',' << paper_ratio << ',' << o.iterations << ',' << o.residual << ',' << o.condition << '\n';
   }
   std::cout << md.str();
-  std::ofstream(dir + "/fig10_beam.md") << md.str();
-  std::ofstream(dir + "/fig10_beam.csv") << csv.str();
+  std::filesystem::create_directories(dir);
+  io::write_file_atomic(dir + "/fig10_beam.md", md.str());
+  io::write_file_atomic(dir + "/fig10_beam.csv", csv.str());
   if (!check) return ok ? 0 : 1;
   // Bands (docs/STIFFNESS.md): regression guards on our own figures, and the paper's ordering.
   const auto within = [](double v, double lo, double hi) { return v >= lo && v <= hi; };

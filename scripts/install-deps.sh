@@ -10,7 +10,10 @@ packages=(
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
   libtinyxml2-dev nlohmann-json3-dev libcli11-dev
   libompl-dev libode-dev libfcl-dev libccd-dev
+  coinor-libclp-dev pkg-config
   libbenchmark-dev libgtest-dev
+  python3-matplotlib
+  ompl-demos
 )
 
 missing=()

@@ -1,4 +1,5 @@
 #include "foldkit/planners/plan.hpp"
+#include "foldkit/planners/plan_setup.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -7,6 +8,7 @@
 #include <Eigen/QR>
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/ScopedState.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/constraint/AtlasStateSpace.h>
 #include <ompl/geometric/PathSimplifier.h>
 #include <ompl/geometric/SimpleSetup.h>
@@ -110,61 +112,97 @@ double elapsed(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-PlanResult plan(const PlanRequest& req) {
+bool PlanSetup::write(const FoldState& state, ob::State* out) const {
+  if (single_vertex) return single_vertex->from_fold_state(state, out);
+  if (joint_space) {
+    auto* v = out->as<ob::RealVectorStateSpace::StateType>();
+    for (Eigen::Index j = 0; j < state.angles.size(); ++j) v->values[j] = state.angles[j];
+    return true;
+  }
+  out->as<ob::ConstrainedStateSpace::StateType>()->copy(state.angles);
+  return true;
+}
+
+void PlanSetup::set_start_and_goal(og::SimpleSetup& ss, const FoldState& goal) const {
+  ob::ScopedState<> s(space), g(space);
+  write(prefix.back(), s.get());
+  if (!write(goal, g.get()))
+    throw std::invalid_argument("plan: the goal is a singular state of the single-vertex space (try --space projected)");
+  ss.setStartAndGoalStates(s, g, 1e-9);
+  if (kind == SpaceKind::Atlas || kind == SpaceKind::TangentBundle) {
+    auto atlas = std::static_pointer_cast<ob::AtlasStateSpace>(constrained.space);
+    atlas->anchorChart(s.get());
+    atlas->anchorChart(g.get());
+  }
+}
+
+PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
   if (!req.pattern) throw std::invalid_argument("plan: no pattern");
   const geometry::CreasePattern& pattern = *req.pattern;
   const auto n = static_cast<Eigen::Index>(pattern.joints().size());
   if (req.goal.angles.size() != n) throw std::invalid_argument("plan: the goal does not hold one angle per joint");
-  const FoldState start = req.start ? *req.start : FoldState::flat(pattern);
+  PlanSetup setup;
+  setup.start = req.start ? *req.start : FoldState::flat(pattern);
+  const FoldState& start = setup.start;
   if (start.angles.size() != n) throw std::invalid_argument("plan: the start does not hold one angle per joint");
-  if (!(req.time > 0.0) || !std::isfinite(req.time)) throw std::invalid_argument("plan: the time limit must be positive");
   if (!(req.resolution > 0.0) || !(req.waypoint_step > 0.0) || !(req.velocity > 0.0))
     throw std::invalid_argument("plan: resolution, waypoint step and velocity must be positive");
 
-  if (req.quiet) ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-  ompl::RNG::setSeed(std::max(1u, req.seed));
-
-  PlanResult result;
-  result.planner = req.planner;
   SpaceKind kind = req.space;
   if (kind == SpaceKind::Auto)
     kind = pattern.interior_vertices().size() == 1 && geometry::hole_count(pattern) == 0 ? SpaceKind::SingleVertex
                                                                                        : SpaceKind::Projected;
-  result.space = to_string(kind);
-
-  const geometry::ClosureSystem system(pattern);
-  if (system.rows() == 0) throw std::invalid_argument("plan: the pattern has no closed loop (every state is closed)");
-  const double start_error = system.max_error(start), goal_error = system.max_error(req.goal);
+  auto system = std::make_shared<const geometry::ClosureSystem>(pattern);
+  setup.system = system;
+  if (system->rows() == 0 && !allow_no_loops)
+    throw std::invalid_argument("plan: the pattern has no closed loop (every state is closed)");
+  setup.joint_space = system->rows() == 0;
+  if (setup.joint_space) kind = SpaceKind::Auto;
+  setup.kind = kind;
+  setup.space_name = setup.joint_space ? "joint" : to_string(kind);
+  const double start_error = system->max_error(start), goal_error = system->max_error(req.goal);
   if (start_error > 1e-6) throw std::invalid_argument("plan: the start is not closed (error " + std::to_string(start_error) + " rad)");
   if (goal_error > 1e-6) throw std::invalid_argument("plan: the goal is not closed (error " + std::to_string(goal_error) + " rad)");
   const statespaces::AngleBounds bounds = statespaces::AngleBounds::of(pattern, req.use_assignment);
   if (!bounds.contains(start, 1e-9)) throw std::invalid_argument("plan: the start breaks the mountain/valley assignment");
   if (!bounds.contains(req.goal, 1e-9)) throw std::invalid_argument("plan: the goal breaks the mountain/valley assignment");
   auto validity = std::make_shared<statespaces::FoldValidity>(pattern, bounds, req.collisions);
+  setup.validity = validity;
   if (!validity->valid(start)) throw std::invalid_argument("plan: the start state is not valid (facets cross)");
   if (!validity->valid(req.goal)) throw std::invalid_argument("plan: the goal state is not valid (facets cross)");
 
-  ob::SpaceInformationPtr si;
-  ob::StateSpacePtr space;
-  statespaces::StateReader reader;
-  std::shared_ptr<statespaces::SingleVertexStateSpace> sv;
-  statespaces::ConstrainedSetup cs;
-  std::vector<FoldState> prefix{start};
-
-  if (kind == SpaceKind::SingleVertex) {
+  setup.prefix = {start};
+  if (setup.joint_space) {
+    auto box = std::make_shared<ob::RealVectorStateSpace>(static_cast<unsigned int>(n));
+    ob::RealVectorBounds b(static_cast<unsigned int>(n));
+    for (Eigen::Index j = 0; j < n; ++j) {
+      b.setLow(static_cast<unsigned int>(j), bounds.lower[j]);
+      b.setHigh(static_cast<unsigned int>(j), bounds.upper[j]);
+    }
+    box->setBounds(b);
+    setup.space = box;
+    setup.si = std::make_shared<ob::SpaceInformation>(box);
+    setup.reader = [n](const ob::State* s, FoldState& f) {
+      f.angles = Eigen::Map<const Eigen::VectorXd>(s->as<ob::RealVectorStateSpace::StateType>()->values, n);
+      return true;
+    };
+    setup.si->setMotionValidator(std::make_shared<statespaces::FoldMotionValidator>(setup.si, validity, setup.reader,
+                                                                                     req.resolution, 2.5 * req.resolution));
+  } else if (kind == SpaceKind::SingleVertex) {
     auto chain = std::make_shared<statespaces::SingleVertexChain>(pattern);
-    sv = std::make_shared<statespaces::SingleVertexStateSpace>(chain, bounds);
-    space = sv;
-    si = std::make_shared<ob::SpaceInformation>(space);
-    reader = statespaces::single_vertex_reader(sv);
-    si->setMotionValidator(
-        std::make_shared<statespaces::FoldMotionValidator>(si, validity, reader, req.resolution, 2.5 * req.resolution));
-    ob::ScopedState<> probe_state(space);
+    auto sv = std::make_shared<statespaces::SingleVertexStateSpace>(chain, bounds);
+    setup.single_vertex = sv;
+    setup.space = sv;
+    setup.si = std::make_shared<ob::SpaceInformation>(setup.space);
+    setup.reader = statespaces::single_vertex_reader(sv);
+    setup.si->setMotionValidator(std::make_shared<statespaces::FoldMotionValidator>(setup.si, validity, setup.reader,
+                                                                                     req.resolution, 2.5 * req.resolution));
+    ob::ScopedState<> probe_state(setup.space);
     if (!sv->from_fold_state(start, probe_state.get())) {
       // The start is singular for the closed form (e.g. a flat vertex whose passive axes line up):
       // leave it along a short closed segment first.
-      prefix = lead_in(system, start, req.goal, 3, req.waypoint_step);
-      if (prefix.empty() || !sv->from_fold_state(prefix.back(), probe_state.get()))
+      setup.prefix = lead_in(*system, start, req.goal, 3, req.waypoint_step);
+      if (setup.prefix.empty() || !sv->from_fold_state(setup.prefix.back(), probe_state.get()))
         throw std::invalid_argument("plan: no closed way out of the singular start state");
     }
   } else {
@@ -176,42 +214,98 @@ PlanResult plan(const PlanRequest& req) {
       box.lower = box.lower.array().max(start.angles.cwiseMin(req.goal.angles).array() - req.search_margin).matrix();
       box.upper = box.upper.array().min(start.angles.cwiseMax(req.goal.angles).array() + req.search_margin).matrix();
     }
-    cs = statespaces::make_constrained(pattern, req.goal, ck, box, req.numerical_jacobian, 2.5 * req.resolution);
-    space = cs.space;
-    si = cs.si;
-    reader = statespaces::constrained_reader();
-    const auto rank = static_cast<Eigen::Index>(cs.constraint->getCoDimension());
-    if (closure_rank(system, start) < rank) {
+    setup.constrained = statespaces::make_constrained(pattern, req.goal, ck, box, req.numerical_jacobian, 2.5 * req.resolution);
+    setup.space = setup.constrained.space;
+    setup.si = setup.constrained.si;
+    setup.reader = statespaces::constrained_reader();
+    const auto rank = static_cast<Eigen::Index>(setup.constrained.constraint->getCoDimension());
+    if (closure_rank(*system, start) < rank) {
       // Flat (or another singular state): the Jacobian loses rank, charts cannot be anchored
       // and projections may flip branches; plan from a nearby regular state instead.
-      prefix = lead_in(system, start, req.goal, rank, req.waypoint_step);
-      if (prefix.empty()) throw std::invalid_argument("plan: no closed way out of the singular start state");
+      setup.prefix = lead_in(*system, start, req.goal, rank, req.waypoint_step);
+      if (setup.prefix.empty()) throw std::invalid_argument("plan: no closed way out of the singular start state");
     }
   }
-  si->setStateValidityChecker(std::make_shared<statespaces::FoldValidityChecker>(si, validity, reader));
-  for (std::size_t i = 1; i < prefix.size(); ++i)
-    if (!validity->valid(prefix[i])) {
-      result.message = "the way out of the start state collides";
-      return result;
-    }
+  setup.si->setStateValidityChecker(std::make_shared<statespaces::FoldValidityChecker>(setup.si, validity, setup.reader));
+  for (std::size_t i = 1; i < setup.prefix.size() && setup.blocked.empty(); ++i)
+    if (!validity->valid(setup.prefix[i])) setup.blocked = "the way out of the start state collides";
+  return setup;
+}
 
-  og::SimpleSetup ss(si);
-  ss.setPlanner(make_planner(req.planner, si));
-  ob::ScopedState<> s(space), g(space);
+std::optional<std::vector<FoldState>> path_waypoints(const PlanSetup& setup, og::PathGeometric path, const PlanRequest& req,
+                                                     bool to_goal, std::string* why) {
+  // The path's states, densified along the space's own interpolation: single-vertex segments
+  // are linear in the active angles; constrained ones follow the manifold (OMPL's geodesic).
+  std::vector<FoldState> states;
+  const auto& sv = setup.single_vertex;
   if (sv) {
-    sv->from_fold_state(prefix.back(), s.get());
-    if (!sv->from_fold_state(req.goal, g.get()))
-      throw std::invalid_argument("plan: the goal is a singular state of the single-vertex space (try --space projected)");
+    ob::State* tmp = setup.si->allocState();
+    for (unsigned int i = 0; i < static_cast<unsigned int>(path.getStateCount()); ++i) {
+      FoldState f;
+      if (i > 0) {
+        const FoldState a = sv->to_fold_state(path.getState(i - 1)), b = sv->to_fold_state(path.getState(i));
+        const int parts = std::max(1, static_cast<int>(std::ceil((b.angles - a.angles).cwiseAbs().maxCoeff() / req.waypoint_step)));
+        for (int k = 1; k < parts; ++k) {
+          sv->interpolate(path.getState(i - 1), path.getState(i), static_cast<double>(k) / parts, tmp);
+          if (!setup.reader(tmp, f)) break;
+          states.push_back(f);
+        }
+      }
+      if (setup.reader(path.getState(i), f)) states.push_back(f);
+    }
+    setup.si->freeState(tmp);
   } else {
-    s->as<ob::ConstrainedStateSpace::StateType>()->copy(prefix.back().angles);
-    g->as<ob::ConstrainedStateSpace::StateType>()->copy(req.goal.angles);
+    path.interpolate();
+    for (unsigned int i = 0; i < static_cast<unsigned int>(path.getStateCount()); ++i) {
+      FoldState f;
+      setup.reader(path.getState(i), f);
+      states.push_back(f);
+    }
   }
-  ss.setStartAndGoalStates(s, g, 1e-9);
-  if (kind == SpaceKind::Atlas || kind == SpaceKind::TangentBundle) {
-    auto atlas = std::static_pointer_cast<ob::AtlasStateSpace>(cs.space);
-    atlas->anchorChart(s.get());
-    atlas->anchorChart(g.get());
+  std::vector<FoldState> full = setup.prefix;
+  full.insert(full.end(), states.begin() + (states.empty() ? 0 : 1), states.end());
+  if (to_goal && (full.size() < 2 || (full.back().angles - req.goal.angles).cwiseAbs().maxCoeff() > 1e-6))
+    full.push_back(req.goal);
+  auto dense = densify(*setup.system, full, req.waypoint_step);
+  if (!dense && why) *why = "the planned path jumps (interpolation left the manifold)";
+  return dense;
+}
+
+geometry::FoldSequence plan_sequence(const PlanRequest& req, const PlanSetup& setup, const std::vector<FoldState>& waypoints) {
+  const geometry::CreasePattern& pattern = *req.pattern;
+  geometry::FoldSequence seq = geometry::path_sequence(pattern, waypoints, req.velocity, pattern.title());
+  if (!req.start_sequence.events.empty()) {
+    // path_sequence starts from the flat sheet: its first event (flat → start) is replaced by
+    // the start's own sequence.
+    geometry::FoldSequence joined = req.start_sequence;
+    const bool start_flat = setup.start.angles.cwiseAbs().maxCoeff() == 0.0;
+    for (std::size_t e = start_flat ? 0 : 1; e < seq.events.size(); ++e) joined.events.push_back(seq.events[e]);
+    for (std::size_t e = 0; e < joined.events.size(); ++e) joined.events[e].number = static_cast<int>(e) + 1;
+    joined.title = seq.title;
+    seq = std::move(joined);
   }
+  return seq;
+}
+
+PlanResult plan(const PlanRequest& req) {
+  if (!req.pattern) throw std::invalid_argument("plan: no pattern");
+  if (!(req.time > 0.0) || !std::isfinite(req.time)) throw std::invalid_argument("plan: the time limit must be positive");
+  if (req.quiet) ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  ompl::RNG::setSeed(std::max(1u, req.seed));
+
+  const PlanSetup setup = make_plan_setup(req);
+  const geometry::CreasePattern& pattern = *req.pattern;
+  PlanResult result;
+  result.planner = req.planner;
+  result.space = setup.space_name;
+  if (!setup.blocked.empty()) {
+    result.message = setup.blocked;
+    return result;
+  }
+
+  og::SimpleSetup ss(setup.si);
+  ss.setPlanner(make_planner(req.planner, setup.si));
+  setup.set_start_and_goal(ss, req.goal);
   ss.setup();
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -225,50 +319,16 @@ PlanResult plan(const PlanRequest& req) {
   }
   og::PathGeometric path = ss.getSolutionPath();
   if (req.simplify) {
-    og::PathSimplifier simplifier(si);
+    og::PathSimplifier simplifier(setup.si);
     simplifier.reduceVertices(path);
     simplifier.shortcutPath(path);
   }
-
-  // The path's states, densified along the space's own interpolation: single-vertex segments
-  // are linear in the active angles; constrained ones follow the manifold (OMPL's geodesic).
-  std::vector<FoldState> states;
-  if (sv) {
-    ob::State* tmp = si->allocState();
-    for (unsigned int i = 0; i < static_cast<unsigned int>(path.getStateCount()); ++i) {
-      FoldState f;
-      if (i > 0) {
-        const FoldState a = sv->to_fold_state(path.getState(i - 1)), b = sv->to_fold_state(path.getState(i));
-        const int parts = std::max(1, static_cast<int>(std::ceil((b.angles - a.angles).cwiseAbs().maxCoeff() / req.waypoint_step)));
-        for (int k = 1; k < parts; ++k) {
-          sv->interpolate(path.getState(i - 1), path.getState(i), static_cast<double>(k) / parts, tmp);
-          if (!reader(tmp, f)) break;
-          states.push_back(f);
-        }
-      }
-      if (reader(path.getState(i), f)) states.push_back(f);
-    }
-    si->freeState(tmp);
-  } else {
-    path.interpolate();
-    for (unsigned int i = 0; i < static_cast<unsigned int>(path.getStateCount()); ++i) {
-      FoldState f;
-      reader(path.getState(i), f);
-      states.push_back(f);
-    }
-  }
-  std::vector<FoldState> full = prefix;
-  full.insert(full.end(), states.begin() + (states.empty() ? 0 : 1), states.end());
-  if (full.size() < 2 || (full.back().angles - req.goal.angles).cwiseAbs().maxCoeff() > 1e-6) full.push_back(req.goal);
-  const auto dense = densify(system, full, req.waypoint_step);
-  if (!dense) {
-    result.message = "the planned path jumps (interpolation left the manifold)";
-    return result;
-  }
+  const auto dense = path_waypoints(setup, path, req, true, &result.message);
+  if (!dense) return result;
   // Every path is checked: closed everywhere, no jumps, from the start to the goal.
   result.waypoints = *dense;
   for (std::size_t i = 0; i < result.waypoints.size(); ++i) {
-    result.max_closure_error = std::max(result.max_closure_error, system.max_error(result.waypoints[i]));
+    result.max_closure_error = std::max(result.max_closure_error, setup.system->max_error(result.waypoints[i]));
     if (i > 0) result.path_length += (result.waypoints[i].angles - result.waypoints[i - 1].angles).norm();
   }
   if (result.max_closure_error > 1e-6) {
@@ -276,22 +336,11 @@ PlanResult plan(const PlanRequest& req) {
     return result;
   }
 
-  geometry::FoldSequence seq = geometry::path_sequence(pattern, result.waypoints, req.velocity, pattern.title());
-  if (!req.start_sequence.events.empty()) {
-    // path_sequence starts from the flat sheet: its first event (flat → start) is replaced by
-    // the start's own sequence.
-    geometry::FoldSequence joined = req.start_sequence;
-    const bool start_flat = start.angles.cwiseAbs().maxCoeff() == 0.0;
-    for (std::size_t e = start_flat ? 0 : 1; e < seq.events.size(); ++e) joined.events.push_back(seq.events[e]);
-    for (std::size_t e = 0; e < joined.events.size(); ++e) joined.events[e].number = static_cast<int>(e) + 1;
-    joined.title = seq.title;
-    seq = std::move(joined);
-  }
-  result.sequence = seq;
+  result.sequence = plan_sequence(req, setup, result.waypoints);
   if (req.replay) {
     simulation::SimulationOptions so;
     so.collisions = req.collisions;
-    result.replay = simulation::simulate(pattern, seq, so);
+    result.replay = simulation::simulate(pattern, result.sequence, so);
     result.max_closure_error = std::max(result.max_closure_error, result.replay->max_closure_error);
     if (!result.replay->ok) {
       result.message = "the simulator rejects the plan: " +

@@ -61,7 +61,8 @@ TEST(Cli, EveryGeneratorValidates) {
       {"miura", "--rows", "4", "--cols", "4", "--angle", "70"},
       {"waterbomb", "--units", "3", "--rows", "2"},
       {"boat"},
-      {"cube-sheet", "--cubes", "3"}};
+      {"cube-sheet", "--cubes", "3"},
+      {"square-twist", "--twist", "30"}};
   for (const auto& k : kinds) {
     std::vector<std::string> args = {"generate"};
     args.insert(args.end(), k.begin(), k.end());

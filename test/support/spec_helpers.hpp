@@ -1,4 +1,5 @@
 #pragma once
+#include "foldkit/geometry/generators.hpp"
 #include <cmath>
 #include <random>
 #include <vector>
@@ -44,14 +45,7 @@ inline geometry::PatternSpec straight_crease_through_vertex() {
   return s;
 }
 
-// n random positive sector angles summing to 2π, none below `smallest`.
-inline std::vector<double> random_sectors(int n, std::mt19937& rng, double smallest = 0.05) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<double> s(static_cast<std::size_t>(n));
-  double sum = 0;
-  for (double& x : s) sum += (x = u(rng));
-  for (double& x : s) x = smallest + x / sum * (2 * M_PI - n * smallest);
-  return s;
-}
+// n random positive sector angles summing to 2π, none below `smallest` (default 0.05).
+using geometry::generators::random_sectors;
 
 }  // namespace foldkit::test

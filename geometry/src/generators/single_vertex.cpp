@@ -67,3 +67,19 @@ PatternSpec single_vertex(const std::vector<double>& sectors, double radius, Joi
 }
 
 }  // namespace foldkit::geometry::generators
+
+namespace foldkit::geometry::generators {
+
+std::vector<double> random_sectors(int n, std::mt19937& rng, double smallest) {
+  if (n < 3) detail::reject("random_sectors", "needs at least 3 sectors (got " + std::to_string(n) + ")");
+  if (!(smallest >= 0.0) || !(n * smallest < 2 * kPi))
+    detail::reject("random_sectors", "the smallest sector times the degree must stay below 2π");
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> s(static_cast<std::size_t>(n));
+  double sum = 0.0;
+  for (double& x : s) sum += (x = u(rng));
+  for (double& x : s) x = smallest + x / sum * (2 * kPi - n * smallest);
+  return s;
+}
+
+}  // namespace foldkit::geometry::generators

@@ -1,4 +1,5 @@
 #pragma once
+#include <random>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,11 @@ struct JointDefaults {
 // circle of `radius` through the crease ends, with extra corners on the circle splitting every
 // sector wider than π/2 into equal arcs, so that no triangle spans more than π/2 at the vertex.
 PatternSpec single_vertex(const std::vector<double>& sectors, double radius = 1.0, JointDefaults j = {});
+
+// n positive sector angles summing to 2π, none below `smallest`: uniform weights drawn from
+// `rng`, scaled into what is left above n·smallest. std::invalid_argument unless n ≥ 3 and
+// n·smallest < 2π.
+std::vector<double> random_sectors(int n, std::mt19937& rng, double smallest = 0.05);
 
 // `panels` rectangles of panel_width × height in a row along +x, joined by parallel creases.
 PatternSpec strip(int panels, double panel_width = 1.0, double height = 1.0, JointDefaults j = {});
@@ -46,6 +52,14 @@ PatternSpec waterbomb(int units, int rows, JointDefaults j = {});
 // degree-4 vertices in series on it (bow A, middle C, stern B); bow is the distance from the
 // sheet's end to A and B.
 PatternSpec boat(double length = 4.0, double half_width = 1.0, double bow = 1.0, JointDefaults j = {});
+
+// The classic square twist: a central square of `side` (sides along x and y, centred on the
+// origin) whose four corners are degree-4 vertices; from each corner two pleats of length `pleat`
+// leave along the square's sides turned by `twist` (radians, (0, π/2)). Square sides valley,
+// pleats one valley and one mountain per corner (3 : 1), so parallel pleats of neighbouring corners
+// form the four pleats of the twist. Not rigidly foldable with this assignment.
+PatternSpec square_twist(double side = 1.0, double twist = 1.0471975511965976, double pleat = 1.0,
+                         JointDefaults j = {});
 
 // The sheet of Fig. 8a: `cubes` cube nets in a row, each a row of four tiles with a cap above and
 // below the second tile; the last tile of one net is hinged to the first tile of the next.

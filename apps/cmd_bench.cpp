@@ -1,0 +1,255 @@
+// foldkit bench: planners × built-in scenes through ompl::tools::Benchmark, one OMPL log per scene;
+// foldkit bench-merge: shard logs joined into one log set (docs/BENCHMARKING.md).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+#include <unistd.h>
+
+#include "cli_common.hpp"
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/planners/bench_suite.hpp"
+#include "foldkit/planners/planner_factory.hpp"
+
+namespace foldkit::apps {
+namespace {
+
+std::vector<std::string> split_list(const std::string& text, const char* option) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    if (item.empty()) throw UsageError(std::string(option) + " '" + text + "': empty item");
+    out.push_back(item);
+  }
+  if (out.empty()) throw UsageError(std::string(option) + " needs at least one item");
+  return out;
+}
+
+std::vector<double> parse_times(const std::string& text) {
+  std::vector<double> out;
+  for (const std::string& item : split_list(text, "--error-vs-time")) {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (*end != '\0' || !(v > 0.0) || !std::isfinite(v))
+      throw UsageError("--error-vs-time: '" + item + "' is not a positive number of seconds");
+    out.push_back(v);
+  }
+  return out;
+}
+
+std::pair<unsigned int, unsigned int> parse_shard(const std::string& text) {
+  unsigned int k = 0, n = 0;
+  char slash = 0, extra = 0;
+  std::istringstream in(text);
+  if (!(in >> k >> slash >> n) || slash != '/' || (in >> extra) || k < 1 || n < 1 || k > n)
+    throw UsageError("--shard '" + text + "': expected K/N with 1 <= K <= N");
+  return {k, n};
+}
+
+// A progress bar redrawn in place on a terminal; one line per scene otherwise (logs, CI).
+class Progress {
+ public:
+  Progress() : tty_(isatty(fileno(stderr)) != 0) {}
+  void operator()(const planners::BenchProgress& p) {
+    if (tty_) {
+      const int width = 30;
+      const int filled = p.total ? static_cast<int>(width * p.done / p.total) : width;
+      std::cerr << "\r[" << std::string(static_cast<std::size_t>(filled), '#')
+                << std::string(static_cast<std::size_t>(width - filled), ' ') << "] " << p.done << '/' << p.total
+                << " runs, " << std::fixed << std::setprecision(1) << p.elapsed << " s, " << p.scene
+                << (p.planner.empty() ? "" : " " + p.planner) << "\033[K" << std::flush;
+      if (p.done == p.total && p.scene_done) std::cerr << '\n';
+    } else if (p.scene_done) {
+      std::cerr << p.scene << ": " << p.done << '/' << p.total << " runs done, " << std::fixed << std::setprecision(1)
+                << p.elapsed << " s\n";
+    }
+  }
+
+ private:
+  bool tty_;
+};
+
+int list(bool json) {
+  nlohmann::json suites = nlohmann::json::array();
+  for (const auto& s : planners::bench_suites())
+    suites.push_back({{"name", s.name}, {"description", s.description}, {"scenes", s.scenes}, {"planners", s.planners}});
+  nlohmann::json sampling = planners::planner_names(), deterministic = planners::deterministic_planner_names();
+  if (json) {
+    print_json({{"suites", suites},
+                {"scenes", planners::bench_scene_names()},
+                {"planners", {{"sampling", sampling}, {"deterministic", deterministic}}}});
+    return kOk;
+  }
+  std::cerr << "suites:\n";
+  for (const auto& s : planners::bench_suites()) {
+    std::cerr << "  " << s.name << ": " << s.description << "\n    scenes:";
+    for (const auto& x : s.scenes) std::cerr << ' ' << x;
+    std::cerr << "\n    planners:";
+    for (const auto& x : s.planners) std::cerr << ' ' << x;
+    std::cerr << '\n';
+  }
+  std::cerr << "scenes (--scenes):";
+  for (const auto& x : planners::bench_scene_names()) std::cerr << ' ' << x;
+  std::cerr << "\nsampling planners (--planners):";
+  for (const auto& x : planners::planner_names()) std::cerr << ' ' << x;
+  std::cerr << "\ndeterministic planners (--planners):";
+  for (const auto& x : planners::deterministic_planner_names()) std::cerr << ' ' << x;
+  std::cerr << '\n';
+  return kOk;
+}
+
+}  // namespace
+
+Command add_bench(CLI::App& root) {
+  struct Options {
+    std::string suite, output, shard = "1/1", planners, scenes, error_vs_time;
+    double time = 1.0;
+    unsigned int runs = 10, seed = 1;
+    bool json = false, list = false, simplify = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* app = root.add_subcommand("bench", "Benchmark planners on built-in scenes (OMPL benchmark logs)");
+  app->add_option("suite", opt->suite, "Suite: quick or full (see --list)");
+  app->add_option("--time", opt->time, "Seconds per run")->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_option("--runs", opt->runs, "Runs per planner and scene (per time limit with --error-vs-time)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app->add_option("--shard", opt->shard, "Run shard K of N of the (scene, planner, run) list")->capture_default_str();
+  app->add_option("--seed", opt->seed, "Seed of the scenes' goals and of OMPL")->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_option("--planners", opt->planners, "Planners, comma-separated (default: the suite's)");
+  app->add_option("--scenes", opt->scenes, "Scenes, comma-separated (default: the suite's)");
+  app->add_option("--error-vs-time", opt->error_vs_time,
+                  "Time limits, comma-separated seconds: write DIR/error_vs_time.csv (error reached per limit) instead of logs");
+  app->add_flag("--simplify", opt->simplify,
+                "Simplify each solution (OMPL's simplifier, as foldkit plan does) before measuring it");
+  app->add_option("-o,--output", opt->output, "Output folder");
+  app->add_flag("--list", opt->list, "List suites, scenes and planners");
+  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  return {app, [opt]() -> int {
+            if (opt->list) return list(opt->json);
+            if (opt->suite.empty()) throw UsageError("name a suite (quick, full; see --list)");
+            if (opt->output.empty()) throw UsageError("-o DIR is required");
+            planners::BenchOptions o;
+            o.suite = opt->suite;
+            o.time = opt->time;
+            o.runs = opt->runs;
+            o.seed = opt->seed;
+            o.simplify = opt->simplify;
+            std::tie(o.shard, o.shards) = parse_shard(opt->shard);
+            if (!opt->planners.empty()) o.planners = split_list(opt->planners, "--planners");
+            if (!opt->scenes.empty()) o.scenes = split_list(opt->scenes, "--scenes");
+            o.output_dir = opt->output;
+            Progress progress;
+            o.progress = [&progress](const planners::BenchProgress& p) { progress(p); };
+            if (!opt->error_vs_time.empty()) {
+              const std::vector<double> limits = parse_times(opt->error_vs_time);
+              if (o.shards != 1) throw UsageError("--error-vs-time runs unsharded");
+              const auto rows = planners::run_error_vs_time(o, limits);
+              std::filesystem::create_directories(o.output_dir);
+              const std::string csv = (std::filesystem::path(o.output_dir) / "error_vs_time.csv").string();
+              io::write_file_atomic(csv, planners::error_vs_time_csv(rows));
+              std::cerr << "wrote " << csv << " (" << rows.size() << " runs)\n";
+              if (opt->json) {
+                std::size_t exact = 0;
+                for (const auto& r : rows) exact += r.solution == "exact";
+                print_json({{"suite", o.suite}, {"csv", csv}, {"runs", rows.size()}, {"exact", exact}, {"time_limits", limits}});
+              }
+              return kOk;
+            }
+            const auto results = planners::run_bench(o);
+            std::size_t runs = 0, solved = 0;
+            nlohmann::json scenes = nlohmann::json::array(), logs = nlohmann::json::array();
+            for (const auto& r : results) {
+              runs += r.runs;
+              solved += r.solved;
+              if (r.log.empty()) continue;
+              nlohmann::json per = nlohmann::json::object();
+              for (const auto& [name, rs] : r.planners) per[name] = {{"runs", rs.first}, {"solved", rs.second}};
+              scenes.push_back({{"scene", r.scene}, {"log", r.log}, {"runs", r.runs}, {"solved", r.solved}, {"planners", per}});
+              logs.push_back(r.log);
+              std::cerr << r.scene << ": " << r.solved << '/' << r.runs << " solved -> " << r.log << '\n';
+            }
+            if (opt->json)
+              print_json({{"suite", o.suite},
+                          {"shard", std::to_string(o.shard) + "/" + std::to_string(o.shards)},
+                          {"time", o.time},
+                          {"seed", o.seed},
+                          {"runs", runs},
+                          {"solved", solved},
+                          {"scenes", scenes},
+                          {"logs", logs}});
+            return kOk;
+          }};
+}
+
+Command add_bench_merge(CLI::App& root) {
+  struct Options {
+    std::vector<std::string> inputs;
+    std::string output;
+    bool json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* app = root.add_subcommand("bench-merge", "Join the shard logs of foldkit bench into one log per scene");
+  app->add_option("dirs", opt->inputs, "Folders holding shard logs (*.log)")->required();
+  app->add_option("-o,--output", opt->output, "Output folder")->required();
+  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  return {app, [opt]() -> int {
+            std::map<std::string, std::vector<std::pair<std::string, planners::BenchLog>>> by_scene;
+            for (const std::string& dir : opt->inputs) {
+              if (!std::filesystem::is_directory(dir)) throw UsageError(dir + " is not a folder");
+              std::vector<std::string> files;
+              for (const auto& e : std::filesystem::directory_iterator(dir))
+                if (e.is_regular_file() && e.path().extension() == ".log") files.push_back(e.path().string());
+              std::sort(files.begin(), files.end());
+              for (const auto& f : files) {
+                planners::BenchLog log;
+                try {
+                  log = planners::parse_bench_log(io::read_file(f), f);
+                } catch (const std::invalid_argument& e) {
+                  std::cerr << e.what() << '\n';
+                  return kInvalidInput;
+                }
+                by_scene[log.experiment].emplace_back(f, std::move(log));
+              }
+            }
+            if (by_scene.empty()) throw UsageError("no .log files in the given folders");
+            std::filesystem::create_directories(opt->output);
+            nlohmann::json scenes = nlohmann::json::array();
+            std::vector<std::pair<std::string, std::string>> outputs;
+            for (const auto& [scene, entries] : by_scene) {
+              std::vector<planners::BenchLog> logs;
+              std::vector<std::string> files;
+              for (const auto& [f, l] : entries) {
+                files.push_back(f);
+                logs.push_back(l);
+              }
+              planners::BenchLog merged;
+              try {
+                merged = planners::merge_bench_logs(logs, files);
+              } catch (const std::invalid_argument& e) {
+                std::cerr << "foldkit bench-merge: " << e.what() << '\n';
+                return kInvalidInput;
+              }
+              const std::string out = (std::filesystem::path(opt->output) / (scene + ".log")).string();
+              outputs.emplace_back(out, planners::write_bench_log(merged));
+              std::size_t runs = 0;
+              for (const auto& p : merged.planners) runs += p.runs.size();
+              scenes.push_back({{"scene", scene}, {"log", out}, {"shards", files.size()}, {"runs", runs}});
+            }
+            // Every scene checked before any file is written: a refused merge leaves nothing behind.
+            for (const auto& [path, text] : outputs) {
+              io::write_file_atomic(path, text);
+              std::cerr << "wrote " << path << '\n';
+            }
+            if (opt->json) print_json({{"scenes", scenes}});
+            return kOk;
+          }};
+}
+
+}  // namespace foldkit::apps

@@ -1,0 +1,130 @@
+// foldkit carpenter: Carpenter's rule — straighten an open planar chain, convexify a closed one
+// (docs/CARPENTER.md), or flatten a single-vertex crease pattern on the sphere.
+#include <iostream>
+#include <stdexcept>
+
+#include "cli_common.hpp"
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/cmml.hpp"
+#include "foldkit/io/parse_error.hpp"
+#include "foldkit/planners/carpenter.hpp"
+#include "foldkit/planners/carpenter_spherical.hpp"
+
+namespace foldkit::apps {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+struct Options {
+  std::string chain, output, frames_csv, state;
+  bool closed = false, fold = false, json = false;
+  std::size_t max_steps = planners::CarpenterOptions{}.max_steps;
+};
+
+// A single-vertex crease pattern (PMML or FOLD) in the state of --state (or the FOLD file's own
+// fold angles): flattened on the sphere by the spherical Carpenter's rule.
+int run_spherical(const Options& opt) {
+  if (opt.closed) throw UsageError("--closed is for planar chains; a single vertex is always a closed spherical chain");
+  if (!opt.frames_csv.empty()) throw UsageError("--frames-csv is for planar chains");
+  LoadedPattern loaded = load_pattern(opt.chain);
+  geometry::FoldState folded = loaded.state ? *loaded.state : geometry::FoldState::flat(loaded.pattern);
+  if (!opt.state.empty()) folded = state_from(loaded.pattern, opt.state);
+  else if (!loaded.state) throw UsageError(opt.chain + ": a single vertex needs its folded state: --state FOLDED.cmml");
+  const planners::FlattenResult r = [&] {
+    try {
+      return planners::flatten_single_vertex(loaded.pattern, folded);
+    } catch (const std::invalid_argument& e) {
+      throw io::ParseError(opt.chain, 0, e.what());
+    }
+  }();
+  if (!opt.output.empty()) {
+    if (!ends_with(opt.output, ".cmml")) throw UsageError(opt.output + ": a single vertex's output is CMML (.cmml)");
+    io::write_file_atomic(opt.output, io::write_cmml(r.folding));
+  }
+  std::cerr << opt.chain << ": " << (r.flat ? "flattened" : "not flattened") << " in " << r.steps << " steps: " << r.message
+            << '\n';
+  if (opt.json)
+    print_json({{"spherical", true},
+                {"steps", r.steps},
+                {"frames", r.frames.size()},
+                {"max_length_error", r.max_sector_error},
+                {"min_distance_growth", r.min_distance_growth},
+                {"max_closure_error", r.max_closure_error},
+                {"flat", r.flat}});
+  return r.flat ? kOk : kNoPlan;
+}
+
+int run_planar(const Options& opt) {
+  if (!opt.output.empty() && !ends_with(opt.output, ".cmml") && !ends_with(opt.output, ".json") &&
+      !ends_with(opt.output, ".csv"))
+    throw UsageError(opt.output + ": unknown output format (expected .cmml, .json or .csv)");
+  planners::PlanarChain chain{planners::parse_chain_points(io::read_file(opt.chain), opt.chain), opt.closed};
+  try {
+    planners::check_simple_chain(chain);
+  } catch (const std::invalid_argument& e) {
+    throw io::ParseError(opt.chain, 0, e.what());
+  }
+  planners::CarpenterOptions options;
+  options.max_steps = opt.max_steps;
+  const planners::CarpenterResult r = planners::carpenter_planar(chain, options);
+  const std::vector<planners::Frame2> frames = opt.fold ? planners::reversed(r.frames) : r.frames;
+  if (!opt.output.empty()) {
+    std::string text;
+    if (ends_with(opt.output, ".cmml"))
+      text = io::write_cmml(planners::turning_angle_sequence(frames, opt.closed, opt.chain));
+    else if (ends_with(opt.output, ".json"))
+      text = planners::frames_json(frames, opt.closed);
+    else
+      text = planners::frames_csv(frames);
+    io::write_file_atomic(opt.output, text);
+  }
+  if (!opt.frames_csv.empty()) io::write_file_atomic(opt.frames_csv, planners::frames_csv(frames));
+  const char* goal = opt.closed ? "convex" : "straight";
+  if (r.done)
+    std::cerr << opt.chain << ": " << goal << " after " << r.steps << " steps, " << r.frames.size() << " frames ("
+              << r.seconds << " s)\n";
+  else
+    std::cerr << opt.chain << ": not " << goal << ": " << r.stop_reason << '\n';
+  if (opt.json)
+    print_json({{"closed", opt.closed},
+                {"vertices", chain.points.size()},
+                {"steps", r.steps},
+                {"frames", r.frames.size()},
+                {"lp_solves", r.lp_solves},
+                {"time", r.seconds},
+                {"max_length_error", r.max_length_error},
+                {"min_distance_growth", r.min_distance_growth},
+                {goal, r.done}});
+  return r.done ? kOk : kNoPlan;
+}
+
+}  // namespace
+
+Command add_carpenter(CLI::App& root) {
+  auto opt = std::make_shared<Options>();
+  CLI::App* app = root.add_subcommand(
+      "carpenter", "Carpenter's rule: straighten a planar chain, convexify a polygon, or flatten a single vertex");
+  app->add_option("chain", opt->chain,
+                  "Chain file: one 'x y' per line ('#' comments); or a single-vertex crease pattern (.pmml, .fold)")
+      ->required();
+  app->add_flag("--closed", opt->closed, "The chain is a polygon (last point joins the first): convexify it");
+  app->add_option("-o,--output", opt->output,
+                  "Write the motion: .cmml (turning angles, docs/CARPENTER.md), .json or .csv (frames)");
+  app->add_option("--frames-csv", opt->frames_csv, "Also write the frames as CSV: frame,vertex,x,y");
+  app->add_flag("--fold", opt->fold, "Write the frames backwards: the folding motion, straight (convex) to the input");
+  app->add_option("--state", opt->state, "Single vertex: CMML whose end state is the folded input");
+  app->add_option("--max-steps", opt->max_steps, "Stop after this many steps (exit 4)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  return {app, [opt] {
+            const FileKind kind = kind_of(opt->chain);
+            if (kind == FileKind::Pmml || kind == FileKind::Fold) return run_spherical(*opt);
+            if (!opt->state.empty()) throw UsageError("--state is for a single-vertex crease pattern (.pmml, .fold)");
+            return run_planar(*opt);
+          }};
+}
+
+}  // namespace foldkit::apps

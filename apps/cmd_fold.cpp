@@ -1,0 +1,99 @@
+// foldkit fold: fold all creases together by projected velocities (Tachi), closure kept to 1e-10.
+#include <cmath>
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/cmml.hpp"
+#include "foldkit/io/parse_error.hpp"
+#include "foldkit/planners/projected_folding.hpp"
+
+namespace foldkit::apps {
+namespace {
+
+// "ID:VALUE,ID:VALUE,…" over the assignment's signs: each named crease gets VALUE (any finite
+// number; its sign says mountain or valley, its size how fast relative to the others).
+Eigen::VectorXd parse_velocity(const geometry::CreasePattern& pattern, const std::string& text) {
+  Eigen::VectorXd w = planners::assignment_velocity(pattern);
+  for (const auto& [j, value] :
+       parse_joint_values(pattern, text, "--velocity", "ID:VALUE", [](double v) { return std::isfinite(v); }, "a number"))
+    w[j] = value;
+  return w;
+}
+
+}  // namespace
+
+Command add_fold(CLI::App& root) {
+  struct Options {
+    std::string pattern, output, velocity;
+    double fraction = 0.9, step = 0.01;
+    int max_steps = 20000;
+    bool no_collision = false, partial = false, json = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* app = root.add_subcommand(
+      "fold", "Fold all creases together: desired velocity projected onto the closure constraint, Newton-corrected");
+  app->add_option("pattern", opt->pattern, "Crease pattern (.pmml or .fold) with a mountain/valley assignment")->required();
+  app->add_option("--fraction", opt->fraction, "Stop when the largest fold angle reaches this fraction of 180 degrees")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  app->add_option("--step", opt->step, "Largest change of any crease per step, radians")
+      ->check(CLI::Range(1e-6, 0.5))
+      ->capture_default_str();
+  app->add_option("--max-steps", opt->max_steps, "Give up after this many steps")->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_option("--velocity", opt->velocity,
+                  "Desired velocity as ID:VALUE,… over the assignment's signs (mountain +1, valley -1, others 0)");
+  app->add_flag("--no-collision", opt->no_collision, "Closure only: no self-collision checks (folding or replay)");
+  app->add_flag("--partial", opt->partial, "When the target is not reached, still write the path up to the stop");
+  app->add_option("-o,--output", opt->output, "Output CMML")->required();
+  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  return {app, [opt] {
+            if (kind_of(opt->output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt->output + "'");
+            if (!(opt->fraction > 0.0)) throw UsageError("--fraction must be greater than 0");
+            const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
+            planners::ProjectedFoldingOptions o;
+            if (!opt->velocity.empty()) o.velocity = parse_velocity(pattern, opt->velocity);
+            o.target_fraction = opt->fraction;
+            o.max_step = opt->step;
+            o.max_steps = opt->max_steps;
+            o.collisions = !opt->no_collision;
+            planners::ProjectedFoldingResult r;
+            try {
+              r = planners::fold_projected(pattern, o);
+            } catch (const std::invalid_argument& e) {
+              throw io::ParseError(opt->pattern, 0, e.what());
+            }
+            const bool reached = r.stop == planners::FoldStop::Reached;
+            const bool replay_ok = r.replay && r.replay->ok;
+            std::cerr << planners::to_string(r.stop) << ": " << r.message << " (fraction " << r.fraction << ", " << r.steps
+                      << " steps, " << r.newton_iterations << " Newton iterations, closure error " << r.max_closure_error
+                      << " rad, " << r.time << " s)\n";
+            const bool write = replay_ok && (reached || opt->partial);
+            if (write) {
+              io::write_file_atomic(opt->output, io::write_cmml(r.sequence));
+              std::cerr << "wrote " << opt->output << '\n';
+            }
+            if (opt->json) {
+              nlohmann::json j{{"stop", planners::to_string(r.stop)},
+                               {"reached", reached},
+                               {"fraction", r.fraction},
+                               {"target", opt->fraction},
+                               {"steps", r.steps},
+                               {"newton_iterations", r.newton_iterations},
+                               {"max_closure_error", r.max_closure_error},
+                               {"rank", r.rank},
+                               {"dof", r.dof},
+                               {"min_pivot_ratio", r.min_pivot_ratio},
+                               {"time", r.time},
+                               {"replay_ok", r.replay ? nlohmann::json(replay_ok) : nlohmann::json(nullptr)},
+                               {"message", r.message},
+                               {"output", write ? nlohmann::json(opt->output) : nlohmann::json(nullptr)}};
+              if (r.replay) j["replay_max_closure_error"] = r.replay->max_closure_error;
+              print_json(j);
+            }
+            if (r.replay && !r.replay->ok) return kInvalidSequence;
+            return reached ? kOk : kNoPlan;
+          }};
+}
+
+}  // namespace foldkit::apps

@@ -1,0 +1,80 @@
+// Projected-velocity folding of n × n Miura-ori from flat to 90% of 180°, side by side with the
+// generic way to the same goal: RRTConnect in OMPL's ProjectedStateSpace on the closure
+// constraint (planners::plan, SpaceKind::Projected, analytic Jacobian), goal = the state the
+// projected folding ends in. Both check self-collisions; neither replays in the simulator (that
+// cost is the same for both and is measured in bench_simulation). Counters: steps (or waypoints),
+// the largest closure error of the path, solved (RRT within its time limit).
+#include <benchmark/benchmark.h>
+
+#include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/generators.hpp"
+#include "foldkit/planners/plan.hpp"
+#include "foldkit/planners/projected_folding.hpp"
+
+namespace {
+
+namespace geo = foldkit::geometry;
+namespace pl = foldkit::planners;
+
+constexpr double kFraction = 0.9;
+
+pl::ProjectedFoldingOptions folding_options() {
+  pl::ProjectedFoldingOptions o;
+  o.target_fraction = kFraction;
+  o.replay = false;
+  return o;
+}
+
+void BM_ProjectedFoldingMiura(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const geo::CreasePattern p = geo::build_or_throw(geo::generators::miura(n, n));
+  pl::ProjectedFoldingResult r;
+  for (auto _ : state) {
+    r = pl::fold_projected(p, folding_options());
+    benchmark::DoNotOptimize(r.states.data());
+  }
+  if (r.stop != pl::FoldStop::Reached) state.SkipWithError(r.message.c_str());
+  state.counters["creases"] = static_cast<double>(p.joints().size());
+  state.counters["steps"] = r.steps;
+  state.counters["newton_iterations"] = r.newton_iterations;
+  state.counters["max_closure_error"] = r.max_closure_error;
+  state.counters["fraction"] = r.fraction;
+}
+BENCHMARK(BM_ProjectedFoldingMiura)->Arg(4)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond);
+
+// One planner run per size (OMPL is seeded once per process, so repetitions would not repeat).
+// Second argument: the planner's time limit, seconds.
+void BM_RRTConnectProjectedMiura(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const geo::CreasePattern p = geo::build_or_throw(geo::generators::miura(n, n));
+  const pl::ProjectedFoldingResult folded = pl::fold_projected(p, folding_options());
+  pl::PlanRequest req;
+  req.pattern = &p;
+  req.goal = folded.states.back();
+  req.space = pl::SpaceKind::Projected;
+  req.planner = "RRTConnect";
+  req.time = static_cast<double>(state.range(1));
+  req.seed = 1;
+  req.replay = false;
+  req.search_margin = 0.1;  // docs/PLANNING.md: without it RRTConnect wanders onto other Miura branches
+  pl::PlanResult r;
+  for (auto _ : state) r = pl::plan(req);
+  state.counters["creases"] = static_cast<double>(p.joints().size());
+  state.counters["solved"] = r.solved ? 1 : 0;
+  state.counters["planner_time_s"] = r.time;
+  state.counters["waypoints"] = static_cast<double>(r.waypoints.size());
+  state.counters["max_closure_error"] = r.solved ? r.max_closure_error : -1.0;
+  if (!r.solved) state.SetLabel("not solved: " + r.message);
+}
+// Not 20 × 20: one OMPL projection (statespaces::ClosureConstraint::project, dense QR of the
+// 1083 × 760 Jacobian) takes about 0.55 s there, and RRTConnect's geodesic interpolation needs
+// many per extension; a run with a 60 s limit had not returned after 15 min (docs/PROJECTED_FOLDING.md).
+BENCHMARK(BM_RRTConnectProjectedMiura)
+    ->Args({4, 30})
+    ->Args({10, 60})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

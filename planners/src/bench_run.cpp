@@ -1,0 +1,382 @@
+// Runs a suite: one ompl::tools::Benchmark per (scene, planner) of the shard's work list, our
+// properties added after every run (setPostRunEvent), the planners' logs joined into one log per
+// scene.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/tools/benchmark/Benchmark.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/planners/bench_suite.hpp"
+#include "foldkit/planners/plan_setup.hpp"
+#include "foldkit/planners/planner_factory.hpp"
+#include "foldkit/simulation/simulate.hpp"
+
+namespace foldkit::planners {
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+using geometry::FoldState;
+
+std::vector<BenchWorkItem> bench_work(std::size_t scenes, std::size_t planners, unsigned int runs, unsigned int shard,
+                                      unsigned int shards) {
+  if (shards == 0 || shard == 0 || shard > shards)
+    throw std::invalid_argument("shard " + std::to_string(shard) + "/" + std::to_string(shards) + " is not K/N with 1 ≤ K ≤ N");
+  std::vector<BenchWorkItem> items;
+  std::size_t i = 0;
+  for (std::size_t s = 0; s < scenes; ++s)
+    for (std::size_t p = 0; p < planners; ++p)
+      for (unsigned int r = 0; r < runs; ++r, ++i)
+        if (i % shards == shard - 1) items.push_back({s, p, r});
+  return items;
+}
+
+PathMetrics measure_path(const BenchScene& scene, const std::vector<FoldState>& waypoints) {
+  PathMetrics m;
+  if (waypoints.empty()) return m;
+  const geometry::CreasePattern& p = *scene.pattern;
+  const geometry::ClosureSystem system(p);
+  for (std::size_t i = 0; i < waypoints.size(); ++i) {
+    m.max_closure_error = std::max(m.max_closure_error, system.max_error(waypoints[i]));
+    if (i > 0) m.path_length += (waypoints[i].angles - waypoints[i - 1].angles).norm();
+  }
+  m.final_closure_error = system.max_error(waypoints.back());
+  m.goal_distance = (waypoints.back().angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
+  // Clearance on at most 65 states along the path (its ends included): FCL distances are costly.
+  std::vector<FoldState> sample;
+  const std::size_t stride = std::max<std::size_t>(1, (waypoints.size() + 63) / 64);
+  for (std::size_t i = 0; i < waypoints.size(); i += stride) sample.push_back(waypoints[i]);
+  if (sample.size() == 0 || (sample.back().angles - waypoints.back().angles).cwiseAbs().maxCoeff() > 0.0)
+    sample.push_back(waypoints.back());
+  m.min_clearance = min_clearance(p, sample);
+  const geometry::FoldSequence seq = geometry::path_sequence(p, waypoints, scene.request.velocity, p.title());
+  m.cmml_events = seq.events.size();
+  simulation::SimulationOptions so;
+  so.collisions = true;
+  const simulation::SimulationReport replay = simulation::simulate(p, seq, so);
+  m.replay_collisions = replay.collision_count;
+  m.replay_ok = replay.ok;
+  return m;
+}
+
+namespace {
+
+std::string num(double v) {
+  if (!std::isfinite(v)) return "";  // ompl_benchmark_statistics stores an empty value as NULL
+  std::ostringstream s;
+  s.precision(12);
+  s << v;
+  return s.str();
+}
+
+// OMPL records some run properties only for some runs (the solution's, when there is one); the
+// list is fixed here so that every log of a planner, and so every shard, has the same columns.
+std::vector<std::string> ompl_run_properties(bool simplify) {
+  std::vector<std::string> p = {
+      "approximate solution BOOLEAN", "correct solution BOOLEAN", "correct solution strict BOOLEAN",
+      "graph motions INTEGER", "graph states INTEGER", "memory REAL", "solution clearance REAL",
+      "solution difference REAL", "solution length REAL", "solution segments INTEGER", "solution smoothness REAL",
+      "solved BOOLEAN", "status ENUM", "time REAL", "valid segment fraction REAL", "approx goal distance REAL"};
+  if (simplify)
+    for (const char* s : {"simplification time REAL", "simplified correct solution BOOLEAN",
+                          "simplified correct solution strict BOOLEAN", "simplified solution clearance REAL",
+                          "simplified solution length REAL", "simplified solution segments INTEGER",
+                          "simplified solution smoothness REAL"})
+      p.emplace_back(s);
+  return p;
+}
+
+const std::vector<std::string>& our_run_properties() {
+  static const std::vector<std::string> p = {
+      "run index INTEGER",         "final closure error REAL", "max closure error REAL", "min clearance REAL",
+      "replay collisions INTEGER", "replay valid BOOLEAN",     "joint path length REAL", "cmml events INTEGER",
+      "goal distance REAL",        "path jumps BOOLEAN"};
+  return p;
+}
+
+void normalise_properties(BenchLog::Planner& p, bool simplify) {
+  std::vector<std::string> all = p.properties;
+  const std::vector<std::string> ompl = ompl_run_properties(simplify);
+  for (const auto* list : {&ompl, &our_run_properties()})
+    for (const auto& name : *list)
+      if (std::find(all.begin(), all.end(), name) == all.end()) all.push_back(name);
+  std::sort(all.begin(), all.end());
+  for (auto& run : p.runs) {
+    std::vector<std::string> values;
+    for (const auto& name : all) {
+      const auto it = std::find(p.properties.begin(), p.properties.end(), name);
+      values.push_back(it == p.properties.end() ? "" : run[static_cast<std::size_t>(it - p.properties.begin())]);
+    }
+    run = std::move(values);
+  }
+  p.properties = std::move(all);
+}
+
+std::string clean(std::string v) {
+  // A value must not hold "; " (the run separator) nor a line break.
+  for (std::size_t i; (i = v.find("; ")) != std::string::npos;) v.replace(i, 2, ", ");
+  std::replace(v.begin(), v.end(), '\n', ' ');
+  return v;
+}
+
+ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, const PlanSetup& setup) {
+  if (!is_deterministic_planner(name)) return make_planner(name, setup.si);
+  const PlanSetup* s = &setup;
+  return std::make_shared<DeterministicPlanner>(
+      setup.si, name, deterministic_method(name), *scene.pattern, setup.reader,
+      [s](const FoldState& f, ob::State* out) { return s->write(f, out); }, setup.prefix, scene.request.waypoint_step);
+}
+
+// The fold states of the problem definition's best solution, from the scene's start.
+std::optional<std::vector<FoldState>> solution_states(const PlanSetup& setup, const BenchScene& scene,
+                                                      const ob::ProblemDefinitionPtr& pdef) {
+  if (!pdef->hasSolution()) return std::nullopt;
+  const auto path = std::dynamic_pointer_cast<og::PathGeometric>(pdef->getSolutionPath());
+  if (!path || path->getStateCount() == 0) return std::nullopt;
+  std::string why;
+  return path_waypoints(setup, *path, scene.request, false, &why);
+}
+
+// SimpleSetup::print, which Benchmark writes into every log header, estimates the space's
+// properties by sampling (valid-state probability, motion length, sampling speed): seconds on a
+// constrained space with collision checks, for each Benchmark. The logs keep the settings, the
+// start and the goal.
+class BenchSetup : public og::SimpleSetup {
+ public:
+  using og::SimpleSetup::SimpleSetup;
+  void print(std::ostream& out) const override {
+    out << "foldkit bench: the space's properties are not estimated\n";
+    si_->printSettings(out);
+    pdef_->print(out);
+  }
+};
+
+struct Resolved {
+  const BenchSuite* suite = nullptr;
+  std::vector<std::string> scenes, planners;
+};
+
+Resolved resolve(const BenchOptions& o) {
+  Resolved r;
+  r.suite = &bench_suite(o.suite);
+  r.scenes = o.scenes.empty() ? r.suite->scenes : o.scenes;
+  const auto known = bench_scene_names();
+  for (const auto& s : r.scenes)
+    if (std::find(known.begin(), known.end(), s) == known.end()) make_bench_scene(s, o.seed);  // throws, naming them
+  for (const auto& p : o.planners.empty() ? r.suite->planners : o.planners) r.planners.push_back(canonical_bench_planner(p));
+  if (!(o.time > 0.0) || !std::isfinite(o.time)) throw std::invalid_argument("the time per run must be positive");
+  if (o.runs == 0) throw std::invalid_argument("at least one run per planner");
+  if (o.shards == 0 || o.shard == 0 || o.shard > o.shards)
+    throw std::invalid_argument("--shard " + std::to_string(o.shard) + "/" + std::to_string(o.shards) +
+                                " is not K/N with 1 <= K <= N");
+  return r;
+}
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+std::vector<BenchSceneResult> run_bench(const BenchOptions& o) {
+  const Resolved res = resolve(o);
+  const auto work = bench_work(res.scenes.size(), res.planners.size(), o.runs, o.shard, o.shards);
+  if (o.output_dir.empty()) throw std::invalid_argument("no output folder");
+  std::filesystem::create_directories(o.output_dir);
+  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  ompl::RNG::setSeed(std::max(1u, o.seed));  // takes effect once per process (OMPL's rule)
+  const auto t0 = std::chrono::steady_clock::now();
+  std::size_t done = 0;
+  std::vector<BenchSceneResult> results;
+  for (std::size_t si = 0; si < res.scenes.size(); ++si) {
+    BenchSceneResult result;
+    result.scene = res.scenes[si];
+    std::vector<std::vector<unsigned int>> runs_of(res.planners.size());
+    for (const auto& w : work)
+      if (w.scene == si) runs_of[w.planner].push_back(w.run);
+    if (std::all_of(runs_of.begin(), runs_of.end(), [](const auto& v) { return v.empty(); })) {
+      results.push_back(result);
+      continue;
+    }
+    const BenchScene scene = make_bench_scene(res.scenes[si], o.seed);
+    const PlanSetup setup = make_plan_setup(scene.request, true);
+    if (!setup.blocked.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.blocked);
+    // The planners, in the suite's order; those with as many runs in this shard share one
+    // Benchmark (each Benchmark estimates the space's properties for its log header: seconds).
+    std::vector<ob::PlannerPtr> objects;
+    std::string names;
+    for (const auto& name : res.planners) {
+      objects.push_back(bench_planner(name, scene, setup));
+      names += (names.empty() ? "" : ",") + objects.back()->getName();
+    }
+    std::map<std::size_t, std::vector<std::size_t>> groups;  // run count → planner indices
+    for (std::size_t pi = 0; pi < res.planners.size(); ++pi)
+      if (!runs_of[pi].empty()) groups[runs_of[pi].size()].push_back(pi);
+    BenchLog log;
+    bool have_header = false;
+    for (const auto& [count, members] : groups) {
+      BenchSetup ss(setup.si);
+      setup.set_start_and_goal(ss, scene.request.goal);
+      ompl::tools::Benchmark bench(ss, scene.name);
+      bench.addExperimentParameter("suite", "STRING", clean(res.suite->name));
+      bench.addExperimentParameter("scene", "STRING", clean(scene.name));
+      bench.addExperimentParameter("description", "STRING", clean(scene.description));
+      bench.addExperimentParameter("space", "STRING", setup.space_name);
+      bench.addExperimentParameter("creases", "INTEGER", std::to_string(scene.pattern->joints().size()));
+      bench.addExperimentParameter("scene_seed", "INTEGER", std::to_string(o.seed));
+      bench.addExperimentParameter("shard", "STRING", std::to_string(o.shard) + "/" + std::to_string(o.shards));
+      bench.addExperimentParameter("planners", "STRING", names);
+      bench.addExperimentParameter("simplify", "BOOLEAN", o.simplify ? "1" : "0");
+      std::map<const ob::Planner*, std::size_t> index_of, next;
+      for (std::size_t pi : members) {
+        bench.addPlanner(objects[pi]);
+        index_of[objects[pi].get()] = pi;
+      }
+      bench.setPostRunEvent([&](const ob::PlannerPtr& planner, ompl::tools::Benchmark::RunProperties& run) {
+        const std::size_t pi = index_of.at(planner.get());
+        const auto& indices = runs_of[pi];
+        const unsigned int index = indices[std::min(next[planner.get()]++, indices.size() - 1)];
+        run["run index INTEGER"] = std::to_string(index);
+        const auto states = solution_states(setup, scene, planner->getProblemDefinition());
+        if (planner->getProblemDefinition()->hasSolution()) run["path jumps BOOLEAN"] = states ? "0" : "1";
+        if (states) {
+          const PathMetrics m = measure_path(scene, *states);
+          run["final closure error REAL"] = num(m.final_closure_error);
+          run["max closure error REAL"] = num(m.max_closure_error);
+          run["min clearance REAL"] = num(m.min_clearance);
+          run["replay collisions INTEGER"] = std::to_string(m.replay_collisions);
+          run["replay valid BOOLEAN"] = m.replay_ok ? "1" : "0";
+          run["joint path length REAL"] = num(m.path_length);
+          run["cmml events INTEGER"] = std::to_string(m.cmml_events);
+          run["goal distance REAL"] = num(m.goal_distance);
+        }
+        ++done;
+        if (o.progress) o.progress({done, work.size(), scene.name, res.planners[pi], since(t0), false});
+      });
+      const ompl::tools::Benchmark::Request req(o.time, 4096.0, static_cast<unsigned int>(count), 0.05, false, false,
+                                                o.simplify);
+      bench.benchmark(req);
+      std::ostringstream text;
+      bench.saveResultsToStream(text);
+      BenchLog part = parse_bench_log(text.str(), scene.name);
+      for (std::size_t k = 0; k < part.planners.size(); ++k) {
+        auto& p = part.planners[k];
+        normalise_properties(p, o.simplify);
+        const auto col = static_cast<std::size_t>(
+            std::find(p.properties.begin(), p.properties.end(), "solved BOOLEAN") - p.properties.begin());
+        std::size_t solved = 0;
+        for (const auto& run : p.runs) solved += col < run.size() && run[col] == "1";
+        result.planners[res.planners[members[k]]] = {p.runs.size(), solved};
+        result.runs += p.runs.size();
+        result.solved += solved;
+      }
+      if (!have_header) {
+        auto planners = std::move(part.planners);
+        log = std::move(part);
+        log.planners = std::move(planners);
+        log.run_count = o.runs;
+        have_header = true;
+      } else {
+        log.total_duration += part.total_duration;
+        for (auto& p : part.planners) log.planners.push_back(std::move(p));
+      }
+    }
+    // Back into the suite's order.
+    std::vector<std::string> order;
+    for (const auto& obj : objects) order.push_back("geometric_" + obj->getName());
+    std::stable_sort(log.planners.begin(), log.planners.end(), [&](const BenchLog::Planner& x, const BenchLog::Planner& y) {
+      return std::find(order.begin(), order.end(), x.name) < std::find(order.begin(), order.end(), y.name);
+    });
+    const std::string file =
+        o.shards == 1 ? scene.name + ".log"
+                      : scene.name + ".shard-" + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) + ".log";
+    result.log = (std::filesystem::path(o.output_dir) / file).string();
+    io::write_file_atomic(result.log, write_bench_log(log));
+    if (o.progress) o.progress({done, work.size(), scene.name, "", since(t0), true});
+    results.push_back(result);
+  }
+  return results;
+}
+
+std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::vector<double>& limits) {
+  const Resolved res = resolve(o);
+  if (limits.empty()) throw std::invalid_argument("no time limits");
+  for (double t : limits)
+    if (!(t > 0.0) || !std::isfinite(t)) throw std::invalid_argument("time limits must be positive");
+  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  ompl::RNG::setSeed(std::max(1u, o.seed));
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::size_t total = res.scenes.size() * res.planners.size() * limits.size() * o.runs;
+  std::size_t done = 0;
+  std::vector<ErrorVsTimeRow> rows;
+  for (const auto& scene_name : res.scenes) {
+    const BenchScene scene = make_bench_scene(scene_name, o.seed);
+    const PlanSetup setup = make_plan_setup(scene.request, true);
+    if (!setup.blocked.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.blocked);
+    const double start_distance = (setup.start.angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
+    for (const auto& name : res.planners) {
+      for (double limit : limits)
+        for (unsigned int run = 0; run < o.runs; ++run) {
+          og::SimpleSetup ss(setup.si);
+          setup.set_start_and_goal(ss, scene.request.goal);
+          ss.setPlanner(bench_planner(name, scene, setup));
+          ss.setup();
+          const auto t1 = std::chrono::steady_clock::now();
+          ss.solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(limit),
+                                                     ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition())));
+          ErrorVsTimeRow row;
+          row.scene = scene.name;
+          row.planner = name;
+          row.time_limit = limit;
+          row.time = since(t1);
+          row.run = run;
+          const auto pdef = ss.getProblemDefinition();
+          const auto states = solution_states(setup, scene, pdef);
+          row.solution = !pdef->hasSolution() ? "none" : pdef->hasApproximateSolution() ? "approximate" : "exact";
+          if (states) {
+            const geometry::ClosureSystem& system = *setup.system;
+            row.goal_distance = (states->back().angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
+            row.final_closure_error = system.max_error(states->back());
+            for (std::size_t i = 0; i < states->size(); ++i) {
+              row.max_closure_error = std::max(row.max_closure_error, system.max_error((*states)[i]));
+              if (i > 0) row.path_length += ((*states)[i].angles - (*states)[i - 1].angles).norm();
+            }
+          } else {
+            // No solution (or one that jumps): nothing gained; the error stays the start's.
+            row.goal_distance = start_distance;
+            row.final_closure_error = row.max_closure_error = row.path_length = std::numeric_limits<double>::quiet_NaN();
+            if (pdef->hasSolution()) row.solution = "jumps";
+          }
+          rows.push_back(row);
+          ++done;
+          if (o.progress) o.progress({done, total, scene.name, name, since(t0), false});
+        }
+    }
+    if (o.progress) o.progress({done, total, scene.name, "", since(t0), true});
+  }
+  return rows;
+}
+
+std::string error_vs_time_csv(const std::vector<ErrorVsTimeRow>& rows) {
+  std::ostringstream out;
+  out << "scene,planner,time_limit_s,run,solution,time_s,goal_distance_rad,final_closure_error_rad,"
+         "max_closure_error_rad,path_length_rad\n";
+  for (const auto& r : rows)
+    out << r.scene << ',' << r.planner << ',' << num(r.time_limit) << ',' << r.run << ',' << r.solution << ','
+        << num(r.time) << ',' << num(r.goal_distance) << ',' << num(r.final_closure_error) << ','
+        << num(r.max_closure_error) << ',' << num(r.path_length) << '\n';
+  return out.str();
+}
+
+}  // namespace foldkit::planners

@@ -1,0 +1,82 @@
+// Minimum clearance of a folded sheet. simulation::CollisionWorld answers only "do facets cross",
+// so the distance is FCL's, between facets that share no vertex of the pattern (facets that do
+// share one touch there: their distance is 0 whatever the fold).
+#include <algorithm>
+#include <limits>
+#include <memory>
+#include <unordered_map>
+
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/narrowphase/distance.h>
+
+#include "foldkit/geometry/kinematics.hpp"
+#include "foldkit/planners/bench_suite.hpp"
+
+namespace foldkit::planners {
+
+double min_clearance(const geometry::CreasePattern& pattern, const std::vector<geometry::FoldState>& states) {
+  using Mesh = fcl::BVHModel<fcl::RSSd>;
+  const auto& actors = pattern.actors();
+  std::vector<std::shared_ptr<Mesh>> meshes;
+  std::vector<std::vector<Eigen::Vector3d>> corners(actors.size());
+  std::vector<std::vector<int>> vertices(actors.size());
+  for (std::size_t a = 0; a < actors.size(); ++a) {
+    std::unordered_map<int, int> local;
+    std::vector<fcl::Vector3d> points;
+    std::vector<fcl::Triangle> triangles;
+    for (const auto& t : actors[a].triangles) {
+      int tri[3];
+      for (int k = 0; k < 3; ++k) {
+        const auto [it, fresh] = local.emplace(t.v[k], static_cast<int>(points.size()));
+        if (fresh) {
+          const auto& v = pattern.vertices()[t.v[k]];
+          points.emplace_back(v.x(), v.y(), 0.0);
+          vertices[a].push_back(t.v[k]);
+        }
+        tri[k] = it->second;
+      }
+      triangles.emplace_back(tri[0], tri[1], tri[2]);
+    }
+    corners[a].assign(points.begin(), points.end());
+    auto mesh = std::make_shared<Mesh>();
+    mesh->beginModel(static_cast<int>(triangles.size()), static_cast<int>(points.size()));
+    mesh->addSubModel(points, triangles);
+    mesh->endModel();
+    meshes.push_back(mesh);
+    std::sort(vertices[a].begin(), vertices[a].end());
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t a = 0; a < actors.size(); ++a)
+    for (std::size_t b = a + 1; b < actors.size(); ++b) {
+      std::vector<int> common;
+      std::set_intersection(vertices[a].begin(), vertices[a].end(), vertices[b].begin(), vertices[b].end(),
+                            std::back_inserter(common));
+      if (common.empty()) pairs.emplace_back(a, b);
+    }
+  double best = std::numeric_limits<double>::infinity();
+  if (pairs.empty()) return best;
+  const geometry::KinematicTree tree = geometry::make_tree(pattern);
+  fcl::DistanceRequestd request;
+  for (const auto& state : states) {
+    const auto poses = geometry::facet_poses(pattern, tree, state);
+    std::vector<Eigen::AlignedBox3d> boxes(actors.size());
+    for (std::size_t a = 0; a < actors.size(); ++a)
+      for (const auto& c : corners[a]) boxes[a].extend(poses[a] * c);
+    // Nearest boxes first: once a small distance is known, most pairs are ruled out by their boxes.
+    std::vector<std::pair<double, std::size_t>> order;
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+      order.emplace_back(std::sqrt(boxes[pairs[i].first].squaredExteriorDistance(boxes[pairs[i].second])), i);
+    std::sort(order.begin(), order.end());
+    for (const auto& [lower, i] : order) {
+      if (lower >= best) break;
+      const auto [a, b] = pairs[i];
+      fcl::DistanceResultd result;
+      fcl::distance(meshes[a].get(), poses[a], meshes[b].get(),
+                    poses[b], request, result);
+      best = std::min(best, std::max(0.0, result.min_distance));
+    }
+  }
+  return best;
+}
+
+}  // namespace foldkit::planners

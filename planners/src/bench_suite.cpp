@@ -1,0 +1,240 @@
+// The built-in scenes and suites of `foldkit bench`. Goals come from std::mt19937 seeded by the
+// scene and the seed (never from OMPL's generator, which seeds once per process), and a goal is
+// kept only when it is reachable: the straight way from the start to it (in the active angles of a
+// single vertex, as benchmarks/measure_planning.cpp does; projected onto the closure manifold
+// for the other patterns) is closed, within the bounds and free of crossing facets.
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include <ompl/base/ScopedState.h>
+
+#include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/generators.hpp"
+#include "foldkit/geometry/projection.hpp"
+#include "foldkit/planners/bench_suite.hpp"
+#include "foldkit/planners/planner_factory.hpp"
+#include "foldkit/statespaces/single_vertex_space.hpp"
+#include "foldkit/statespaces/validity.hpp"
+
+namespace foldkit::planners {
+
+namespace ob = ompl::base;
+namespace gen = geometry::generators;
+using geometry::CreasePattern;
+using geometry::FoldState;
+
+namespace {
+
+constexpr int kDegrees[] = {4, 8, 16, 32};
+
+
+// Mirror-symmetric sectors: all equal, except degree 4, whose equal sectors fold only about one
+// straight line (a degenerate vertex); its symmetric scene is the bird's foot 60°/120°/120°/60°.
+std::vector<double> symmetric_sectors(int n) {
+  if (n == 4) return {M_PI / 3, 2 * M_PI / 3, 2 * M_PI / 3, M_PI / 3};
+  return std::vector<double>(static_cast<std::size_t>(n), 2 * M_PI / n);
+}
+
+// As measure_planning's connected_goal: active angles uniform in [−a, a] (a shrinks with the
+// degree, so that roots stay likely), largest |angle| ≥ a/4, a random branch; reachable from
+// flat along the straight segment in the active angles (the motion validator checks closure,
+// jumps and, here, crossing facets).
+FoldState single_vertex_goal(const CreasePattern& p, std::mt19937& rng, int degree) {
+  const statespaces::AngleBounds bounds = statespaces::AngleBounds::of(p, false);
+  auto space = std::make_shared<statespaces::SingleVertexStateSpace>(std::make_shared<statespaces::SingleVertexChain>(p), bounds);
+  auto si = std::make_shared<ob::SpaceInformation>(space);
+  auto validity = std::make_shared<statespaces::FoldValidity>(p, bounds, true);
+  statespaces::FoldMotionValidator motion(si, validity, statespaces::single_vertex_reader(space));
+  ob::ScopedState<> from(space), goal(space);
+  std::vector<FoldState> way{FoldState::flat(p)};
+  if (!space->from_fold_state(way.front(), from.get())) {
+    // Flat is singular for the closed form here: start the segment where plan() leaves flat.
+    const geometry::ClosureSystem system(p);
+    FoldState dir = FoldState::flat(p);
+    for (Eigen::Index j = 0; j < dir.angles.size(); ++j) dir.angles[j] = (j % 2 ? -1.0 : 1.0);
+    way = lead_in(system, way.front(), dir, 3, 0.02);
+    if (way.empty() || !space->from_fold_state(way.back(), from.get()))
+      throw std::runtime_error("bench: no way out of the flat vertex");
+  }
+  const double a = degree <= 8 ? 2.0 : degree <= 16 ? 1.0 : 0.5;
+  std::uniform_real_distribution<double> u(-a, a);
+  auto* g = goal->as<statespaces::SingleVertexStateSpace::StateType>();
+  for (int k = 0; k < 100000; ++k) {
+    for (int j : space->chain().active_joints()) g->angles[j] = u(rng);
+    space->complete(g, (rng() & 1u) ? 1 : -1);
+    if (!g->closed || !space->satisfiesBounds(g)) continue;
+    const FoldState f = space->to_fold_state(g);
+    const double largest = f.angles.cwiseAbs().maxCoeff();
+    if (largest > 2.0 || largest < 0.25 * a) continue;
+    if (!validity->valid(f) || !motion.checkMotion(from.get(), goal.get())) continue;
+    return f;
+  }
+  throw std::runtime_error("bench: no reachable goal for the degree-" + std::to_string(degree) + " vertex");
+}
+
+// A closed goal near `guess(rng)` (projection keeping signs), within the request's bounds, whose
+// projected straight line from the start is closed and collision-free.
+template <class Guess>
+FoldState projected_goal(const PlanRequest& req, std::mt19937& rng, Guess guess, const std::string& name) {
+  const CreasePattern& p = *req.pattern;
+  const geometry::ClosureSystem system(p);
+  const statespaces::AngleBounds bounds = statespaces::AngleBounds::of(p, req.use_assignment);
+  const statespaces::FoldValidity validity(p, bounds, req.collisions);
+  const FoldState start = req.start ? *req.start : FoldState::flat(p);
+  geometry::ProjectionOptions po;
+  po.tolerance = 1e-12;
+  for (int k = 0; k < 50; ++k) {
+    const Eigen::VectorXd g = guess(rng);
+    FoldState goal{g};
+    if (system.rows() > 0) {
+      const auto r = geometry::project(system, goal, po);
+      if (!r.converged) continue;
+      goal = r.state;
+    }
+    if (!bounds.contains(goal, 1e-9) || !validity.valid(goal)) continue;
+    const std::vector<FoldState> line = projected_line(system, start, goal, req.waypoint_step);
+    if (line.empty() || (line.back().angles - goal.angles).cwiseAbs().maxCoeff() > 1e-9) continue;
+    bool ok = validity.valid(line.front());
+    for (std::size_t i = 1; i < line.size() && ok; ++i) ok = validity.valid_next(line[i]) && bounds.contains(line[i], 1e-9);
+    if (ok) return goal;
+  }
+  throw std::runtime_error("bench: no reachable goal for scene " + name);
+}
+
+Eigen::VectorXd assignment_signs(const CreasePattern& p) {
+  Eigen::VectorXd s(static_cast<Eigen::Index>(p.joints().size()));
+  for (std::size_t j = 0; j < p.joints().size(); ++j)
+    s[static_cast<Eigen::Index>(j)] = p.joints()[j].assignment == geometry::Assignment::Valley ? -1.0 : 1.0;
+  return s;
+}
+
+unsigned int scene_seed(const std::string& name, unsigned int seed) {
+  unsigned int h = 2166136261u;  // FNV-1a: stable across compilers, unlike std::hash
+  for (unsigned char c : name) h = (h ^ c) * 16777619u;
+  return h ^ (seed * 2654435761u);
+}
+
+BenchScene scene_of(const std::string& name, geometry::PatternSpec spec, std::string description) {
+  BenchScene s;
+  s.name = name;
+  s.description = std::move(description);
+  s.pattern = std::make_shared<const CreasePattern>(geometry::build_or_throw(spec));
+  s.request.pattern = s.pattern.get();
+  s.request.collisions = true;
+  s.request.use_assignment = false;
+  s.request.replay = false;
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::string> bench_scene_names() {
+  std::vector<std::string> names;
+  for (int d : kDegrees) {
+    names.push_back("vertex" + std::to_string(d) + "-random");
+    names.push_back("vertex" + std::to_string(d) + "-symmetric");
+  }
+  for (const char* n : {"boat", "miura4x4", "miura10x10", "waterbomb", "cube-sheet", "corner-cube"}) names.emplace_back(n);
+  return names;
+}
+
+BenchScene make_bench_scene(const std::string& name, unsigned int seed) {
+  std::mt19937 rng(scene_seed(name, seed));
+  for (int d : kDegrees) {
+    const std::string base = "vertex" + std::to_string(d);
+    if (name != base + "-random" && name != base + "-symmetric") continue;
+    const bool random = name == base + "-random";
+    BenchScene s = scene_of(name, gen::single_vertex(random ? gen::random_sectors(d, rng, std::min(0.2, M_PI / d)) : symmetric_sectors(d)),
+                            std::string("single vertex of degree ") + std::to_string(d) +
+                                (random ? ", random sectors" : ", symmetric sectors") + ", flat to a random folded state");
+    s.request.goal = single_vertex_goal(*s.pattern, rng, d);
+    return s;
+  }
+  if (name == "boat") {
+    BenchScene s = scene_of(name, gen::boat(), "the boat of the paper's Fig. 3: keel folded, bow and stern diagonals valley");
+    s.request.goal = projected_goal(s.request, rng, [](std::mt19937& r) {
+      Eigen::VectorXd g(10);
+      g << 0.9, 0.9, 0.9, 0.9, -0.5, 0.5, 0.0, 0.0, 0.5, -0.5;
+      return Eigen::VectorXd(g * std::uniform_real_distribution<double>(0.5, 1.2)(r));
+    }, name);
+    return s;
+  }
+  if (name == "miura4x4" || name == "miura10x10") {
+    const int n = name == "miura4x4" ? 4 : 10;
+    BenchScene s = scene_of(name, gen::miura(n, n), "Miura-ori " + std::to_string(n) + "×" + std::to_string(n) +
+                                                       ", flat to partly folded along its rigid-folding mode");
+    s.request.use_assignment = true;
+    s.request.search_margin = 0.2;  // see plan_test: Miura's many branches through flat
+    const Eigen::VectorXd dir = assignment_signs(*s.pattern);
+    s.request.goal = projected_goal(s.request, rng, [dir](std::mt19937& r) {
+      return Eigen::VectorXd(dir * std::uniform_real_distribution<double>(0.3, 0.9)(r));
+    }, name);
+    return s;
+  }
+  if (name == "waterbomb") {
+    BenchScene s = scene_of(name, gen::waterbomb(2, 2), "waterbomb tessellation, 2 units × 2 rows, flat to partly folded");
+    s.request.use_assignment = true;
+    s.request.search_margin = 0.2;
+    const Eigen::VectorXd dir = assignment_signs(*s.pattern);
+    s.request.goal = projected_goal(s.request, rng, [dir](std::mt19937& r) {
+      std::uniform_real_distribution<double> u(0.2, 0.6);
+      Eigen::VectorXd g = dir;
+      for (Eigen::Index j = 0; j < g.size(); ++j) g[j] *= u(r);
+      return g;
+    }, name);
+    return s;
+  }
+  if (name == "cube-sheet") {
+    BenchScene s = scene_of(name, gen::cube_sheet(1), "one cube net (Fig. 8a), flat to most of the way to the cube");
+    const Eigen::VectorXd dir = assignment_signs(*s.pattern);
+    s.request.goal = projected_goal(s.request, rng, [dir](std::mt19937& r) {
+      std::uniform_real_distribution<double> u(0.5, 0.9);
+      Eigen::VectorXd g = dir;
+      for (Eigen::Index j = 0; j < g.size(); ++j) g[j] *= u(r) * M_PI / 2;
+      return g;
+    }, name);
+    return s;
+  }
+  if (name == "corner-cube") {
+    const double h = M_PI / 2, q = M_PI / 4;
+    BenchScene s = scene_of(name, gen::single_vertex({h, h, h, q, q}),
+                            "corner cube of Fig. 4 (sectors 90/90/90/45/45), flat to 0.01 rad short of the corner; "
+                            "the goal does not depend on the seed");
+    Eigen::VectorXd guess(5);
+    guess << 0.778, -h + 0.01, -h + 0.01, 0.778, -M_PI + 0.02;
+    geometry::ProjectionOptions po;
+    po.tolerance = 1e-12;
+    const auto r = geometry::project(geometry::ClosureSystem(*s.pattern), FoldState{guess}, po);
+    if (!r.converged) throw std::runtime_error("bench: the corner-cube goal does not close: " + r.message);
+    s.request.goal = r.state;
+    return s;
+  }
+  std::string known;
+  for (const auto& n : bench_scene_names()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown scene '" + name + "' (known: " + known + ")");
+}
+
+const std::vector<BenchSuite>& bench_suites() {
+  static const std::vector<BenchSuite> suites = [] {
+    std::vector<BenchSuite> s;
+    s.push_back({"quick", "three small scenes, two planners: seconds (tests, CI)",
+                 {"vertex4-random", "vertex8-random", "boat"}, {"RRTConnect", "ProjectedLine"}});
+    BenchSuite full{"full", "every scene, sampling planners beside the deterministic ones", bench_scene_names(),
+                    {"RRTConnect", "KPIECE1", "BiTRRT", "PRM", "BKPIECE1", "EST", "RRT"}};
+    for (const auto& d : deterministic_planner_names()) full.planners.push_back(d);
+    s.push_back(full);
+    return s;
+  }();
+  return suites;
+}
+
+const BenchSuite& bench_suite(const std::string& name) {
+  for (const BenchSuite& s : bench_suites())
+    if (s.name == name) return s;
+  std::string known;
+  for (const BenchSuite& s : bench_suites()) known += (known.empty() ? "" : ", ") + s.name;
+  throw std::invalid_argument("unknown suite '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace foldkit::planners

@@ -1,0 +1,145 @@
+// foldkit carpenter: exit codes, JSON fields, the frame and CMML files, and bad chains.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+#include "foldkit/io/cmml.hpp"
+#include "test_paths.hpp"
+
+namespace {
+
+using foldkit::test::CliResult;
+using foldkit::test::foldkit;
+using foldkit::test::slurp;
+using foldkit::test::temp_dir;
+
+std::string write(const std::string& name, const std::string& content) {
+  static const std::string dir = temp_dir();
+  const std::string path = dir + "/" + name;
+  std::ofstream(path, std::ios::binary) << content;
+  return path;
+}
+
+const char* kSpiral = "# a square spiral\n0 0\n3 0\n3 3\n0 3\n0 1\n2 1\n2 2\n1 2\n";
+
+TEST(CarpenterCli, OpenChainStraightensWithJsonAndFiles) {
+  const std::string chain = write("spiral.txt", kSpiral);
+  const std::string cmml = write("spiral.cmml", ""), csv = write("spiral.csv", "");
+  const CliResult r = foldkit({"carpenter", chain, "--json", "-o", cmml, "--frames-csv", csv});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["straight"].get<bool>());
+  EXPECT_FALSE(j.contains("convex"));
+  EXPECT_GT(j["steps"].get<int>(), 0);
+  EXPECT_GE(j["time"].get<double>(), 0.0);
+  EXPECT_LE(j["max_length_error"].get<double>(), 1e-9);
+  EXPECT_GE(j["min_distance_growth"].get<double>(), -1e-12);
+  const std::size_t frames = j["frames"].get<std::size_t>();
+
+  // CSV: a header, then 8 vertices per frame; the last frame is straight: the last vertex at
+  // distance 3+3+3+2+2+1+1 = 15 from the first.
+  std::istringstream in(slurp(csv));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "frame,vertex,x,y");
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  ASSERT_EQ(rows.size(), frames * 8);
+  const auto& first = rows[rows.size() - 8];
+  const auto& last = rows.back();
+  EXPECT_NEAR(std::hypot(last[2] - first[2], last[3] - first[3]), 15.0, 1e-9);
+
+  // CMML: one event per frame, joints 1..6, the last event all straight.
+  const auto seq = foldkit::io::parse_cmml(slurp(cmml), cmml);
+  ASSERT_EQ(seq.events.size(), frames);
+  ASSERT_EQ(seq.events.back().folds.size(), 6u);
+  for (const auto& f : seq.events.back().folds) EXPECT_NEAR(f.angle, 0.0, 1e-9);
+  EXPECT_NEAR(seq.events.front().folds.front().angle, M_PI / 2, 1e-12);  // the input's left turn
+}
+
+TEST(CarpenterCli, FoldWritesTheFramesBackwards) {
+  const std::string chain = write("spiral2.txt", kSpiral);
+  const std::string json = write("fold.json", "");
+  const CliResult r = foldkit({"carpenter", chain, "--fold", "-o", json});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(json));
+  const auto& frames = j["frames"];
+  ASSERT_GE(frames.size(), 2u);
+  EXPECT_EQ(frames.back()[4][0].get<double>(), 0.0);  // the input's vertex 4 is (0, 1)
+  EXPECT_EQ(frames.back()[4][1].get<double>(), 1.0);
+}
+
+TEST(CarpenterCli, ClosedPolygonConvexifies) {
+  const std::string chain = write("u.txt", "0 0\n4 0\n4 4\n3 4\n3 1\n1 1\n1 4\n0 4\n");
+  const CliResult r = foldkit({"carpenter", chain, "--closed", "--json"});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["convex"].get<bool>());
+  EXPECT_TRUE(j["closed"].get<bool>());
+  EXPECT_LE(j["max_length_error"].get<double>(), 1e-9);
+}
+
+TEST(CarpenterCli, BadInputExitsOneWithLocation) {
+  CliResult r = foldkit({"carpenter", write("bad.txt", "0 0\n1 0\n# ok\n1 x\n")});
+  EXPECT_EQ(r.exit, 1);
+  EXPECT_NE(r.err.find("bad.txt:4:"), std::string::npos) << r.err;
+  r = foldkit({"carpenter", write("three.txt", "0 0\n1 2 3\n")});
+  EXPECT_EQ(r.exit, 1);
+  EXPECT_NE(r.err.find("three.txt:2: expected two numbers"), std::string::npos) << r.err;
+  r = foldkit({"carpenter", write("cross.txt", "0 0\n2 0\n2 1\n1 -1\n")});
+  EXPECT_EQ(r.exit, 1);
+  EXPECT_NE(r.err.find("not simple"), std::string::npos) << r.err;
+  r = foldkit({"carpenter", write("zero.txt", "0 0\n1 0\n1 0\n")});
+  EXPECT_EQ(r.exit, 1);
+  EXPECT_NE(r.err.find("zero-length bar"), std::string::npos) << r.err;
+  r = foldkit({"carpenter", write("missing-dir/none.txt", "")});
+  EXPECT_EQ(r.exit, 1);
+}
+
+TEST(CarpenterCli, UsageErrorsAndStepLimit) {
+  const std::string chain = write("spiral3.txt", kSpiral);
+  EXPECT_EQ(foldkit({"carpenter"}).exit, 2);
+  EXPECT_EQ(foldkit({"carpenter", chain, "-o", write("out.xyz", "")}).exit, 2);
+  EXPECT_EQ(foldkit({"carpenter", chain, "--state", "x.cmml"}).exit, 2);
+  const CliResult r = foldkit({"carpenter", chain, "--max-steps", "1", "--json"});
+  EXPECT_EQ(r.exit, 4);
+  EXPECT_FALSE(nlohmann::json::parse(r.out)["straight"].get<bool>());
+  EXPECT_NE(r.err.find("not straight"), std::string::npos);
+}
+
+TEST(CarpenterCli, SingleVertexPmmlIsFlattenedOnTheSphere) {
+  // A degree-4 vertex folded to a closed state (projected by foldkit project), then flattened.
+  const std::string pattern = write("v4.pmml", "");
+  ASSERT_EQ(foldkit({"generate", "single-vertex", "--degree", "4", "-o", pattern}).exit, 0);
+  std::string rough = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<CMML>\n  <Title>rough</Title>\n";
+  const int angles[4] = {40, -40, 40, 40};
+  for (int j = 0; j < 4; ++j)
+    rough += "  <Fold><EventNumber>0</EventNumber><ID>" + std::to_string(j + 1) + "</ID><FoldAngle>" +
+             std::to_string(angles[j]) + "</FoldAngle><Velocity>10</Velocity></Fold>\n";
+  rough += "</CMML>\n";
+  const std::string closed = write("v4-closed.cmml", "");
+  ASSERT_EQ(foldkit({"project", pattern, "--state", write("v4-rough.cmml", rough), "-o", closed}).exit, 0);
+  const std::string folding = write("v4-folding.cmml", "");
+  const CliResult r = foldkit({"carpenter", pattern, "--state", closed, "--json", "-o", folding});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["flat"].get<bool>());
+  EXPECT_TRUE(j["spherical"].get<bool>());
+  EXPECT_GE(j["min_distance_growth"].get<double>(), -1e-12);
+  EXPECT_FALSE(foldkit::io::parse_cmml(slurp(folding), folding).events.empty());
+  EXPECT_EQ(foldkit({"carpenter", pattern}).exit, 2);  // no folded state given
+}
+
+}  // namespace

@@ -1,0 +1,244 @@
+// foldkit bench, library side: scenes (goals checked by the closure system and the simulator's
+// collision world, not by the code that drew them), the shard split, OMPL logs (parsed back,
+// merged), the deterministic-planner wrapper and the clearance measure (closed forms).
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/generators.hpp"
+#include "foldkit/geometry/kinematics.hpp"
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/planners/bench_suite.hpp"
+#include "foldkit/simulation/collision_world.hpp"
+#include "foldkit/statespaces/single_vertex_space.hpp"
+#include "test_paths.hpp"
+
+namespace {
+
+namespace fp = foldkit::planners;
+using foldkit::geometry::ClosureSystem;
+using foldkit::geometry::FoldState;
+
+std::string temp_folder(const std::string& name) {
+  const auto dir = std::filesystem::path(foldkit::test::temp_dir()) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+TEST(BenchSuite, EveryScenesGoalIsClosedValidAndDrawnFromTheSeed) {
+  for (const std::string& name : fp::bench_scene_names()) {
+    SCOPED_TRACE(name);
+    const fp::BenchScene a = fp::make_bench_scene(name, 5), b = fp::make_bench_scene(name, 5);
+    ASSERT_EQ(a.request.goal.angles.size(), static_cast<Eigen::Index>(a.pattern->joints().size()));
+    EXPECT_EQ(a.request.goal.angles, b.request.goal.angles);  // same seed, same goal, bit for bit
+    EXPECT_LT(ClosureSystem(*a.pattern).max_error(a.request.goal), 1e-9);
+    EXPECT_GT(a.request.goal.angles.cwiseAbs().maxCoeff(), 0.1);  // folded, not flat
+    foldkit::simulation::CollisionWorld world(*a.pattern);
+    EXPECT_TRUE(world.check(foldkit::geometry::facet_poses(*a.pattern, foldkit::geometry::make_tree(*a.pattern), a.request.goal),
+                            a.request.goal)
+                    .empty());
+    if (name != "corner-cube") {
+      const fp::BenchScene c = fp::make_bench_scene(name, 6);
+      EXPECT_NE(a.request.goal.angles, c.request.goal.angles);  // another seed, another goal
+    }
+  }
+  EXPECT_THROW(fp::make_bench_scene("vertex5-random", 1), std::invalid_argument);
+}
+
+TEST(BenchSuite, SuitesNameKnownScenesAndPlanners) {
+  const auto scenes = fp::bench_scene_names();
+  EXPECT_EQ(scenes.size(), 14u);
+  for (const auto& suite : fp::bench_suites()) {
+    for (const auto& s : suite.scenes) EXPECT_NE(std::find(scenes.begin(), scenes.end(), s), scenes.end()) << s;
+    for (const auto& p : suite.planners) EXPECT_EQ(fp::canonical_bench_planner(p), p);
+  }
+  EXPECT_EQ(fp::bench_suite("full").scenes, scenes);
+  EXPECT_THROW(fp::bench_suite("nope"), std::invalid_argument);
+  EXPECT_THROW(fp::canonical_bench_planner("nope"), std::invalid_argument);
+  EXPECT_EQ(fp::canonical_bench_planner("projectedline"), "ProjectedLine");
+}
+
+TEST(BenchSuite, ShardsPartitionTheWorkList) {
+  const auto all = fp::bench_work(3, 4, 5, 1, 1);
+  ASSERT_EQ(all.size(), 60u);
+  for (unsigned int n : {2u, 3u, 7u, 61u}) {
+    std::multiset<std::tuple<std::size_t, std::size_t, unsigned int>> joined;
+    for (unsigned int k = 1; k <= n; ++k)
+      for (const auto& w : fp::bench_work(3, 4, 5, k, n)) joined.insert({w.scene, w.planner, w.run});
+    std::multiset<std::tuple<std::size_t, std::size_t, unsigned int>> expected;
+    for (const auto& w : all) expected.insert({w.scene, w.planner, w.run});
+    EXPECT_EQ(joined, expected) << n << " shards";
+  }
+  EXPECT_THROW(fp::bench_work(1, 1, 1, 3, 2), std::invalid_argument);
+  EXPECT_THROW(fp::bench_work(1, 1, 1, 0, 2), std::invalid_argument);
+}
+
+// Facets 1 and 3 of a three-panel strip share no vertex: flat, and with both creases at 90° (a
+// U), they are the middle panel's width apart; with 60° the gap is 1 + 2·cos 60° at the far edges
+// closing to 1 at the creases (parallel walls tilt inwards at 120° − …: the nearest points stay
+// the crease lines, 1 apart).
+TEST(BenchSuite, ClearanceOfAFoldedStripIsTheMiddlePanelsWidth) {
+  const auto p = foldkit::geometry::build_or_throw(foldkit::geometry::generators::strip(3, 1.0, 1.0));
+  FoldState s = FoldState::flat(p);
+  EXPECT_NEAR(fp::min_clearance(p, {s}), 1.0, 1e-9);
+  s.angles.setConstant(M_PI / 2);
+  EXPECT_NEAR(fp::min_clearance(p, {s}), 1.0, 1e-9);
+  // Past 90° the free edges lean towards each other: 1 − 2·sin(θ − 90°).
+  s.angles.setConstant(M_PI / 2 + 0.2);
+  EXPECT_NEAR(fp::min_clearance(p, {s}), 1.0 - 2.0 * std::sin(0.2), 1e-9);
+  const auto one = foldkit::geometry::build_or_throw(foldkit::geometry::generators::strip(2));
+  EXPECT_TRUE(std::isinf(fp::min_clearance(one, {FoldState::flat(one)})));  // every pair shares a vertex
+}
+
+TEST(BenchSuite, LogsRoundTripAndShardsMerge) {
+  fp::BenchLog log;
+  log.experiment = "boat";
+  log.parameters = {{"scene STRING", "boat"}, {"shard STRING", "1/2"}, {"planners STRING", "A,B"}};
+  log.host = "h";
+  log.start_time = "2026-01-01T00:00:00";
+  log.setup = "setup\n";
+  log.seed = "1";
+  log.max_time = 1;
+  log.max_mem = 4096;
+  log.run_count = 2;
+  log.total_duration = 1.5;
+  log.enums = {"status|a|b"};
+  fp::BenchLog::Planner a{"geometric_A", {"range = 1"}, {"run index INTEGER", "time REAL"}, {{"0", "0.5"}}, {}, {}};
+  log.planners = {a};
+  const std::string text = fp::write_bench_log(log);
+  EXPECT_EQ(text.rfind("OMPL version 1.5.2\nExperiment boat\n", 0), 0u) << text;
+  const fp::BenchLog back = fp::parse_bench_log(text, "x.log");
+  EXPECT_EQ(fp::write_bench_log(back), text);
+
+  fp::BenchLog second = log;
+  second.parameters[1].second = "2/2";
+  second.planners[0].runs = {{"1", "0.25"}};
+  const fp::BenchLog merged = fp::merge_bench_logs({second, log}, {"b.log", "a.log"});
+  ASSERT_EQ(merged.planners.size(), 1u);
+  ASSERT_EQ(merged.planners[0].runs.size(), 2u);
+  EXPECT_EQ(merged.planners[0].runs[0][0], "0");  // ordered by run index
+  EXPECT_EQ(merged.planners[0].runs[1][0], "1");
+  EXPECT_DOUBLE_EQ(merged.total_duration, 3.0);
+  EXPECT_EQ(*merged.parameter("shard STRING"), "1/1");
+
+  EXPECT_THROW(fp::merge_bench_logs({log}, {"a.log"}), std::invalid_argument);        // shard 2/2 missing
+  EXPECT_THROW(fp::merge_bench_logs({log, log}, {"a.log", "c.log"}), std::invalid_argument);  // 1/2 twice
+  fp::BenchLog other = second;
+  other.planners[0].properties = {"run index INTEGER", "memory REAL"};
+  try {
+    fp::merge_bench_logs({log, other}, {"a.log", "b.log"});
+    ADD_FAILURE() << "mismatched properties merged";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("other run properties"), std::string::npos) << e.what();
+  }
+  try {
+    fp::parse_bench_log("OMPL version \nExperiment x\nRunning on h\nStarting at d\nnot a block\n", "bad.log");
+    ADD_FAILURE() << "garbage parsed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("bad.log:5:", 0), 0u) << e.what();
+  }
+}
+
+std::vector<std::string> column(const fp::BenchLog::Planner& p, const std::string& property) {
+  const auto it = std::find(p.properties.begin(), p.properties.end(), property);
+  std::vector<std::string> v;
+  if (it == p.properties.end()) return v;
+  for (const auto& run : p.runs) v.push_back(run[static_cast<std::size_t>(it - p.properties.begin())]);
+  return v;
+}
+
+// The quick suite end to end on one scene: logs as OMPL writes them, our properties in them, and
+// the deterministic planner's straight line — reachable by construction of the scene's goal —
+// solved exactly, closed and replayed without collision by the simulator.
+TEST(BenchSuite, QuickSuiteOnTheBoatWritesLogsWithOurProperties) {
+  fp::BenchOptions o;
+  o.suite = "quick";
+  o.scenes = {"boat"};
+  o.time = 0.5;
+  o.runs = 1;
+  o.output_dir = temp_folder("bench_suite_boat");
+  std::size_t reports = 0;
+  o.progress = [&](const fp::BenchProgress& p) {
+    ++reports;
+    EXPECT_LE(p.done, p.total);
+  };
+  const auto results = fp::run_bench(o);
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].runs, 2u);
+  EXPECT_EQ(reports, 3u);  // two runs, one scene
+  const fp::BenchLog log = fp::parse_bench_log(foldkit::io::read_file(results[0].log), results[0].log);
+  EXPECT_EQ(log.experiment, "boat");
+  ASSERT_EQ(log.planners.size(), 2u);
+  EXPECT_EQ(log.planners[0].name, "geometric_RRTConnect");
+  EXPECT_EQ(log.planners[1].name, "geometric_ProjectedLine");
+  for (const auto& p : log.planners)
+    for (const char* prop : {"final closure error REAL", "max closure error REAL", "min clearance REAL",
+                             "replay collisions INTEGER", "joint path length REAL", "cmml events INTEGER", "run index INTEGER"})
+      EXPECT_NE(std::find(p.properties.begin(), p.properties.end(), prop), p.properties.end()) << prop;
+  const auto& line = log.planners[1];
+  EXPECT_EQ(column(line, "solved BOOLEAN"), std::vector<std::string>{"1"});
+  EXPECT_EQ(column(line, "replay valid BOOLEAN"), std::vector<std::string>{"1"});
+  EXPECT_EQ(column(line, "replay collisions INTEGER"), std::vector<std::string>{"0"});
+  EXPECT_LT(std::atof(column(line, "max closure error REAL")[0].c_str()), 1e-6);
+  EXPECT_LT(std::atof(column(line, "goal distance REAL")[0].c_str()), 1e-6);
+  EXPECT_GT(std::atof(column(line, "min clearance REAL")[0].c_str()), 0.0);
+  EXPECT_GT(std::atof(column(line, "joint path length REAL")[0].c_str()), 0.5);
+}
+
+TEST(BenchSuite, ErrorVersusTimeRecordsEveryLimit) {
+  fp::BenchOptions o;
+  o.scenes = {"vertex4-random"};
+  o.planners = {"ProjectedLine", "RRTConnect"};
+  o.runs = 1;
+  const auto rows = fp::run_error_vs_time(o, {0.05, 0.2});
+  ASSERT_EQ(rows.size(), 4u);
+  for (const auto& r : rows) {
+    EXPECT_TRUE(r.solution == "exact" || r.solution == "none" || r.solution == "approximate") << r.solution;
+    if (r.solution == "exact") {
+      EXPECT_LT(r.goal_distance, 1e-6);
+      EXPECT_LT(r.max_closure_error, 1e-6);
+    }
+  }
+  const std::string csv = fp::error_vs_time_csv(rows);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
+  EXPECT_THROW(fp::run_error_vs_time(o, {}), std::invalid_argument);
+}
+
+}  // namespace
+
+namespace {
+
+// The deterministic methods of the other planners (projected-velocity folding, Carpenter's rule
+// on the sphere) inside ompl::tools::Benchmark: on the corner cube both reach the goal, and the
+// simulator replays their paths without a collision.
+TEST(BenchSuite, DeterministicFoldingMethodsSolveTheCornerCube) {
+  fp::BenchOptions o;
+  o.suite = "full";
+  o.scenes = {"corner-cube"};
+  o.planners = {"ProjectedFolding", "SphericalCarpenter"};
+  o.time = 30.0;  // a deterministic run ends when its method does; the limit only guards sanitizer builds
+  o.runs = 1;
+  o.output_dir = temp_folder("bench_suite_corner");
+  const auto results = fp::run_bench(o);
+  ASSERT_EQ(results.size(), 1u);
+  const fp::BenchLog log = fp::parse_bench_log(foldkit::io::read_file(results[0].log), results[0].log);
+  ASSERT_EQ(log.planners.size(), 2u);
+  for (const auto& p : log.planners) {
+    SCOPED_TRACE(p.name);
+    EXPECT_EQ(column(p, "solved BOOLEAN"), std::vector<std::string>{"1"});
+    EXPECT_EQ(column(p, "replay valid BOOLEAN"), std::vector<std::string>{"1"});
+    EXPECT_EQ(column(p, "replay collisions INTEGER"), std::vector<std::string>{"0"});
+    EXPECT_LT(std::atof(column(p, "goal distance REAL")[0].c_str()), 1e-9);
+    EXPECT_LT(std::atof(column(p, "max closure error REAL")[0].c_str()), 1e-6);
+  }
+}
+
+}  // namespace
