@@ -18,19 +18,14 @@ using foldkit::test::CliResult;
 using foldkit::test::foldkit;
 using foldkit::test::slurp;
 using foldkit::test::temp_dir;
+using foldkit::test::write_temp;
 
-std::string write(const std::string& name, const std::string& content) {
-  static const std::string dir = temp_dir();
-  const std::string path = dir + "/" + name;
-  std::ofstream(path, std::ios::binary) << content;
-  return path;
-}
 
 const char* kSpiral = "# a square spiral\n0 0\n3 0\n3 3\n0 3\n0 1\n2 1\n2 2\n1 2\n";
 
 TEST(CarpenterCli, OpenChainStraightensWithJsonAndFiles) {
-  const std::string chain = write("spiral.txt", kSpiral);
-  const std::string cmml = write("spiral.cmml", ""), csv = write("spiral.csv", "");
+  const std::string chain = write_temp("spiral.txt", kSpiral);
+  const std::string cmml = write_temp("spiral.cmml", ""), csv = write_temp("spiral.csv", "");
   const CliResult r = foldkit({"carpenter", chain, "--json", "-o", cmml, "--frames-csv", csv});
   ASSERT_EQ(r.exit, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -70,8 +65,8 @@ TEST(CarpenterCli, OpenChainStraightensWithJsonAndFiles) {
 }
 
 TEST(CarpenterCli, FoldWritesTheFramesBackwards) {
-  const std::string chain = write("spiral2.txt", kSpiral);
-  const std::string json = write("fold.json", "");
+  const std::string chain = write_temp("spiral2.txt", kSpiral);
+  const std::string json = write_temp("fold.json", "");
   const CliResult r = foldkit({"carpenter", chain, "--fold", "-o", json});
   ASSERT_EQ(r.exit, 0) << r.err;
   const auto j = nlohmann::json::parse(slurp(json));
@@ -82,7 +77,7 @@ TEST(CarpenterCli, FoldWritesTheFramesBackwards) {
 }
 
 TEST(CarpenterCli, ClosedPolygonConvexifies) {
-  const std::string chain = write("u.txt", "0 0\n4 0\n4 4\n3 4\n3 1\n1 1\n1 4\n0 4\n");
+  const std::string chain = write_temp("u.txt", "0 0\n4 0\n4 4\n3 4\n3 1\n1 1\n1 4\n0 4\n");
   const CliResult r = foldkit({"carpenter", chain, "--closed", "--json"});
   ASSERT_EQ(r.exit, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -92,26 +87,26 @@ TEST(CarpenterCli, ClosedPolygonConvexifies) {
 }
 
 TEST(CarpenterCli, BadInputExitsOneWithLocation) {
-  CliResult r = foldkit({"carpenter", write("bad.txt", "0 0\n1 0\n# ok\n1 x\n")});
+  CliResult r = foldkit({"carpenter", write_temp("bad.txt", "0 0\n1 0\n# ok\n1 x\n")});
   EXPECT_EQ(r.exit, 1);
   EXPECT_NE(r.err.find("bad.txt:4:"), std::string::npos) << r.err;
-  r = foldkit({"carpenter", write("three.txt", "0 0\n1 2 3\n")});
+  r = foldkit({"carpenter", write_temp("three.txt", "0 0\n1 2 3\n")});
   EXPECT_EQ(r.exit, 1);
   EXPECT_NE(r.err.find("three.txt:2: expected two numbers"), std::string::npos) << r.err;
-  r = foldkit({"carpenter", write("cross.txt", "0 0\n2 0\n2 1\n1 -1\n")});
+  r = foldkit({"carpenter", write_temp("cross.txt", "0 0\n2 0\n2 1\n1 -1\n")});
   EXPECT_EQ(r.exit, 1);
   EXPECT_NE(r.err.find("not simple"), std::string::npos) << r.err;
-  r = foldkit({"carpenter", write("zero.txt", "0 0\n1 0\n1 0\n")});
+  r = foldkit({"carpenter", write_temp("zero.txt", "0 0\n1 0\n1 0\n")});
   EXPECT_EQ(r.exit, 1);
   EXPECT_NE(r.err.find("zero-length bar"), std::string::npos) << r.err;
-  r = foldkit({"carpenter", write("missing-dir/none.txt", "")});
+  r = foldkit({"carpenter", write_temp("missing-dir/none.txt", "")});
   EXPECT_EQ(r.exit, 1);
 }
 
 TEST(CarpenterCli, UsageErrorsAndStepLimit) {
-  const std::string chain = write("spiral3.txt", kSpiral);
+  const std::string chain = write_temp("spiral3.txt", kSpiral);
   EXPECT_EQ(foldkit({"carpenter"}).exit, 2);
-  EXPECT_EQ(foldkit({"carpenter", chain, "-o", write("out.xyz", "")}).exit, 2);
+  EXPECT_EQ(foldkit({"carpenter", chain, "-o", write_temp("out.xyz", "")}).exit, 2);
   EXPECT_EQ(foldkit({"carpenter", chain, "--state", "x.cmml"}).exit, 2);
   const CliResult r = foldkit({"carpenter", chain, "--max-steps", "1", "--json"});
   EXPECT_EQ(r.exit, 4);
@@ -121,7 +116,7 @@ TEST(CarpenterCli, UsageErrorsAndStepLimit) {
 
 TEST(CarpenterCli, SingleVertexPmmlIsFlattenedOnTheSphere) {
   // A degree-4 vertex folded to a closed state (projected by foldkit project), then flattened.
-  const std::string pattern = write("v4.pmml", "");
+  const std::string pattern = write_temp("v4.pmml", "");
   ASSERT_EQ(foldkit({"generate", "single-vertex", "--degree", "4", "-o", pattern}).exit, 0);
   std::string rough = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<CMML>\n  <Title>rough</Title>\n";
   const int angles[4] = {40, -40, 40, 40};
@@ -129,9 +124,9 @@ TEST(CarpenterCli, SingleVertexPmmlIsFlattenedOnTheSphere) {
     rough += "  <Fold><EventNumber>0</EventNumber><ID>" + std::to_string(j + 1) + "</ID><FoldAngle>" +
              std::to_string(angles[j]) + "</FoldAngle><Velocity>10</Velocity></Fold>\n";
   rough += "</CMML>\n";
-  const std::string closed = write("v4-closed.cmml", "");
-  ASSERT_EQ(foldkit({"project", pattern, "--state", write("v4-rough.cmml", rough), "-o", closed}).exit, 0);
-  const std::string folding = write("v4-folding.cmml", "");
+  const std::string closed = write_temp("v4-closed.cmml", "");
+  ASSERT_EQ(foldkit({"project", pattern, "--state", write_temp("v4-rough.cmml", rough), "-o", closed}).exit, 0);
+  const std::string folding = write_temp("v4-folding.cmml", "");
   const CliResult r = foldkit({"carpenter", pattern, "--state", closed, "--json", "-o", folding});
   ASSERT_EQ(r.exit, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);

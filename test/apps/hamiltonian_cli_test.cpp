@@ -15,13 +15,8 @@ using foldkit::test::CliResult;
 using foldkit::test::foldkit;
 using foldkit::test::slurp;
 using foldkit::test::temp_dir;
+using foldkit::test::write_temp;
 
-std::string write(const std::string& name, const std::string& content) {
-  static const std::string dir = temp_dir();
-  const std::string path = dir + "/" + name;
-  std::ofstream(path, std::ios::binary) << content;
-  return path;
-}
 
 std::size_t line_count(const std::string& text) {
   std::size_t n = 0;
@@ -30,8 +25,8 @@ std::size_t line_count(const std::string& text) {
 }
 
 TEST(HamiltonianCli, RectangleExactPathToFile) {
-  const std::string shape = write("rect.txt", "####\n####\n####\n");
-  const std::string out = write("rect.path", "");
+  const std::string shape = write_temp("rect.txt", "####\n####\n####\n");
+  const std::string out = write_temp("rect.path", "");
   const CliResult r = foldkit({"hamiltonian", shape, "--json", "-o", out});
   ASSERT_EQ(r.exit, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -48,7 +43,7 @@ TEST(HamiltonianCli, RectangleExactPathToFile) {
 }
 
 TEST(HamiltonianCli, PlusHasNoPathButItsRefinementHasACycle) {
-  const std::string shape = write("plus.grid", ".#.\n###\n.#.\n");
+  const std::string shape = write_temp("plus.grid", ".#.\n###\n.#.\n");
   const CliResult none = foldkit({"hamiltonian", shape, "--json"});
   EXPECT_EQ(none.exit, 4);
   const auto j = nlohmann::json::parse(none.out);
@@ -61,11 +56,11 @@ TEST(HamiltonianCli, PlusHasNoPathButItsRefinementHasACycle) {
 }
 
 TEST(HamiltonianCli, PbmAndVoxels) {
-  const CliResult pbm = foldkit({"hamiltonian", write("l.pbm", "P1\n2 3\n1 0\n1 0\n1 1\n"), "--json"});
+  const CliResult pbm = foldkit({"hamiltonian", write_temp("l.pbm", "P1\n2 3\n1 0\n1 0\n1 1\n"), "--json"});
   ASSERT_EQ(pbm.exit, 0) << pbm.err;
   EXPECT_EQ(nlohmann::json::parse(pbm.out)["length"], 4);
-  const std::string out = write("v.path", "");
-  const CliResult vox = foldkit({"hamiltonian", write("v.vox", "##\n#.\n\n#.\n..\n"), "--refine", "-o", out, "--json"});
+  const std::string out = write_temp("v.path", "");
+  const CliResult vox = foldkit({"hamiltonian", write_temp("v.vox", "##\n#.\n\n#.\n..\n"), "--refine", "-o", out, "--json"});
   ASSERT_EQ(vox.exit, 0) << vox.err;
   EXPECT_EQ(nlohmann::json::parse(vox.out)["length"], 32);
   const std::string path = slurp(out);
@@ -76,7 +71,7 @@ TEST(HamiltonianCli, PbmAndVoxels) {
 }
 
 TEST(HamiltonianCli, StartOnTheMinorityColourIsAParityVerdict) {
-  const std::string shape = write("square.txt", "###\n###\n###\n");
+  const std::string shape = write_temp("square.txt", "###\n###\n###\n");
   const CliResult corner = foldkit({"hamiltonian", shape, "--start", "2,2"});
   ASSERT_EQ(corner.exit, 0) << corner.err;
   EXPECT_EQ(corner.out.substr(0, 4), "2 2\n");
@@ -88,18 +83,18 @@ TEST(HamiltonianCli, StartOnTheMinorityColourIsAParityVerdict) {
 }
 
 TEST(HamiltonianCli, BadInputs) {
-  const CliResult ragged = foldkit({"hamiltonian", write("ragged.txt", "##\n###\n")});
+  const CliResult ragged = foldkit({"hamiltonian", write_temp("ragged.txt", "##\n###\n")});
   EXPECT_EQ(ragged.exit, 1);
   EXPECT_NE(ragged.err.find("ragged.txt:2:"), std::string::npos) << ragged.err;
-  const CliResult pbm = foldkit({"hamiltonian", write("bad.pbm", "P1\n2 2\n1 1\n1 7\n")});
+  const CliResult pbm = foldkit({"hamiltonian", write_temp("bad.pbm", "P1\n2 2\n1 1\n1 7\n")});
   EXPECT_EQ(pbm.exit, 1);
   EXPECT_NE(pbm.err.find("bad.pbm:4:"), std::string::npos) << pbm.err;
-  const CliResult apart = foldkit({"hamiltonian", write("apart.txt", "#.#\n"), "--refine"});
+  const CliResult apart = foldkit({"hamiltonian", write_temp("apart.txt", "#.#\n"), "--refine"});
   EXPECT_EQ(apart.exit, 4);
   EXPECT_NE(apart.err.find("not connected"), std::string::npos) << apart.err;
-  EXPECT_EQ(foldkit({"hamiltonian", write("shape.png", "#\n")}).exit, 2);
+  EXPECT_EQ(foldkit({"hamiltonian", write_temp("shape.png", "#\n")}).exit, 2);
   EXPECT_EQ(foldkit({"hamiltonian"}).exit, 2);
-  EXPECT_EQ(foldkit({"hamiltonian", write("missing-dir/none.txt", "")}).exit, 1);
+  EXPECT_EQ(foldkit({"hamiltonian", write_temp("missing-dir/none.txt", "")}).exit, 1);
 }
 
 }  // namespace

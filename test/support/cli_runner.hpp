@@ -16,6 +16,14 @@ struct CliResult {
   std::string out, err;
 };
 
+// Writes `content` to `name` in one temporary folder shared by the calling test program; returns its path.
+inline std::string write_temp(const std::string& name, const std::string& content) {
+  static const std::string dir = temp_dir();
+  const std::string path = dir + "/" + name;
+  std::ofstream(path, std::ios::binary) << content;
+  return path;
+}
+
 inline std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
