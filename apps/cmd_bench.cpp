@@ -47,7 +47,9 @@ std::pair<unsigned int, unsigned int> parse_shard(const std::string& text) {
   unsigned int k = 0, n = 0;
   char slash = 0, extra = 0;
   std::istringstream in(text);
-  if (!(in >> k >> slash >> n) || slash != '/' || (in >> extra) || k < 1 || n < 1 || k > n)
+  // Digits only: istream would read "-3" into an unsigned as 4294967293.
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789/") == std::string::npos;
+  if (!digits || !(in >> k >> slash >> n) || slash != '/' || (in >> extra) || k < 1 || n < 1 || k > n)
     throw UsageError("--shard '" + text + "': expected K/N with 1 <= K <= N");
   return {k, n};
 }
@@ -234,6 +236,12 @@ Command add_bench_merge(CLI::App& root) {
                 merged = planners::merge_bench_logs(logs, files);
               } catch (const std::invalid_argument& e) {
                 std::cerr << "foldkit bench-merge: " << e.what() << '\n';
+                return kInvalidInput;
+              }
+              // The scene name comes from the logs read: it must not lead the file out of -o.
+              if (scene.empty() || scene.find_first_of("/\\") != std::string::npos || scene == "." || scene == "..") {
+                std::cerr << "foldkit bench-merge: " << files.front() << ": experiment name '" << scene
+                          << "' is not a plain file name\n";
                 return kInvalidInput;
               }
               const std::string out = (std::filesystem::path(opt->output) / (scene + ".log")).string();

@@ -1,5 +1,7 @@
 // foldkit carpenter: Carpenter's rule — straighten an open planar chain, convexify a closed one
 // (docs/CARPENTER.md), or flatten a single-vertex crease pattern on the sphere.
+#include <algorithm>
+#include <limits>
 #include <iostream>
 #include <stdexcept>
 
@@ -34,7 +36,9 @@ int run_spherical(const Options& opt) {
   else if (!loaded.state) throw UsageError(opt.chain + ": a single vertex needs its folded state: --state FOLDED.cmml");
   const planners::FlattenResult r = [&] {
     try {
-      return planners::flatten_single_vertex(loaded.pattern, folded);
+      planners::SphericalOptions options;
+      options.max_steps = static_cast<int>(std::min<std::size_t>(opt.max_steps, std::numeric_limits<int>::max()));
+      return planners::flatten_single_vertex(loaded.pattern, folded, options);
     } catch (const std::invalid_argument& e) {
       throw io::ParseError(opt.chain, 0, e.what());
     }

@@ -171,6 +171,7 @@ TEST(BenchCli, BadArgumentsExitTwo) {
            {"bench", "quick", "--shard", "0/2", "-o", out},
            {"bench", "quick", "--shard", "3/2", "-o", out},
            {"bench", "quick", "--shard", "1-2", "-o", out},
+           {"bench", "quick", "--shard", "1/-3", "-o", out},        // not shard 1 of 4294967293
            {"bench", "quick", "--runs", "0", "-o", out},
            {"bench", "quick", "--time", "-1", "-o", out},
            {"bench", "quick", "--error-vs-time", "0.1,0", "-o", out},

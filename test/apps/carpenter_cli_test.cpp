@@ -135,6 +135,10 @@ TEST(CarpenterCli, SingleVertexPmmlIsFlattenedOnTheSphere) {
   EXPECT_GE(j["min_distance_growth"].get<double>(), -1e-12);
   EXPECT_FALSE(foldkit::io::parse_cmml(slurp(folding), folding).events.empty());
   EXPECT_EQ(foldkit({"carpenter", pattern}).exit, 2);  // no folded state given
+  // --max-steps holds for the sphere too: one step does not reach flat (exit 4, no plan).
+  const CliResult short_run = foldkit({"carpenter", pattern, "--state", closed, "--max-steps", "1", "--json"});
+  EXPECT_EQ(short_run.exit, 4) << short_run.err;
+  EXPECT_FALSE(nlohmann::json::parse(short_run.out)["flat"].get<bool>());
 }
 
 }  // namespace
