@@ -160,6 +160,28 @@ TEST(BenchCli, ShardsMergedEqualTheUnshardedRunList) {
   EXPECT_NE(lone.err.find("shard 2/2 of vertex4-random is missing"), std::string::npos) << lone.err;
 }
 
+// More shards than runs: the shards that drew none of a scene's runs write no log of it, and the
+// merge of the others still holds every run.
+TEST(BenchCli, ShardsWithoutRunsOfASceneDoNotBlockTheMerge) {
+  const std::vector<std::string> common = {"bench", "quick", "--time", "0.2", "--runs", "1", "--scenes", "vertex4-random"};
+  std::vector<std::string> dirs;
+  for (int k = 1; k <= 4; ++k) {
+    dirs.push_back(fresh("few" + std::to_string(k)));
+    std::vector<std::string> a = common;
+    a.insert(a.end(), {"--shard", std::to_string(k) + "/4", "-o", dirs.back()});
+    ASSERT_EQ(foldkit(a).exit, 0) << k;
+  }
+  std::vector<std::string> merge = {"bench-merge"};
+  merge.insert(merge.end(), dirs.begin(), dirs.end());
+  const std::string merged = fresh("few-merged");
+  merge.insert(merge.end(), {"-o", merged});
+  const auto m = foldkit(merge);
+  ASSERT_EQ(m.exit, 0) << m.err;
+  std::size_t runs = 0;
+  for (const auto& [p, rs] : read_runs(merged + "/vertex4-random.log")) runs += rs.size();
+  EXPECT_EQ(runs, 2u);  // the quick suite's two planners, one run each
+}
+
 TEST(BenchCli, BadArgumentsExitTwo) {
   const std::string out = fresh("unused");
   for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
