@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -295,17 +296,21 @@ ExpansiveVelocity expansive_velocity(const std::vector<Vec>& p, bool closed, con
   }
 
   ExpansiveVelocity out;
-  StepLp lp(model, p, rows);
-  if (key != nullptr && memo != nullptr && memo->valid) lp.warm(*memo, *key, rows, closed);
+  auto lp = std::make_unique<StepLp>(model, p, rows);
+  if (key != nullptr && memo != nullptr && memo->valid) lp->warm(*memo, *key, rows, closed);
   for (;;) {
-    Solved s = lp.solve();
+    Solved s = lp->solve();
     if (s.status != LpSolution::Status::Optimal) {
       // Clp has called LPs of this shape infeasible or unbounded from a warm basis, and now and
-      // then from scratch too: a fresh dual, then a fresh primal simplex decide.
+      // then from scratch too: a fresh dual, then a fresh primal simplex decide. The model that
+      // solved carries on (later struts, the basis remembered for the next step).
       for (const auto method : {IncrementalLp::Method::Dual, IncrementalLp::Method::Primal}) {
-        StepLp fresh(model, p, rows);
-        s = fresh.solve(method);
-        if (s.status == LpSolution::Status::Optimal) break;
+        auto fresh = std::make_unique<StepLp>(model, p, rows);
+        s = fresh->solve(method);
+        if (s.status == LpSolution::Status::Optimal) {
+          lp = std::move(fresh);
+          break;
+        }
       }
     }
     ++out.lp_solves;
@@ -331,7 +336,7 @@ ExpansiveVelocity expansive_velocity(const std::vector<Vec>& p, bool closed, con
       out.solved = true;
       for (const StrutModel::Row& r : rows)
         if (model.weighted_rate(r, s.v, s.joint_speed) <= 2.0) out.binding.emplace_back(r.a, r.b);
-      if (key != nullptr && memo != nullptr) lp.remember(*memo, *key, rows, closed);
+      if (key != nullptr && memo != nullptr) lp->remember(*memo, *key, rows, closed);
       return out;
     }
     const std::size_t cap = std::max<std::size_t>(64, static_cast<std::size_t>(m));
@@ -342,7 +347,7 @@ ExpansiveVelocity expansive_velocity(const std::vector<Vec>& p, bool closed, con
     for (const auto& entry : violated) {
       const std::size_t before = rows.size();
       add(entry.second.first, entry.second.second);
-      if (rows.size() > before) lp.add_strut(rows.back());
+      if (rows.size() > before) lp->add_strut(rows.back());
     }
   }
 }
