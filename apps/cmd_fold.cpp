@@ -52,7 +52,11 @@ Command add_fold(CLI::App& root) {
             if (!(opt->fraction > 0.0)) throw UsageError("--fraction must be greater than 0");
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
             planners::ProjectedFoldingOptions o;
-            if (!opt->velocity.empty()) o.velocity = parse_velocity(pattern, opt->velocity);
+            if (!opt->velocity.empty()) {
+              o.velocity = parse_velocity(pattern, opt->velocity);
+              if (!(o.velocity.cwiseAbs().maxCoeff() > 0.0))
+                throw UsageError("--velocity: the desired velocity is zero on every crease");
+            }
             o.target_fraction = opt->fraction;
             o.max_step = opt->step;
             o.max_steps = opt->max_steps;

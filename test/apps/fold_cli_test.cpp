@@ -90,6 +90,7 @@ TEST(FoldCli, BadInputAndUsage) {
   const std::string out = dir() + "/never.cmml";
   EXPECT_EQ(foldkit({"fold", dir() + "/missing.pmml", "-o", out}).exit, 1);
   EXPECT_EQ(foldkit({"fold", boat, "-o", out}).exit, 1);  // no assignment and no --velocity
+  EXPECT_EQ(foldkit({"fold", boat, "--velocity", "1:0", "-o", out}).exit, 2);  // a zero velocity is a usage error
   EXPECT_EQ(foldkit({"fold", miura, "--velocity", "99:1", "-o", out}).exit, 2);
   EXPECT_EQ(foldkit({"fold", miura, "--velocity", "1:x", "-o", out}).exit, 2);
   EXPECT_EQ(foldkit({"fold", miura, "--velocity", "1:1,1:1", "-o", out}).exit, 2);
