@@ -7,24 +7,14 @@
 #include <benchmark/benchmark.h>
 
 #include "foldkit/geometry/closure.hpp"
-#include "foldkit/geometry/generators.hpp"
+#include "bench_patterns.hpp"
 
 namespace {
 
 using namespace foldkit::geometry;
 
-CreasePattern pattern_for(int id) {
-  if (id > 0) return build_or_throw(generators::single_vertex(std::vector<double>(static_cast<std::size_t>(id), 2 * M_PI / id)));
-  return build_or_throw(generators::miura(-id, -id));  // negative: Miura-ori −id × −id
-}
-
-FoldState some_state(const CreasePattern& p) {
-  std::mt19937 rng(1);
-  std::uniform_real_distribution<double> u(-0.5, 0.5);
-  FoldState s = FoldState::flat(p);
-  for (Eigen::Index i = 0; i < s.angles.size(); ++i) s.angles[i] = u(rng);
-  return s;
-}
+using foldkit::bench::pattern_for;
+using foldkit::bench::some_state;
 
 void BM_Closure_Ours(benchmark::State& state) {
   const CreasePattern p = pattern_for(static_cast<int>(state.range(0)));

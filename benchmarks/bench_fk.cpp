@@ -10,25 +10,15 @@
 
 #include <benchmark/benchmark.h>
 
-#include "foldkit/geometry/generators.hpp"
+#include "bench_patterns.hpp"
 #include "foldkit/geometry/kinematics.hpp"
 
 namespace {
 
 using namespace foldkit::geometry;
 
-CreasePattern pattern_for(int id) {
-  if (id > 0) return build_or_throw(generators::single_vertex(std::vector<double>(static_cast<std::size_t>(id), 2 * M_PI / id)));
-  return build_or_throw(generators::miura(-id, -id));
-}
-
-FoldState some_state(const CreasePattern& p) {
-  std::mt19937 rng(1);
-  std::uniform_real_distribution<double> u(-0.5, 0.5);
-  FoldState s = FoldState::flat(p);
-  for (Eigen::Index i = 0; i < s.angles.size(); ++i) s.angles[i] = u(rng);
-  return s;
-}
+using foldkit::bench::pattern_for;
+using foldkit::bench::some_state;
 
 // exp of the twist of a pure rotation by θ about the unit axis ω through q: [R, (I − R) q; 0, 1].
 Eigen::Matrix4d twist_exp(const Eigen::Vector3d& w, const Eigen::Vector3d& q, double theta) {
