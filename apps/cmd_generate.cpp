@@ -5,6 +5,9 @@
 
 #include "cli_common.hpp"
 #include "foldkit/geometry/generators.hpp"
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/cmml.hpp"
+#include "foldkit/planners/cube_chain.hpp"
 
 namespace foldkit::apps {
 namespace {
@@ -79,6 +82,7 @@ Command add_generate(CLI::App& root) {
     int n = 4, rows = 4, cols = 4, rings = 3, spokes = 8, units = 3, cubes = 2;
     double width = 1, height = 1, cell = 1, ring_width = 1, a = 1, b = 1, angle = 60, radius = 1;
     double length = 4, half_width = 1, bow = 1, tile = 1, side = 1, twist = 60, pleat = 1;
+    std::string chain_cmml;
   };
   auto p = std::make_shared<Params>();
   const auto positive = CLI::PositiveNumber;
@@ -137,6 +141,8 @@ Command add_generate(CLI::App& root) {
   CLI::App* cubes = kind(app, "cube-sheet", "Cube nets in a row (paper Fig. 8a)", common);
   cubes->add_option("--cubes", p->cubes, "Number of cube nets")->check(count)->capture_default_str();
   cubes->add_option("--tile", p->tile, "Tile size")->check(positive)->capture_default_str();
+  cubes->add_option("--chain-cmml", p->chain_cmml,
+                    "Also write the CMML that folds the sheet into a straight line of cubes (docs/CARPENTER.md)");
   cubes->callback([=] { *make = [=] { return gen::cube_sheet(p->cubes, p->tile, common->joints); }; });
 
   CLI::App* twist = kind(app, "square-twist", "The classic square twist (not rigidly foldable)", common);
@@ -163,11 +169,24 @@ Command add_generate(CLI::App& root) {
             geometry::PatternSpec spec = (*make)();
             if (!common->title.empty()) spec.title = common->title;
             const geometry::CreasePattern pattern = geometry::build_or_throw(spec);
+            // The folding is built before anything is written, so a failure leaves no file behind.
+            std::string chain;
+            std::size_t chain_events = 0;
+            if (cubes->parsed() && !p->chain_cmml.empty()) {
+              const geometry::FoldSequence folding = planners::fold_cube_chain(pattern, p->cubes);
+              chain_events = folding.events.size();
+              chain = io::write_cmml(folding);
+            }
             save_pattern(common->output, pattern);
             std::cerr << common->output << ": " << pattern.actors().size() << " actors, " << pattern.joints().size()
                       << " joints\n";
-            if (common->json)
-              print_json({{"output", common->output}, {"actors", pattern.actors().size()}, {"joints", pattern.joints().size()}});
+            if (!chain.empty()) {
+              io::write_file_atomic(p->chain_cmml, chain);
+              std::cerr << p->chain_cmml << ": " << chain_events << " events folding " << p->cubes << " nets into a line of cubes\n";
+            }
+            nlohmann::json out{{"output", common->output}, {"actors", pattern.actors().size()}, {"joints", pattern.joints().size()}};
+            if (!chain.empty()) out["chain_cmml"] = p->chain_cmml, out["chain_events"] = chain_events;
+            if (common->json) print_json(out);
             return kOk;
           }};
 }

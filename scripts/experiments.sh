@@ -102,7 +102,7 @@ plot fig10_beam "$out/fig10/fig10_beam.csv" --x case --y tip_mm,paper_mm --label
 
 if [ "$docs" = 1 ]; then
   mkdir -p docs/results
-  for f in "$out"/plots/*.svg "$out"/fig67/fig7_frame_*.svg "$out"/fig67/birdbase.svg; do
+  for f in "$out"/plots/*.svg "$out"/fig67/fig7_frame_*.svg "$out"/fig67/birdbase.svg "$out"/fig5a/fig5a_event_*.svg; do
     [ -f "$f" ] && cp "$f" docs/results/
   done
   echo "== copied the plots to docs/results/" >&2

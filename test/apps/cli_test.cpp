@@ -49,6 +49,21 @@ TEST(Cli, GenerateInfoJson) {
   EXPECT_EQ(j["interior_vertex_degrees"]["4"], 6);
 }
 
+// The cube sheet with the CMML that folds it into a line of cubes: the simulator replays it valid.
+TEST(Cli, CubeSheetComesWithItsChainFolding) {
+  const std::string dir = temp_dir();
+  const CliResult g = foldkit({"generate", "cube-sheet", "--cubes", "3", "-o", dir + "/sheet.pmml", "--chain-cmml",
+                               dir + "/chain.cmml", "--json"});
+  ASSERT_EQ(g.exit, 0) << g.err;
+  const auto j = nlohmann::json::parse(g.out);
+  EXPECT_EQ(j["chain_events"], 9);
+  EXPECT_EQ(j["chain_cmml"], dir + "/chain.cmml");
+  const CliResult s = foldkit({"simulate", dir + "/sheet.pmml", dir + "/chain.cmml", "--json"});
+  ASSERT_EQ(s.exit, 0) << s.err;
+  // The option belongs to the cube sheet only.
+  EXPECT_EQ(foldkit({"generate", "strip", "-o", dir + "/strip.pmml", "--chain-cmml", dir + "/x.cmml"}).exit, 2);
+}
+
 TEST(Cli, EveryGeneratorValidates) {
   const std::string dir = temp_dir();
   const std::vector<std::vector<std::string>> kinds = {
