@@ -26,6 +26,12 @@ FileKind kind_of(const std::string& path) {
   return FileKind::Unknown;
 }
 
+bool has_extension(const std::string& path, const std::string& extension) {
+  if (path.size() < extension.size()) return false;
+  return std::equal(extension.begin(), extension.end(), path.end() - static_cast<std::ptrdiff_t>(extension.size()),
+                    [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b)); });
+}
+
 LoadedPattern load_pattern(const std::string& path, const geometry::BuildOptions& options) {
   switch (kind_of(path)) {
     case FileKind::Pmml: return {io::read_pmml(path, options), std::nullopt, {}};

@@ -45,6 +45,8 @@ struct UsageError : std::runtime_error {
 
 enum class FileKind { Pmml, Cmml, Fold, Svg, Unknown };
 FileKind kind_of(const std::string& path);
+// Whether `path` ends with `extension` (".csv"), ignoring case as kind_of() does.
+bool has_extension(const std::string& path, const std::string& extension);
 
 // A crease pattern from .pmml or .fold (throws ParseError; UsageError for other extensions).
 struct LoadedPattern {

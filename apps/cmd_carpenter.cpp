@@ -15,10 +15,6 @@
 namespace foldkit::apps {
 namespace {
 
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 struct Options {
   std::string chain, output, frames_csv, state;
   bool closed = false, fold = false, json = false;
@@ -44,7 +40,7 @@ int run_spherical(const Options& opt) {
     }
   }();
   if (!opt.output.empty()) {
-    if (!ends_with(opt.output, ".cmml")) throw UsageError(opt.output + ": a single vertex's output is CMML (.cmml)");
+    if (!has_extension(opt.output, ".cmml")) throw UsageError(opt.output + ": a single vertex's output is CMML (.cmml)");
     io::write_file_atomic(opt.output, io::write_cmml(r.folding));
   }
   std::cerr << opt.chain << ": " << (r.flat ? "flattened" : "not flattened") << " in " << r.steps << " steps: " << r.message
@@ -61,8 +57,8 @@ int run_spherical(const Options& opt) {
 }
 
 int run_planar(const Options& opt) {
-  if (!opt.output.empty() && !ends_with(opt.output, ".cmml") && !ends_with(opt.output, ".json") &&
-      !ends_with(opt.output, ".csv"))
+  if (!opt.output.empty() && !has_extension(opt.output, ".cmml") && !has_extension(opt.output, ".json") &&
+      !has_extension(opt.output, ".csv"))
     throw UsageError(opt.output + ": unknown output format (expected .cmml, .json or .csv)");
   planners::PlanarChain chain{planners::parse_chain_points(io::read_file(opt.chain), opt.chain), opt.closed};
   try {
@@ -76,9 +72,9 @@ int run_planar(const Options& opt) {
   const std::vector<planners::Frame2> frames = opt.fold ? planners::reversed(r.frames) : r.frames;
   if (!opt.output.empty()) {
     std::string text;
-    if (ends_with(opt.output, ".cmml"))
+    if (has_extension(opt.output, ".cmml"))
       text = io::write_cmml(planners::turning_angle_sequence(frames, opt.closed, opt.chain));
-    else if (ends_with(opt.output, ".json"))
+    else if (has_extension(opt.output, ".json"))
       text = planners::frames_json(frames, opt.closed);
     else
       text = planners::frames_csv(frames);

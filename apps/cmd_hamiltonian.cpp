@@ -9,10 +9,6 @@
 namespace foldkit::apps {
 namespace {
 
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 std::string path_text(const planners::HamiltonianResult& r, bool three_d) {
   std::ostringstream out;
   for (const planners::Cell& c : r.path) {
@@ -55,7 +51,7 @@ Command add_hamiltonian(CLI::App& root) {
   return {app, [opt] {
             const std::string& path = opt->shape;
             const bool three_d = planners::is_voxel_path(path);
-            if (!three_d && !ends_with(path, ".txt") && !ends_with(path, ".grid") && !ends_with(path, ".pbm"))
+            if (!three_d && !has_extension(path, ".txt") && !has_extension(path, ".grid") && !has_extension(path, ".pbm"))
               throw UsageError(path + ": unknown shape format (expected .txt, .grid, .pbm or .vox)");
             if (opt->refine && opt->cycle) throw UsageError("--refine always builds a cycle; --cycle is for the exact search");
             planners::ExactOptions exact;

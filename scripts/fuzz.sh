@@ -21,7 +21,7 @@ if [ ! -d "$corpus" ]; then
   cp ../shared/fixtures/fold/*."$name" test/data/good/*."$name" "$corpus"/ 2>/dev/null || true
   # Command lines: every verb's --help, and the README's examples, NUL-separated.
   if [ "$name" = cli ]; then
-    for verb in validate info generate convert dof project simulate plan stiffness demo; do
+    for verb in validate info generate convert dof project simulate plan fold stiffness demo hamiltonian carpenter bench bench-merge; do
       printf '%s\000--help' "$verb" > "$corpus/help-$verb"
     done
     printf 'generate\000miura\000--rows\000040\000--cols\000040\000-o\000miura.pmml' > "$corpus/generate"

@@ -215,13 +215,23 @@ PixelShape parse_pbm(const std::string& bytes, const std::string& file) {
   return shape;
 }
 
-bool is_voxel_path(const std::string& path) {
-  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".vox") == 0;
+namespace {
+
+// Extensions are matched ignoring case (shape.PBM is a PBM), as the CLI matches them.
+bool has_extension(const std::string& path, const char (&extension)[5]) {
+  if (path.size() < 4) return false;
+  for (std::size_t k = 0; k < 4; ++k)
+    if (std::tolower(static_cast<unsigned char>(path[path.size() - 4 + k])) != extension[k]) return false;
+  return true;
 }
+
+}  // namespace
+
+bool is_voxel_path(const std::string& path) { return has_extension(path, ".vox"); }
 
 PixelShape read_pixel_shape(const std::string& path) {
   const std::string bytes = io::read_file(path);
-  const bool pbm = path.size() >= 4 && path.compare(path.size() - 4, 4, ".pbm") == 0;
+  const bool pbm = has_extension(path, ".pbm");
   return pbm ? parse_pbm(bytes, path) : parse_pixel_grid(bytes, path);
 }
 

@@ -64,6 +64,16 @@ TEST(CarpenterCli, OpenChainStraightensWithJsonAndFiles) {
   EXPECT_NEAR(seq.events.front().folds.front().angle, M_PI / 2, 1e-12);  // the input's left turn
 }
 
+TEST(CarpenterCli, OutputExtensionIgnoresCase) {
+  const std::string chain = write_temp("spiral-upper.txt", kSpiral);
+  const std::string json = temp_dir() + "/SPIRAL.JSON";
+  const CliResult r = foldkit({"carpenter", chain, "-o", json});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const auto frames = nlohmann::json::parse(slurp(json));
+  EXPECT_FALSE(frames["closed"].get<bool>());
+  EXPECT_GT(frames["frames"].size(), 1u);
+}
+
 TEST(CarpenterCli, FoldWritesTheFramesBackwards) {
   const std::string chain = write_temp("spiral2.txt", kSpiral);
   const std::string json = write_temp("fold.json", "");

@@ -59,6 +59,10 @@ TEST(HamiltonianCli, PbmAndVoxels) {
   const CliResult pbm = foldkit({"hamiltonian", write_temp("l.pbm", "P1\n2 3\n1 0\n1 0\n1 1\n"), "--json"});
   ASSERT_EQ(pbm.exit, 0) << pbm.err;
   EXPECT_EQ(nlohmann::json::parse(pbm.out)["length"], 4);
+  // Extensions ignore case, as for the other verbs: an upper-case .PBM is read as PBM.
+  const CliResult upper = foldkit({"hamiltonian", write_temp("L.PBM", "P1\n2 3\n1 0\n1 0\n1 1\n"), "--json"});
+  ASSERT_EQ(upper.exit, 0) << upper.err;
+  EXPECT_EQ(nlohmann::json::parse(upper.out)["length"], 4);
   const std::string out = write_temp("v.path", "");
   const CliResult vox = foldkit({"hamiltonian", write_temp("v.vox", "##\n#.\n\n#.\n..\n"), "--refine", "-o", out, "--json"});
   ASSERT_EQ(vox.exit, 0) << vox.err;
