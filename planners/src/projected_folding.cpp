@@ -10,7 +10,7 @@
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/simulation/collision_world.hpp"
-#include "projected_folding_tangent.hpp"
+#include "foldkit/geometry/null_space.hpp"
 
 namespace foldkit::planners {
 
@@ -101,7 +101,7 @@ struct Corrected {
 class Folder {
  public:
   Folder(const geometry::CreasePattern& pattern, const ProjectedFoldingOptions& o, ProjectedFoldingResult& r)
-      : pattern_(pattern), opt_(o), result_(r), system_(pattern) {
+      : pattern_(pattern), opt_(o), result_(r), system_(pattern), solver_(o.rank_tolerance) {
     po_.tolerance = 0.1 * o.closure_tolerance;
     po_.max_iterations = 60;
     po_.keep_signs = true;
@@ -119,7 +119,7 @@ class Folder {
       if (error <= po_.tolerance) return {s, true, it, error};
       if (it == 6) break;
       system_.evaluate(s, r, J);
-      if (!detail::min_norm_step(J, r, opt_.rank_tolerance, delta)) break;
+      if (!solver_.min_norm_step(J, r, delta)) break;
       s.angles += delta;
       ++result_.newton_iterations;
       if ((s.angles.array() * guess.angles.array() < 0.0).any() || s.angles.cwiseAbs().maxCoeff() > kPi) break;
@@ -146,7 +146,7 @@ class Folder {
       Eigen::VectorXd r;
       Eigen::SparseMatrix<double> J;
       system_.evaluate(x, r, J);
-      const detail::Tangent t = detail::project_onto_null_space(J, w, opt_.rank_tolerance);
+      const geometry::NullSpaceVelocity t = solver_.project_onto_null_space(J, w);
       result_.rank = t.rank;
       result_.dof = static_cast<int>(system_.cols()) - t.rank;
       result_.min_pivot_ratio = std::min(result_.min_pivot_ratio, t.pivot_ratio);
@@ -282,6 +282,7 @@ class Folder {
   const ProjectedFoldingOptions& opt_;
   ProjectedFoldingResult& result_;
   geometry::ClosureSystem system_;
+  geometry::LeastNormSolver solver_;  // keeps its ordering between the thousands of steps
   geometry::ProjectionOptions po_;
   std::optional<PathChecker> checker_;
 };

@@ -4,11 +4,14 @@
 #include <stdexcept>
 
 #include <Eigen/QR>
+#include <Eigen/SparseCore>
 #include <ompl/base/ConstrainedSpaceInformation.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/constraint/AtlasStateSpace.h>
 #include <ompl/base/spaces/constraint/ProjectedStateSpace.h>
 #include <ompl/base/spaces/constraint/TangentBundleStateSpace.h>
+
+#include "foldkit/geometry/null_space.hpp"
 
 namespace foldkit::statespaces {
 
@@ -45,6 +48,10 @@ ClosureConstraint::ClosureConstraint(const geometry::CreasePattern& pattern, con
       system_(pattern),
       numerical_(numerical_jacobian) {
   rank_at(system_, reference, &rows_);
+  std::vector<Eigen::Triplet<double>> pick;
+  for (std::size_t i = 0; i < rows_.size(); ++i) pick.emplace_back(static_cast<Eigen::Index>(i), rows_[i], 1.0);
+  select_.resize(static_cast<Eigen::Index>(rows_.size()), system_.rows());
+  select_.setFromTriplets(pick.begin(), pick.end());
   setManifoldDimension(static_cast<unsigned int>(system_.cols()) - static_cast<unsigned int>(rows_.size()));
   setMaxIterations(100);
 }
@@ -82,19 +89,41 @@ void ClosureConstraint::jacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eig
 }
 
 bool ClosureConstraint::project(Eigen::Ref<Eigen::VectorXd> x) const {
-  Eigen::VectorXd f(getCoDimension());
-  Eigen::MatrixXd j(getCoDimension(), x.size());
   const double tolerance2 = getTolerance() * getTolerance();
-  function(x, f);
-  for (unsigned int iteration = 0; !(f.squaredNorm() <= tolerance2); ++iteration) {
-    if (iteration >= getMaxIterations() || !f.allFinite()) return false;
-    jacobian(x, j);
-    const Eigen::VectorXd step = j.completeOrthogonalDecomposition().solve(f);
-    if (!step.allFinite()) return false;
-    x -= step;
+  Eigen::VectorXd f(getCoDimension());
+  if (numerical_) {
+    // The baseline keeps the dense path: a complete orthogonal decomposition of the
+    // finite-difference Jacobian each iteration.
+    Eigen::MatrixXd j(getCoDimension(), x.size());
     function(x, f);
+    for (unsigned int iteration = 0; !(f.squaredNorm() <= tolerance2); ++iteration) {
+      if (iteration >= getMaxIterations() || !f.allFinite()) return false;
+      jacobian(x, j);
+      const Eigen::VectorXd step = j.completeOrthogonalDecomposition().solve(f);
+      if (!step.allFinite()) return false;
+      x -= step;
+      function(x, f);
+    }
+    return true;
   }
-  return true;
+  // The exact Jacobian is sparse (each loop row touches the creases round one vertex): the
+  // least-norm step comes from one sparse LDLᵀ of JᵀJ + εI, where a dense decomposition of a
+  // Miura 20×20 Jacobian took 0.55 s per projection.
+  thread_local Eigen::VectorXd r, step;
+  thread_local Eigen::SparseMatrix<double> j;
+  // Per thread: the solver keeps the sparsity analysis of the last Jacobian it factored, which
+  // this constraint's Jacobians all share.
+  thread_local geometry::LeastNormSolver solver(kRankTolerance);
+  for (unsigned int iteration = 0;; ++iteration) {
+    if (!x.allFinite()) return false;
+    system_.evaluate(geometry::FoldState{x}, r, j);
+    for (std::size_t i = 0; i < rows_.size(); ++i) f[static_cast<Eigen::Index>(i)] = r[rows_[i]];
+    if (f.squaredNorm() <= tolerance2) return true;
+    if (iteration >= getMaxIterations() || !f.allFinite()) return false;
+    const Eigen::SparseMatrix<double> kept = select_ * j;
+    if (!solver.min_norm_step(kept, f, step)) return false;
+    x += step;
+  }
 }
 
 ConstrainedKind parse_constrained_kind(const std::string& name) {

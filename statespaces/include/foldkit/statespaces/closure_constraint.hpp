@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/SparseCore>
 #include <ompl/base/Constraint.h>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/constraint/ConstrainedStateSpace.h>
@@ -28,9 +29,11 @@ class ClosureConstraint : public ompl::base::Constraint {
   using ompl::base::Constraint::jacobian;
   void function(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> out) const override;
   void jacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::MatrixXd> out) const override;
-  // OMPL's Newton projection with minimum-norm steps, made safe: Constraint::project of OMPL
-  // 1.5.2 aborts inside Eigen's JacobiSVD on some Miura samples (an assertion in SVD::solve);
-  // this one solves by complete orthogonal decomposition and gives up on non-finite values.
+  // OMPL's Newton projection with minimum-norm steps, made safe and sparse: Constraint::project
+  // of OMPL 1.5.2 aborts inside Eigen's JacobiSVD on some Miura samples (an assertion in
+  // SVD::solve) and factors the dense Jacobian. This one takes each step from a sparse LDLᵀ of
+  // JᵀJ + εI (geometry::min_norm_step), or, with the numerical Jacobian (the baseline), from a
+  // complete orthogonal decomposition of the dense one; it gives up on non-finite values.
   using ompl::base::Constraint::project;
   bool project(Eigen::Ref<Eigen::VectorXd> x) const override;
 
@@ -41,8 +44,13 @@ class ClosureConstraint : public ompl::base::Constraint {
   static unsigned int rank_at(const geometry::ClosureSystem& system, const geometry::FoldState& reference,
                               std::vector<Eigen::Index>* rows);
 
+  // Singular values below √kRankTolerance·σ_max barely move the least-norm step (as in
+  // planners::ProjectedFoldingOptions::rank_tolerance).
+  static constexpr double kRankTolerance = 1e-8;
+
   geometry::ClosureSystem system_;
   std::vector<Eigen::Index> rows_;
+  Eigen::SparseMatrix<double> select_;  // picks rows_ out of the full residual
   bool numerical_;
 };
 

@@ -1,0 +1,64 @@
+#pragma once
+// Sparse null-space projection and least-norm Gauss–Newton steps for closure Jacobians: used by
+// projected-velocity folding (planners::fold_projected) and by the constrained planning space's
+// projection (statespaces::ClosureConstraint), neither of which may factor a dense Jacobian on
+// patterns with hundreds of creases.
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+namespace foldkit::geometry {
+
+struct NullSpaceVelocity {
+  Eigen::VectorXd velocity;  // the desired velocity's orthogonal projection onto null(J)
+  int rank = 0;              // numerical rank of J
+  double pivot_ratio = 1.0;  // √(smallest / largest kept pivot of JᵀJ): ≈ σ_min / σ_max of J
+};
+
+// Both operations factor JᵀJ + εI, ε = 1e-4 · rank_tolerance · max diag(JᵀJ), by a sparse LDLᵀ
+// (AMD ordering) with one step of iterative refinement (the matrix is deliberately
+// ill-conditioned, 1/ε); no dense SVD. The ordering and symbolic analysis are kept between calls
+// and redone only when the Jacobian's sparsity pattern changes — a closure Jacobian keeps its
+// pattern, and the ordering was a fifth of a constrained planner's time when redone each step.
+class LeastNormSolver {
+ public:
+  explicit LeastNormSolver(double rank_tolerance = 1e-8) : rank_tolerance_(rank_tolerance) {}
+
+  // v = ε·(JᵀJ + εI)⁻¹·w, the limit of which as ε → 0 is w's orthogonal projection onto null(J):
+  // components of w along right singular vectors of J with singular value σ are scaled by
+  // ε / (σ² + ε), so the range part vanishes (a corrector removes what is left) and the null part
+  // is kept, with no rank decision. The rank is counted from the pivots of the same
+  // factorisation: every Schur complement of JᵀJ + εI is at least ε, a null direction leaves a
+  // pivot near ε, so pivots below rank_tolerance × the largest count as zero (σ below
+  // √rank_tolerance·σ_max). An estimate: LDLᵀ pivots are not rank revealing, and on random sparse
+  // matrices the count ran 1–3 above the SVD rank (test/geometry/null_space_test.cpp).
+  NullSpaceVelocity project_onto_null_space(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& desired);
+
+  // The Gauss–Newton step toward the closure manifold of least norm, Δ = −J⁺r, computed as
+  // −(JᵀJ + εI)⁻¹Jᵀr. False when the factorisation fails or the step is not finite.
+  bool min_norm_step(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& residual, Eigen::VectorXd& step);
+
+  // How many times the ordering and symbolic analysis were computed (for tests).
+  int analyses() const { return analyses_; }
+
+ private:
+  bool factor(const Eigen::SparseMatrix<double>& jacobian);
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+
+  double rank_tolerance_;
+  Eigen::SparseMatrix<double> a_;  // JᵀJ + εI
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+  double eps_ = 0.0;
+  std::vector<int> outer_, inner_;  // the pattern ldlt_ was analysed for
+  int analyses_ = 0;
+};
+
+// One-off forms of the above (a fresh analysis each call).
+NullSpaceVelocity project_onto_null_space(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& desired,
+                                          double rank_tolerance);
+bool min_norm_step(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& residual, double rank_tolerance,
+                   Eigen::VectorXd& step);
+
+}  // namespace foldkit::geometry
