@@ -207,7 +207,7 @@ Command add_bench_merge(CLI::App& root) {
               if (!std::filesystem::is_directory(dir)) throw UsageError(dir + " is not a folder");
               std::vector<std::string> files;
               for (const auto& e : std::filesystem::directory_iterator(dir))
-                if (e.is_regular_file() && e.path().extension() == ".log") files.push_back(e.path().string());
+                if (e.is_regular_file() && has_extension(e.path().string(), ".log")) files.push_back(e.path().string());
               std::sort(files.begin(), files.end());
               for (const auto& f : files) {
                 planners::BenchLog log;

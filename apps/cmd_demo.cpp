@@ -93,7 +93,7 @@ nlohmann::json stiffness_stage(const std::string& dir, nlohmann::json& simulatio
   io::write_file_atomic(base + "-folded.cmml", io::write_cmml(geometry::sequence_to(net, closed, M_PI / 6, "cube net folded")));
   io::write_file_atomic(base + "-top-load.loadcase",
                         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<LoadCase>\n  <Title>cube under a top load</Title>\n"
-                        "  <Fixed>2</Fixed>\n  <Load><ActorID>4</ActorID><Force>0 0 -40</Force></Load>\n</LoadCase>\n");
+                        "  <Fixed>1</Fixed>\n  <Load><ActorID>3</ActorID><Force>0 0 -40</Force></Load>\n</LoadCase>\n");
   // Read back what was written, as `foldkit stiffness` would.
   const geometry::CreasePattern pattern = load_pattern(base + ".pmml").pattern;
   simulations["cube-1-folded"] =

@@ -1,7 +1,9 @@
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <random>
 #include <sstream>
+#include <system_error>
 
 #include "cli_common.hpp"
 #include "foldkit/geometry/generators.hpp"
@@ -169,7 +171,8 @@ Command add_generate(CLI::App& root) {
             geometry::PatternSpec spec = (*make)();
             if (!common->title.empty()) spec.title = common->title;
             const geometry::CreasePattern pattern = geometry::build_or_throw(spec);
-            // The folding is built before anything is written, so a failure leaves no file behind.
+            // The folding is built before anything is written; if its file then cannot be written,
+            // the sheet just written is removed again, so a failure leaves no half of the pair.
             std::string chain;
             std::size_t chain_events = 0;
             if (cubes->parsed() && !p->chain_cmml.empty()) {
@@ -181,7 +184,13 @@ Command add_generate(CLI::App& root) {
             std::cerr << common->output << ": " << pattern.actors().size() << " actors, " << pattern.joints().size()
                       << " joints\n";
             if (!chain.empty()) {
-              io::write_file_atomic(p->chain_cmml, chain);
+              try {
+                io::write_file_atomic(p->chain_cmml, chain);
+              } catch (...) {
+                std::error_code ignored;
+                std::filesystem::remove(common->output, ignored);
+                throw;
+              }
               std::cerr << p->chain_cmml << ": " << chain_events << " events folding " << p->cubes << " nets into a line of cubes\n";
             }
             nlohmann::json out{{"output", common->output}, {"actors", pattern.actors().size()}, {"joints", pattern.joints().size()}};

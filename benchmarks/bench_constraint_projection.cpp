@@ -12,14 +12,13 @@
 #include <map>
 #include <memory>
 #include <random>
-#include <stdexcept>
 
 #include <Eigen/QR>
 #include <benchmark/benchmark.h>
 
-#include "foldkit/geometry/generators.hpp"
-#include "foldkit/geometry/projection.hpp"
 #include "foldkit/statespaces/closure_constraint.hpp"
+
+#include "bench_patterns.hpp"
 
 namespace {
 
@@ -37,17 +36,7 @@ const Problem& problem(int n) {
   if (slot) return *slot;
   slot = std::make_unique<Problem>(Problem{geometry::build_or_throw(geometry::generators::miura(n, n)), nullptr, {}});
   const geometry::CreasePattern& p = slot->pattern;
-  const geometry::ClosureSystem sys(p);
-  geometry::FoldState s = geometry::FoldState::flat(p);
-  for (double m = 0.1; m <= 1.0 + 1e-9; m += 0.1) {
-    for (std::size_t j = 0; j < p.joints().size(); ++j) {
-      const auto i = static_cast<Eigen::Index>(j);
-      s.angles[i] = (p.joints()[j].assignment == geometry::Assignment::Mountain ? 1 : -1) * std::max(m, std::abs(s.angles[i]));
-    }
-    const auto r = geometry::project(sys, s);
-    if (!r.converged) throw std::runtime_error("Miura continuation failed: " + r.message);
-    s = r.state;
-  }
+  const geometry::FoldState s = bench::closed_miura(p, geometry::ClosureSystem(p), 1.0);
   slot->constraint = std::make_unique<statespaces::ClosureConstraint>(p, s);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-0.02, 0.02);

@@ -67,8 +67,9 @@ void BM_RRTConnectProjectedMiura(benchmark::State& state) {
   if (!r.solved) state.SetLabel("not solved: " + r.message);
 }
 // 20 × 20 became feasible when ClosureConstraint::project moved to sparse steps (1.2 ms per
-// projection instead of 0.18–0.55 s with a dense decomposition, under which a 60 s run had not
-// returned after 15 min); it is still not solved within 60 s (docs/PROJECTED_FOLDING.md).
+// projection instead of 175 ms with a dense decomposition in bench_constraint_projection — 0.55 s
+// measured under load earlier — under which a 60 s run had not returned after 15 min); it is
+// still not solved within 60 s (docs/PROJECTED_FOLDING.md).
 BENCHMARK(BM_RRTConnectProjectedMiura)
     ->Args({4, 30})
     ->Args({10, 60})

@@ -19,6 +19,8 @@
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/geometry/projection.hpp"
 
+#include "bench_patterns.hpp"
+
 namespace {
 
 using namespace foldkit::geometry;
@@ -28,21 +30,6 @@ struct Problem {
   std::unique_ptr<ClosureSystem> system;
   FoldState start;
 };
-
-// A Miura-ori folded along its mode by continuation to fold angle `m` on every crease's side.
-FoldState closed_miura(const CreasePattern& p, const ClosureSystem& sys, double m_end) {
-  FoldState s = FoldState::flat(p);
-  for (double m = 0.1; m <= m_end + 1e-9; m += 0.1) {
-    for (std::size_t j = 0; j < p.joints().size(); ++j) {
-      const auto i = static_cast<Eigen::Index>(j);
-      s.angles[i] = (p.joints()[j].assignment == Assignment::Mountain ? 1 : -1) * std::max(m, std::abs(s.angles[i]));
-    }
-    const auto r = project(sys, s);
-    if (!r.converged) throw std::runtime_error("closed_miura: continuation failed: " + r.message);
-    s = r.state;
-  }
-  return s;
-}
 
 const Problem& problem(int id) {
   static std::map<int, std::unique_ptr<Problem>> cache;
@@ -60,7 +47,7 @@ const Problem& problem(int id) {
     for (Eigen::Index i = 0; i < slot->start.angles.size(); ++i) slot->start.angles[i] = u(rng);
   } else {
     std::uniform_real_distribution<double> u(-0.02, 0.02);
-    slot->start = closed_miura(slot->pattern, *slot->system, 1.0);
+    slot->start = foldkit::bench::closed_miura(slot->pattern, *slot->system, 1.0);
     for (Eigen::Index i = 0; i < slot->start.angles.size(); ++i) slot->start.angles[i] += u(rng);
   }
   return *slot;

@@ -123,6 +123,7 @@ struct Case {
 struct Outcome {
   double tip = 0, max = 0, residual = 0, condition = 0;
   int iterations = 0;
+  int fixed = 0, loaded = 0;  // tiles held at x = 0 and loaded at x = 4t
   bool converged = false;
 };
 
@@ -153,6 +154,8 @@ Outcome run(const analysis::Structure& base, const Case& c, bool linear) {
   o.linear = linear;
   const auto r = analysis::solve(p, o);
   Outcome out;
+  out.fixed = static_cast<int>(std::count(p.fixed.begin(), p.fixed.end(), true));
+  out.loaded = static_cast<int>(loaded.size());
   out.converged = r.converged;
   out.iterations = r.iterations;
   out.residual = r.residual_norm;
@@ -201,10 +204,10 @@ int main(int argc, char** argv) {
      << "|---|---|---|---|---|---|---|---|---|\n";
   csv << "case,tip_mm,linear_tip_mm,ratio,paper_mm,paper_ratio,iterations,residual,condition\n";
   std::vector<Outcome> results;
-  bool ok = counts[0] == 47;
+  bool ok = counts[0] == 47 && counts[1] == 10;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Outcome o = run(b, cases[i], false), l = run(b, cases[i], true);
-    ok = ok && o.converged && l.converged;
+    ok = ok && o.converged && l.converged && o.fixed == 2 && o.loaded == 2;
     results.push_back(o);
     const double base = results[i < 3 ? 0 : 3].tip;
     const double ratio = o.tip / base, paper_ratio = paper[i] / paper[i < 3 ? 0 : 3];

@@ -25,8 +25,8 @@ analysis::Problem cube_problem(double translational, double rotational) {
     pr.stiffness[static_cast<int>(kind)] = k;
   }
   pr.fixed.assign(6, false);
-  pr.fixed[1] = true;  // the base
-  pr.loads.push_back({3, Vector3d(3.0, -1.0, -40.0), pr.structure.modules[3].centroid + Vector3d(0.004, 0.003, 0.0)});
+  pr.fixed[0] = true;  // the base: actor 1, the root, lies flat and the cube rises above it
+  pr.loads.push_back({2, Vector3d(3.0, -1.0, -40.0), pr.structure.modules[2].centroid + Vector3d(0.004, 0.003, 0.0)});
   return pr;
 }
 

@@ -60,6 +60,11 @@ TEST(Cli, CubeSheetComesWithItsChainFolding) {
   EXPECT_EQ(j["chain_cmml"], dir + "/chain.cmml");
   const CliResult s = foldkit({"simulate", dir + "/sheet.pmml", dir + "/chain.cmml", "--json"});
   ASSERT_EQ(s.exit, 0) << s.err;
+  // A folding that cannot be written takes the sheet with it: no half of the pair is left.
+  const CliResult bad = foldkit({"generate", "cube-sheet", "--cubes", "2", "-o", dir + "/lone.pmml", "--chain-cmml",
+                                 dir + "/no-such-folder/chain.cmml"});
+  EXPECT_NE(bad.exit, 0);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/lone.pmml"));
   // The option belongs to the cube sheet only.
   EXPECT_EQ(foldkit({"generate", "strip", "-o", dir + "/strip.pmml", "--chain-cmml", dir + "/x.cmml"}).exit, 2);
 }

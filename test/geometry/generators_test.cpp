@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -15,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <boost/graph/connected_components.hpp>
 
 #include "foldkit/geometry/crease_pattern.hpp"
@@ -346,8 +348,61 @@ TEST(CubeSheet, NetsOfSixTilesHingedInARow) {
         area += std::abs(cross2(p.vertices()[t.v[1]] - p.vertices()[t.v[0]], p.vertices()[t.v[2]] - p.vertices()[t.v[0]])) / 2;
       EXPECT_NEAR(area, tile * tile, kTol);
     }
-    // A tree (Euler gave no cycles): the second tile of each net carries both caps.
+    // A tree (Euler gave no cycles): the middle tile of each net carries the caps above and below.
     for (int n = 0; n < k; ++n) EXPECT_EQ(boost::degree(*p.actor_index(6 * n + 2), g), 4u);
+  }
+}
+
+// The documented numbering (docs/GENERATORS.md), tile by tile and hinge by hinge, written out
+// from the text: net n's row at x ∈ [3n, 3n+3]·t, its caps on the middle tile.
+TEST(CubeSheet, TilesAndHingesWhereTheDocumentationPutsThem) {
+  const double t = 0.5;
+  const int k = 3;
+  const CreasePattern p = build_or_throw(gen::cube_sheet(k, t));
+  const auto box = [&](int id) {
+    Eigen::AlignedBox2d b;
+    for (const Triangle& tri : p.actors()[*p.actor_index(id)].triangles)
+      for (int v : tri.v) b.extend(p.vertices()[v]);
+    return b;
+  };
+  const auto expect_tile = [&](int id, double x0, double y0) {
+    const Eigen::AlignedBox2d b = box(id);
+    EXPECT_NEAR(b.min().x(), x0 * t, kTol) << id;
+    EXPECT_NEAR(b.min().y(), y0 * t, kTol) << id;
+    EXPECT_NEAR(b.max().x(), (x0 + 1) * t, kTol) << id;
+    EXPECT_NEAR(b.max().y(), (y0 + 1) * t, kTol) << id;
+  };
+  // Joint `id` joins actors a and b along the segment (x0, y0)–(x1, y1), in tiles.
+  const auto expect_joint = [&](int id, int a, int b, double x0, double y0, double x1, double y1, Assignment assignment) {
+    const Joint* j = nullptr;
+    for (const Joint& c : p.joints())
+      if (c.id == id) j = &c;
+    ASSERT_NE(j, nullptr) << id;
+    std::array<int, 2> ids{p.actors()[j->actors[0]].id, p.actors()[j->actors[1]].id};
+    std::sort(ids.begin(), ids.end());
+    EXPECT_EQ(ids, (std::array<int, 2>{std::min(a, b), std::max(a, b)})) << id;
+    Eigen::AlignedBox2d seg;
+    seg.extend(p.vertices()[j->v[0]]).extend(p.vertices()[j->v[1]]);
+    EXPECT_NEAR(seg.min().x(), std::min(x0, x1) * t, kTol) << id;
+    EXPECT_NEAR(seg.max().x(), std::max(x0, x1) * t, kTol) << id;
+    EXPECT_NEAR(seg.min().y(), std::min(y0, y1) * t, kTol) << id;
+    EXPECT_NEAR(seg.max().y(), std::max(y0, y1) * t, kTol) << id;
+    EXPECT_EQ(j->assignment, assignment) << id;
+  };
+  for (int n = 0; n < k; ++n) {
+    const int a = 6 * n, x = 3 * n;
+    expect_tile(a + 1, x, 0);       // first tile of the row
+    expect_tile(a + 2, x + 1, 0);   // middle tile
+    expect_tile(a + 3, x + 2, 0);   // last tile
+    expect_tile(a + 4, x + 1, -2);  // far cap
+    expect_tile(a + 5, x + 1, 1);   // cap above
+    expect_tile(a + 6, x + 1, -1);  // cap below
+    expect_joint(a + 1, a + 1, a + 2, x + 1, 0, x + 1, 1, Assignment::Valley);
+    expect_joint(a + 2, a + 2, a + 3, x + 2, 0, x + 2, 1, Assignment::Valley);
+    expect_joint(a + 3, a + 6, a + 4, x + 1, -1, x + 2, -1, Assignment::Valley);
+    expect_joint(a + 4, a + 2, a + 5, x + 1, 1, x + 2, 1, Assignment::Valley);
+    expect_joint(a + 5, a + 2, a + 6, x + 1, 0, x + 2, 0, Assignment::Valley);
+    if (n + 1 < k) expect_joint(a + 6, a + 3, a + 7, x + 3, 0, x + 3, 1, Assignment::Unassigned);
   }
 }
 

@@ -75,10 +75,23 @@ TEST(LeastNormSolver, AnalysesOncePerSparsityPattern) {
     EXPECT_LT((fresh - step).norm(), 1e-12 * (1.0 + step.norm()));
   }
   EXPECT_EQ(solver.analyses(), 1);
-  std::mt19937 other(11);
-  ASSERT_TRUE(solver.min_norm_step(random_jacobian(static_cast<int>(j.rows()), static_cast<int>(j.cols()), 10, other),
-                                   r, step));
+  // Same size and number of non-zeros, other pattern (the columns reversed): a new analysis, and
+  // the answer of a fresh solver.
+  const Eigen::Index n = j.cols();
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic> reverse(n);
+  for (Eigen::Index c = 0; c < n; ++c) reverse.indices()[c] = static_cast<int>(n - 1 - c);
+  const Sparse permuted = j * reverse;
+  ASSERT_EQ(permuted.nonZeros(), j.nonZeros());
+  ASSERT_TRUE(solver.min_norm_step(permuted, r, step));
   EXPECT_EQ(solver.analyses(), 2);
+  Eigen::VectorXd fresh;
+  ASSERT_TRUE(foldkit::geometry::min_norm_step(permuted, r, 1e-8, fresh));
+  EXPECT_LT((fresh - step).norm(), 1e-12 * (1.0 + step.norm()));
+  // Back to the first pattern: analysed again, not served from a stale analysis.
+  ASSERT_TRUE(solver.min_norm_step(j, r, step));
+  EXPECT_EQ(solver.analyses(), 3);
+  ASSERT_TRUE(foldkit::geometry::min_norm_step(j, r, 1e-8, fresh));
+  EXPECT_LT((fresh - step).norm(), 1e-12 * (1.0 + step.norm()));
 }
 
 }  // namespace

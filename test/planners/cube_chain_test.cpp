@@ -41,7 +41,8 @@ void expect_chain_of_cubes(int cubes) {
   std::vector<Eigen::Vector3d> centres;
   for (int n = 0; n < cubes; ++n) {
     // Six tiles round a unit cube: each tile's centre half a tile from the cube's centre along a
-    // different signed axis, and facing out along it.
+    // different signed axis, lying across that axis with its upper side toward the centre (the
+    // net's hinges are valleys).
     std::array<Eigen::Vector3d, 6> c;
     Eigen::Vector3d mid = Eigen::Vector3d::Zero();
     for (int t = 0; t < 6; ++t) {
@@ -58,9 +59,9 @@ void expect_chain_of_cubes(int cubes) {
       const std::size_t slot = static_cast<std::size_t>(2 * axis + (d[axis] > 0 ? 1 : 0));
       EXPECT_FALSE(seen[slot]) << "two tiles of net " << n << " on one face";
       seen[slot] = true;
-      // The tile's normal lies along the axis of its offset: it is a face, not a fin.
+      // The tile's normal lies along the axis of its offset (a face, not a fin), pointing in.
       const Eigen::Vector3d normal = poses[static_cast<std::size_t>(6 * n + t)].linear().col(2);
-      EXPECT_NEAR(std::abs(normal[axis]), 1.0, 1e-9);
+      EXPECT_NEAR(normal[axis] * (d[axis] > 0 ? -1.0 : 1.0), 1.0, 1e-9);
     }
     centres.push_back(mid);
   }
@@ -78,7 +79,7 @@ TEST(CubeChain, TheSheetFoldsIntoAStraightLineOfClosedCubes) {
   for (int cubes : {1, 2, 3, 6}) expect_chain_of_cubes(cubes);
 }
 
-TEST(CubeChain, RefusesOtherSheetsAndLongerChains) {
+TEST(CubeChain, RefusesOtherSheetsCountsAndSpeeds) {
   const CreasePattern two = build_or_throw(foldkit::geometry::generators::cube_sheet(2));
   EXPECT_THROW(fold_cube_chain(two, 3), std::invalid_argument);
   EXPECT_THROW(fold_cube_chain(two, 2, 0.0), std::invalid_argument);

@@ -62,8 +62,9 @@ struct DetectOptions {
 Structure build_structure(const geometry::CreasePattern& pattern, const geometry::FoldState& state,
                           const DetectOptions& options = {});
 
-// The same from explicit rigid motions of the actors (one per actor, from the flat sheet), for
-// structures assembled from separate pieces; each joint's two actors must stay together.
+// The same from explicit rigid motions of the actors (one per actor, from the flat sheet): a
+// folded state moved or turned as a whole, or pieces assembled by hand; each joint's two actors
+// must stay together.
 Structure build_structure(const geometry::CreasePattern& pattern, const std::vector<Eigen::Isometry3d>& poses,
                           const DetectOptions& options = {});
 

@@ -32,7 +32,7 @@ class ClosureConstraint : public ompl::base::Constraint {
   // OMPL's Newton projection with minimum-norm steps, made safe and sparse: Constraint::project
   // of OMPL 1.5.2 aborts inside Eigen's JacobiSVD on some Miura samples (an assertion in
   // SVD::solve) and factors the dense Jacobian. This one takes each step from a sparse LDLᵀ of
-  // JᵀJ + εI (geometry::min_norm_step), or, with the numerical Jacobian (the baseline), from a
+  // JᵀJ + εI (geometry::LeastNormSolver), or, with the numerical Jacobian (the baseline), from a
   // complete orthogonal decomposition of the dense one; it gives up on non-finite values.
   using ompl::base::Constraint::project;
   bool project(Eigen::Ref<Eigen::VectorXd> x) const override;
