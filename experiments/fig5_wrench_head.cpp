@@ -71,7 +71,11 @@ int main(int argc, char** argv) {
   Frame2 chain;
   for (const Cell& c : path.path) chain.emplace_back(c.x, -c.y);  // y up
 
-  const CarpenterResult r = carpenter_planar({chain, false});
+  // Joints turn at most 0.01 rad between frames (default 0.2): the figure's frames, and the
+  // overlap test below, which samples the motion at frames only, stay dense.
+  CarpenterOptions options;
+  options.max_turn = 0.01;
+  const CarpenterResult r = carpenter_planar({chain, false}, options);
   const std::vector<Frame2> fold = reversed(r.frames);  // straight → wrench head
 
   // Cubes: consecutive ones share a hinge edge, so only pairs two or more apart must stay apart.

@@ -118,8 +118,14 @@ MotionCheck check_motion(const std::vector<Frame2>& frames, bool closed) {
     }
     if (f == 0) continue;
     const Frame2& q = frames[f - 1];
+    // A pair whose squared distance did not shrink grew by ≥ 0 (sqrt is monotone), so once the
+    // minimum is ≤ 0 it needs no square roots: the check stays exact and O(n²) cheap flops.
     for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = i + 1; j < n; ++j) growth = std::min(growth, (p[j] - p[i]).norm() - (q[j] - q[i]).norm());
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const Eigen::Vector2d dp = p[j] - p[i], dq = q[j] - q[i];
+        if (growth <= 0.0 && dp.squaredNorm() >= dq.squaredNorm()) continue;
+        growth = std::min(growth, dp.norm() - dq.norm());
+      }
   }
   c.min_distance_growth = std::isinf(growth) ? 0.0 : growth;
   return c;

@@ -13,7 +13,7 @@ namespace foldkit::planners::detail {
 
 struct ExpansiveVelocity {
   std::vector<Eigen::Vector2d> v;  // one per vertex; vertices 0 and 1 (bar 0) are pinned
-  double t = 0.0;                  // smallest weighted strut rate over all pairs (≥ 1 when solved)
+  double t = 0.0;                  // smallest weighted strut rate over all pairs, capped at 2 (≥ 1 when solved)
   std::size_t lp_solves = 0;
   std::size_t struts = 0;                    // strut rows in the last LP
   std::vector<std::pair<int, int>> binding;  // struts within a factor 2 of the bound (vertex indices)

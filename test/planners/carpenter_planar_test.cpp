@@ -154,6 +154,39 @@ TEST(CarpenterPlanar, TwoHundredLinkChainStraightens) {
   EXPECT_NEAR((r.frames.back().back() - r.frames.back().front()).norm(), length, 1e-9);
 }
 
+// Bar directions spanning at most π: the closed-form straightening (every bar direction moved
+// linearly to a common one, docs/CARPENTER.md) takes over without an LP, in
+// ceil(max |turn| / max_turn) steps, and the frame oracle still sees no distance shrink. A hook
+// whose directions span more than π needs the LP first.
+TEST(CarpenterPlanar, MonotoneChainsStraightenInClosedFormWithoutLps) {
+  Frame2 zigzag;
+  for (int i = 0; i <= 30; ++i) zigzag.emplace_back(i, (i % 2) * 0.8);  // turns ±2·atan(0.8) = ±1.35 rad
+  const CarpenterResult z = carpenter_planar({zigzag, false});
+  ASSERT_TRUE(z.done) << z.stop_reason;
+  expect_valid_motion(z, zigzag, false);
+  EXPECT_TRUE(is_straight(z.frames.back()));
+  EXPECT_EQ(z.lp_solves, 0u);
+  EXPECT_EQ(z.steps, 7u);  // ceil(1.35 / 0.2)
+
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> direction(-1.5, 1.5), length(0.5, 1.5);
+  Frame2 monotone = {Vec(0, 0)};
+  for (int i = 0; i < 60; ++i) {
+    const double h = direction(rng);
+    monotone.push_back(monotone.back() + length(rng) * Vec(std::cos(h), std::sin(h)));
+  }
+  const CarpenterResult m = carpenter_planar({monotone, false});
+  ASSERT_TRUE(m.done) << m.stop_reason;
+  expect_valid_motion(m, monotone, false);
+  EXPECT_EQ(m.lp_solves, 0u);
+
+  const Frame2 hook = {{0, 0}, {4, 0}, {4, 2}, {1, 2}, {1, 1.5}};  // directions 0, π/2, π, 3π/2
+  const CarpenterResult k = carpenter_planar({hook, false});
+  ASSERT_TRUE(k.done) << k.stop_reason;
+  expect_valid_motion(k, hook, false);
+  EXPECT_GT(k.lp_solves, 0u);
+}
+
 TEST(CarpenterPlanar, RandomSimplePolygonsConvexify) {
   std::mt19937 rng(11);
   int nonconvex = 0;

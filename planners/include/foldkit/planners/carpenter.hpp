@@ -28,7 +28,8 @@ struct CarpenterOptions {
   double max_turn = 0.2;
   // Struts the first LP of a step starts with besides last step's binding ones: vertex pairs
   // closer than this many times the mean merged bar length. Violated struts are added after.
-  double near_radius = 2.0;
+  // (1.0 ran 20 % faster than 2.0 at 400 and 1,000 links: fewer rows, about as many rounds.)
+  double near_radius = 1.0;
   // Solve with every strut in the LP from the start (no constraint generation): O(n²) rows,
   // for comparison only.
   bool all_struts = false;
