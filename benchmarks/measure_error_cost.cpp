@@ -33,6 +33,8 @@
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/io/atomic_write.hpp"
 
+#include "bench_patterns.hpp"
+
 namespace {
 
 using namespace foldkit;
@@ -102,29 +104,13 @@ FoldState random_state(const CreasePattern& p, double amplitude, unsigned seed) 
   return s;
 }
 
-// A Miura-ori folded along its mode by continuation up to `fold` rad on every crease.
-FoldState closed_miura(const CreasePattern& p, double fold) {
-  const geometry::ClosureSystem sys(p);
-  FoldState s = FoldState::flat(p);
-  for (double m = 0.1; m <= fold + 1e-9; m += 0.1) {
-    for (std::size_t j = 0; j < p.joints().size(); ++j) {
-      const auto i = static_cast<Eigen::Index>(j);
-      s.angles[i] = (p.joints()[j].assignment == geometry::Assignment::Mountain ? 1 : -1) * std::max(m, std::abs(s.angles[i]));
-    }
-    const auto r = geometry::project(sys, s);
-    if (!r.converged) throw std::runtime_error("closed_miura: continuation failed: " + r.message);
-    s = r.state;
-  }
-  return s;
-}
-
 std::vector<ProjectionCase> projection_cases() {
   std::vector<ProjectionCase> out;
   const int n = g_quick ? 6 : 10;
   const std::string miura = "miura" + std::to_string(n) + "x" + std::to_string(n);
   {
     CreasePattern p = geometry::build_or_throw(geometry::generators::miura(n, n));
-    FoldState s = closed_miura(p, 1.0);
+    FoldState s = foldkit::bench::closed_miura(p, geometry::ClosureSystem(p), 1.0);
     const FoldState noise = random_state(p, 0.02, 11);
     s.angles += noise.angles;
     out.push_back({miura + "_disturbed", std::move(p), s});
