@@ -23,37 +23,19 @@
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/io/atomic_write.hpp"
 
+#include "cube_tiles.hpp"
+
 namespace {
 
 using namespace foldkit;
 using analysis::ConnectionKind;
 using Eigen::Vector3d;
+using experiments::cube_centres;
+using experiments::tile_centres;
 
 constexpr double kTile = 0.01;   // m: Fig. 10c spans about 0.05 m along the beam
 constexpr double kLoad = 40.0;   // N
 constexpr int kCubes = 8, kAlong = 4;
-
-// Centre of each tile's bounding box under `poses` (the tiles are squares).
-std::vector<Vector3d> tile_centres(const geometry::CreasePattern& p, const std::vector<Eigen::Isometry3d>& poses) {
-  std::vector<Vector3d> out;
-  for (std::size_t k = 0; k < p.actors().size(); ++k) {
-    Vector3d lo = Vector3d::Constant(1e300), hi = -lo;
-    for (const auto& tri : p.actors()[k].triangles)
-      for (int q : tri.v) {
-        const auto& v = p.vertices()[static_cast<std::size_t>(q)];
-        const Vector3d x = poses[k] * Vector3d(v.x(), v.y(), 0);
-        lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
-      }
-    out.push_back((lo + hi) / 2);
-  }
-  return out;
-}
-
-std::vector<Vector3d> cube_centres(const std::vector<Vector3d>& tiles) {
-  std::vector<Vector3d> out(kCubes, Vector3d::Zero());
-  for (std::size_t k = 0; k < tiles.size(); ++k) out[k / 6] += tiles[k] / 6.0;
-  return out;
-}
 
 // The 8-net sheet of Fig. 8a (tile 1) with every net folded to its cube (five creases at −90°) and
 // each of the 7 hinges between nets at 0°, ±90° or 180°: the states (of 16384) whose cubes are 8
@@ -185,7 +167,9 @@ int main(int argc, char** argv) {
     return 1;
   }
   const int reachable = static_cast<int>(foldings.size());
-  const analysis::Structure b = beam(foldings.front());
+  std::vector<analysis::Structure> beams;
+  for (const auto& f : foldings) beams.push_back(beam(f));
+  const analysis::Structure& b = beams.front();
   int counts[3] = {0, 0, 0};
   for (const auto& c : b.connections) ++counts[static_cast<int>(c.kind)];
   const std::vector<Case> cases = {{"Eq. 6", 1, 1, true}, {"face ×4", 4, 1, true}, {"edge ×4", 1, 4, true},
@@ -222,8 +206,9 @@ int main(int argc, char** argv) {
   md << "\n| inter-net hinges (deg) | hinged / face / edge | Eq. 6, within cubes (mm) | face ×4 ratio | edge ×4 ratio | "
         "Eq. 6, all edges (mm) |\n|---|---|---|---|---|---|\n";
   std::vector<double> spread_tip;
-  for (const auto& f : foldings) {
-    const analysis::Structure bf = beam(f);
+  for (std::size_t i = 0; i < foldings.size(); ++i) {
+    const geometry::FoldState& f = foldings[i];
+    const analysis::Structure& bf = beams[i];
     int k[3] = {0, 0, 0};
     for (const auto& c : bf.connections) ++k[static_cast<int>(c.kind)];
     const Outcome e = run(bf, cases[3], false), fx = run(bf, cases[4], false), ex = run(bf, cases[5], false), all = run(bf, cases[0], false);

@@ -23,6 +23,8 @@
 #include "foldkit/simulation/simulate.hpp"
 #include "foldkit/simulation/snapshot.hpp"
 
+#include "cube_tiles.hpp"
+
 namespace {
 
 using namespace foldkit;
@@ -31,18 +33,6 @@ using experiments::num;
 using Eigen::Vector3d;
 
 constexpr int kCubes = 8;
-
-Vector3d tile_centre(const geometry::CreasePattern& p, int actor, const Eigen::Isometry3d& pose) {
-  Vector3d c = Vector3d::Zero();
-  int count = 0;
-  for (const auto& t : p.actors()[static_cast<std::size_t>(actor)].triangles)
-    for (int v : t.v) {
-      const auto& q = p.vertices()[static_cast<std::size_t>(v)];
-      c += Vector3d(q.x(), q.y(), 0.0);
-      ++count;
-    }
-  return pose * (c / count);
-}
 
 struct CubeShape {
   std::vector<Vector3d> centres;
@@ -54,16 +44,12 @@ struct CubeShape {
 
 CubeShape cube_shape(const geometry::CreasePattern& p, const std::vector<Eigen::Isometry3d>& poses) {
   CubeShape s;
+  const std::vector<Vector3d> tiles = experiments::tile_centres(p, poses);
+  s.centres = experiments::cube_centres(tiles);
   for (int n = 0; n < kCubes; ++n) {
-    std::array<Vector3d, 6> c;
-    Vector3d mid = Vector3d::Zero();
-    for (int t = 0; t < 6; ++t) {
-      c[static_cast<std::size_t>(t)] = tile_centre(p, 6 * n + t, poses[static_cast<std::size_t>(6 * n + t)]);
-      mid += c[static_cast<std::size_t>(t)] / 6.0;
-    }
     std::array<bool, 6> seen{};
     for (int t = 0; t < 6; ++t) {
-      const Vector3d d = c[static_cast<std::size_t>(t)] - mid;
+      const Vector3d d = tiles[static_cast<std::size_t>(6 * n + t)] - s.centres[static_cast<std::size_t>(n)];
       Eigen::Index axis = 0;
       d.cwiseAbs().maxCoeff(&axis);
       s.face_error = std::max(s.face_error, std::abs(d.norm() - 0.5));
@@ -73,7 +59,6 @@ CubeShape cube_shape(const geometry::CreasePattern& p, const std::vector<Eigen::
       s.six_faces &= !seen[slot] && std::abs(inward - 1.0) < 1e-9;
       seen[slot] = true;
     }
-    s.centres.push_back(mid);
   }
   const Vector3d step = s.centres[1] - s.centres[0];
   s.step = step.norm();
