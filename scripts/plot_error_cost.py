@@ -171,28 +171,23 @@ def plot_stiffness(rows, out):
            title="Elastica α = 1: tolerance and iteration limit")
     ax.legend(fontsize=8)
 
+    # Error of both methods against a swept parameter of one problem.
+    def error_by_value(ax, problem, xlabel, title):
+        for method, st in (("newton", newton), ("linear", linear)):
+            pts = series(rows, problem, method, "value")
+            good = [p for p in pts if p[2]["converged"] and p[2]["error"] != 1.0]
+            ax.plot([p[0] for p in good], [p[1] for p in good], **st)
+            failures(ax, pts, st)
+        ax.set(xscale="log", yscale="log", xlabel=xlabel, ylabel="relative error of the tip deflection", title=title)
+        ax.legend(fontsize=8)
+
     # (d) stiffness ratio
-    ax = axes[1, 0]
-    for method, st in (("newton", newton), ("linear", linear)):
-        pts = series(rows, "elastica_stiffness_ratio", method, "value")
-        good = [p for p in pts if p[2]["converged"] and p[2]["error"] != 1.0]
-        ax.plot([p[0] for p in good], [p[1] for p in good], **st)
-        failures(ax, pts, st)
-    ax.set(xscale="log", yscale="log", xlabel="stiffness ratio k_translation / k_hinge",
-           ylabel="relative error of the tip deflection",
-           title="Stiffness ratio (Newton at α = 1, linear at α = 0.01)")
-    ax.legend(fontsize=8)
+    error_by_value(axes[1, 0], "elastica_stiffness_ratio", "stiffness ratio k_translation / k_hinge",
+                   "Stiffness ratio (Newton at α = 1, linear at α = 0.01)")
 
     # (e) small loads on stiff springs
-    ax = axes[1, 1]
-    for method, st in (("newton", newton), ("linear", linear)):
-        pts = series(rows, "elastica_small_load", method, "value")
-        good = [p for p in pts if p[2]["converged"] and p[2]["error"] != 1.0]
-        ax.plot([p[0] for p in good], [p[1] for p in good], **st)
-        failures(ax, pts, st)
-    ax.set(xscale="log", yscale="log", xlabel="tip load P (k = 1, k_t = 1e9)", ylabel="relative error of the tip deflection",
-           title="Small loads on stiff springs (k_t·L/P up to 1e18)")
-    ax.legend(fontsize=8)
+    error_by_value(axes[1, 1], "elastica_small_load", "tip load P (k = 1, k_t = 1e9)",
+                   "Small loads on stiff springs (k_t·L/P up to 1e18)")
 
     # (f) plate: tolerance against cost
     ax = axes[1, 2]
