@@ -5,6 +5,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "progress_line.hpp"
 #include "cli_common.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
@@ -68,6 +69,8 @@ int run_planar(const Options& opt) {
   }
   planners::CarpenterOptions options;
   options.max_steps = opt.max_steps;
+  ProgressLine progress("carpenter");
+  options.progress = progress.callback();
   const planners::CarpenterResult r = planners::carpenter_planar(chain, options);
   const std::vector<planners::Frame2> frames = opt.fold ? planners::reversed(r.frames) : r.frames;
   if (!opt.output.empty()) {

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "progress_line.hpp"
 #include "cli_common.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
@@ -63,6 +64,8 @@ Command add_fold(CLI::App& root) {
             o.collisions = !opt->no_collision;
             planners::ProjectedFoldingResult r;
             try {
+              ProgressLine progress("fold");
+              o.progress = progress.callback();
               r = planners::fold_projected(pattern, o);
             } catch (const std::invalid_argument& e) {
               throw io::ParseError(opt->pattern, 0, e.what());
@@ -72,6 +75,9 @@ Command add_fold(CLI::App& root) {
             std::cerr << planners::to_string(r.stop) << ": " << r.message << " (fraction " << r.fraction << ", " << r.steps
                       << " steps, " << r.newton_iterations << " Newton iterations, closure error " << r.max_closure_error
                       << " rad, " << r.time << " s)\n";
+            if (r.rank_decisions > 0)
+              std::cerr << "rank " << r.rank << " (" << r.dof << " DOF) by " << r.rank_method << ", singular-value gap " << r.rank_gap
+                        << " (smallest over " << r.rank_decisions << " decisions " << r.min_rank_gap << ")\n";
             const bool write = replay_ok && (reached || opt->partial);
             if (write) {
               io::write_file_atomic(opt->output, io::write_cmml(r.sequence));
@@ -88,6 +94,10 @@ Command add_fold(CLI::App& root) {
                                {"rank", r.rank},
                                {"dof", r.dof},
                                {"min_pivot_ratio", r.min_pivot_ratio},
+                               {"rank_method", r.rank_method},
+                               {"rank_decisions", r.rank_decisions},
+                               {"rank_gap", r.rank_gap},
+                               {"min_rank_gap", r.rank_decisions ? nlohmann::json(r.min_rank_gap) : nlohmann::json(nullptr)},
                                {"time", r.time},
                                {"replay_ok", r.replay ? nlohmann::json(replay_ok) : nlohmann::json(nullptr)},
                                {"message", r.message},

@@ -1,6 +1,7 @@
 // foldkit plan: a collision-free, closed fold sequence from a start to a goal, by an OMPL planner.
 #include <iostream>
 
+#include "progress_line.hpp"
 #include "cli_common.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
@@ -115,6 +116,8 @@ Command add_plan(CLI::App& root) {
             req.use_assignment = !opt->free_signs;
             planners::PlanResult r;
             try {
+              ProgressLine progress("plan (replay)");
+              req.progress = progress.callback();
               r = planners::plan(req);
             } catch (const std::invalid_argument& e) {
               throw io::ParseError(opt->goal.empty() ? "--goal-angles" : opt->goal, 0, e.what());

@@ -1,6 +1,7 @@
 // foldkit simulate: replay a CMML on a pattern and say whether it is physically possible.
 #include <iostream>
 
+#include "progress_line.hpp"
 #include "cli_common.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
@@ -53,6 +54,8 @@ Command add_simulate(CLI::App& root) {
             sim.record_frames = !opt->frames.empty();
             simulation::SimulationReport report;
             try {
+              ProgressLine progress("simulate");
+              sim.progress = progress.callback();
               report = simulation::simulate(pattern, seq, sim);
             } catch (const simulation::SequenceError& e) {
               throw io::ParseError(opt->sequence, e.line, e.what());

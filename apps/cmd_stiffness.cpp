@@ -2,6 +2,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "progress_line.hpp"
 #include "cli_common.hpp"
 #include "foldkit/analysis/load_case.hpp"
 #include "foldkit/analysis/solver.hpp"
@@ -46,6 +47,8 @@ Command add_stiffness(CLI::App& root) {
             const analysis::Problem problem = analysis::make_problem(analysis::build_structure(pattern, state, detect), lc, opt->load_case);
             analysis::SolveOptions so = opt->solve;
             so.linear = opt->linear;
+            ProgressLine progress("stiffness");
+            so.progress = progress.callback();
             const analysis::SolveResult r = analysis::solve(problem, so);
             int counts[3] = {0, 0, 0};
             for (const auto& c : problem.structure.connections) ++counts[static_cast<int>(c.kind)];

@@ -17,13 +17,21 @@ nlohmann::json report_json(const geometry::CreasePattern& pattern, const simulat
   for (const auto& e : r.events)
     events.push_back({{"number", e.number}, {"start", e.start}, {"end", e.end}, {"max_closure_error", e.max_closure_error},
                       {"reached", e.reached}});
-  nlohmann::json collisions = nlohmann::json::array();
-  for (const auto& c : r.collisions)
-    collisions.push_back({{"actors", c.actors},
-                          {"time", c.time},
-                          {"event", c.event},
-                          {"point", {c.point.x(), c.point.y(), c.point.z()}},
-                          {"kind", simulation::to_string(c.kind)}});
+  auto listed = [](const std::vector<simulation::CollisionEvent>& list) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& c : list) {
+      nlohmann::json one = {{"actors", c.actors},
+                            {"time", c.time},
+                            {"event", c.event},
+                            {"point", {c.point.x(), c.point.y(), c.point.z()}},
+                            {"kind", simulation::to_string(c.kind)},
+                            {"closure_error", c.closure_error}};
+      if (c.kind == simulation::CrossingKind::Mesh) one["depth"] = c.depth;
+      if (c.closed_depth >= 0.0) one["closed_depth"] = c.closed_depth;
+      out.push_back(std::move(one));
+    }
+    return out;
+  };
   nlohmann::json angles = nlohmann::json::array();
   for (std::size_t j = 0; j < pattern.joints().size(); ++j)
     angles.push_back({{"joint", pattern.joints()[j].id},
@@ -37,8 +45,10 @@ nlohmann::json report_json(const geometry::CreasePattern& pattern, const simulat
           {"max_closure_error", r.max_closure_error},
           {"closure_tolerance", r.closure_tolerance},
           {"events", events},
-          {"collisions", collisions},
+          {"collisions", listed(r.collisions)},
           {"collision_count", r.collision_count},
+          {"numerical_collisions", listed(r.numerical)},
+          {"numerical_collision_count", r.numerical_count},
           {"problems", r.problems},
           {"final_angles", angles}};
 }
@@ -46,8 +56,10 @@ nlohmann::json report_json(const geometry::CreasePattern& pattern, const simulat
 void print_summary(const std::string& name, const simulation::SimulationReport& r) {
   std::cerr << name << ": " << r.events.size() << " events, " << r.duration << " s (" << r.steps << " steps, " << r.checks
             << " checks, model " << simulation::to_string(r.model) << "), max closure error " << r.max_closure_error << " rad, "
-            << r.collision_count << " collision" << (r.collision_count == 1 ? "" : "s") << ": "
-            << (r.ok ? "valid" : "INVALID") << '\n';
+            << r.collision_count << " collision" << (r.collision_count == 1 ? "" : "s");
+  if (r.numerical_count > 0)
+    std::cerr << " (and " << r.numerical_count << " numerical: gone once the state is projected onto closure)";
+  std::cerr << ": " << (r.ok ? "valid" : "INVALID") << '\n';
   for (const auto& p : r.problems) std::cerr << "  " << p << '\n';
 }
 

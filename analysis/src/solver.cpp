@@ -116,6 +116,7 @@ struct Newton {
       const VectorXd dx = lu.solve(-r);
       if (!finite(dx)) return false;
       ++iterations;
+      if (opt.progress) opt.progress({static_cast<double>(iterations), static_cast<double>(opt.max_total_iterations), "Newton iterations", -1.0});
       if (dx.lpNorm<Eigen::Infinity>() <= 1e-13 * (1.0 + x.lpNorm<Eigen::Infinity>()))
         return r.lpNorm<Eigen::Infinity>() <= 16.0 * tol(x);  // stalled at round-off
       x = sys.retract(x, capped(dx) * dx);

@@ -3,6 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <random>
+
+#include <Eigen/QR>
+#include <Eigen/SVD>
 
 namespace foldkit::geometry {
 
@@ -66,6 +71,122 @@ NullSpaceVelocity LeastNormSolver::project_onto_null_space(const Eigen::SparseMa
     }
   t.pivot_ratio = t.rank > 0 ? std::sqrt(smallest_kept / top) : 1.0;
   return t;
+}
+
+double RankDecision::gap() const {
+  return smallest_kept / std::max(largest_zero, 1e-16 * sigma_max);
+}
+
+namespace {
+
+// Counts singular values (ascending) above `tolerance` and records the two on either side of it.
+void count(const Eigen::VectorXd& ascending, Eigen::Index columns, RankDecision& d) {
+  d.nullity = 0;
+  d.largest_zero = 0.0;
+  d.smallest_kept = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < ascending.size(); ++i) {
+    if (ascending[i] <= d.tolerance) {
+      ++d.nullity;
+      d.largest_zero = ascending[i];
+    } else {
+      d.smallest_kept = std::min(d.smallest_kept, ascending[i]);
+    }
+  }
+  d.rank = static_cast<int>(columns) - d.nullity;
+}
+
+// The largest singular value of J, by power iteration on JᵀJ (to 1e-6 relative).
+double largest_singular_value(const Eigen::SparseMatrix<double>& J) {
+  Eigen::VectorXd x = Eigen::VectorXd::Ones(J.cols());
+  for (Eigen::Index k = 0; k < x.size(); k += 3) x[k] = 0.5;  // not orthogonal to a sign-symmetric top vector
+  double sigma = 0.0;
+  for (int it = 0; it < 200; ++it) {
+    const double norm = x.norm();
+    if (!(norm > 0.0)) return 0.0;
+    x /= norm;
+    const Eigen::VectorXd y = J * x;
+    const double next = y.norm();
+    x = J.transpose() * y;
+    if (std::abs(next - sigma) <= 1e-6 * next) return next;
+    sigma = next;
+  }
+  return sigma;
+}
+
+Eigen::MatrixXd orthonormal(const Eigen::MatrixXd& z) {
+  Eigen::HouseholderQR<Eigen::MatrixXd> qr(z);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(z.rows(), z.cols());
+}
+
+Eigen::VectorXd ascending_singular_values(const Eigen::MatrixXd& m) {
+  Eigen::BDCSVD<Eigen::MatrixXd> svd(m);
+  return svd.singularValues().reverse();
+}
+
+}  // namespace
+
+RankDecision LeastNormSolver::decide_rank(const Eigen::SparseMatrix<double>& jacobian, double relative_tolerance,
+                                          Eigen::Index dense_limit) {
+  RankDecision d;
+  const Eigen::Index n = jacobian.cols();
+  if (jacobian.rows() == 0 || jacobian.nonZeros() == 0) {
+    d.nullity = static_cast<int>(n);
+    d.method = "none";
+    return d;
+  }
+  if (n <= dense_limit || jacobian.rows() <= 1) {
+    const Eigen::VectorXd s = ascending_singular_values(Eigen::MatrixXd(jacobian));
+    d.sigma_max = s.size() ? s[s.size() - 1] : 0.0;
+    d.tolerance = relative_tolerance * d.sigma_max;
+    // Columns beyond the rows have singular value 0.
+    Eigen::VectorXd all = Eigen::VectorXd::Zero(n);
+    all.tail(s.size()) = s;
+    count(all, n, d);
+    d.method = "dense-svd";
+    return d;
+  }
+  d.method = "inverse-subspace";
+  d.sigma_max = largest_singular_value(jacobian);
+  d.tolerance = relative_tolerance * d.sigma_max;
+  const NullSpaceVelocity screen = project_onto_null_space(jacobian, Eigen::VectorXd::Zero(n));  // factors J
+  if (screen.rank == static_cast<int>(n) && screen.pivot_ratio == 0.0) throw std::runtime_error("decide_rank: factorisation failed");
+  Eigen::Index block = std::min<Eigen::Index>(n, std::max<Eigen::Index>(n - screen.rank + 4, 6));
+  std::mt19937 rng(20101);
+  auto random_block = [&](Eigen::Index rows, Eigen::Index cols) {
+    Eigen::MatrixXd z(rows, cols);
+    for (Eigen::Index c = 0; c < cols; ++c)
+      for (Eigen::Index r = 0; r < rows; ++r) z(r, c) = static_cast<double>(rng()) / 4294967296.0 - 0.5;
+    return z;
+  };
+  Eigen::MatrixXd q = orthonormal(random_block(n, block));
+  Eigen::VectorXd previous;
+  for (int it = 1;; ++it) {
+    Eigen::MatrixXd z(n, q.cols());
+    for (Eigen::Index c = 0; c < q.cols(); ++c) z.col(c) = ldlt_.solve(q.col(c));
+    q = orthonormal(z);
+    const Eigen::MatrixXd jq = jacobian * q;
+    Eigen::VectorXd s = Eigen::VectorXd::Zero(q.cols());  // fewer rows than the block: the rest are 0
+    const Eigen::VectorXd some = ascending_singular_values(jq);
+    s.tail(some.size()) = some;
+    count(s, n, d);
+    if (d.nullity == q.cols() && q.cols() < n) {
+      // Every Ritz value is below the tolerance: the null space may be larger than the block.
+      const Eigen::Index grow = std::min<Eigen::Index>(n, 2 * q.cols()) - q.cols();
+      Eigen::MatrixXd wider(n, q.cols() + grow);
+      wider << q, random_block(n, grow);
+      q = orthonormal(wider);
+      previous.resize(0);
+      continue;
+    }
+    // Stop when the Ritz values on both sides of the tolerance have settled.
+    if (previous.size() == s.size() && it >= 3) {
+      const Eigen::Index k = std::min<Eigen::Index>(d.nullity, s.size() - 1);
+      const bool settled = std::abs(s[k] - previous[k]) <= 1e-3 * s[k] &&
+                           (d.nullity == 0 || std::abs(s[d.nullity - 1] - previous[d.nullity - 1]) <= 1e-3 * d.tolerance + 1e-3 * s[d.nullity - 1]);
+      if (settled || it >= 60) return d;
+    }
+    previous = s;
+  }
 }
 
 NullSpaceVelocity project_onto_null_space(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& desired,

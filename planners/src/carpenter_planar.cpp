@@ -441,6 +441,7 @@ CarpenterResult carpenter_planar(const PlanarChain& input, const CarpenterOption
     }
     chain.set_q(next);
     ++result.steps;
+    if (options.progress) options.progress({static_cast<double>(result.steps), 0.0, "steps", -1.0});
     // Merge the event joint and any other joint the step left straight to within rounding.
     std::vector<int> straight;
     for (int a = 0; a < m; ++a) {

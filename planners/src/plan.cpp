@@ -340,6 +340,7 @@ PlanResult plan(const PlanRequest& req) {
   if (req.replay) {
     simulation::SimulationOptions so;
     so.collisions = req.collisions;
+    so.progress = req.progress;
     result.replay = simulation::simulate(pattern, result.sequence, so);
     result.max_closure_error = std::max(result.max_closure_error, result.replay->max_closure_error);
     if (!result.replay->ok) {

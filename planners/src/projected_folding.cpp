@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -69,7 +70,9 @@ class PathChecker {
         const auto& c = crossings.front();
         std::ostringstream out;
         out << "actors " << pattern_.actors()[c.actors[0]].id << " and " << pattern_.actors()[c.actors[1]].id << " cross ("
-            << simulation::to_string(c.kind) << ") at largest fold angle " << fraction_of(s) * 180.0 << " deg";
+            << simulation::to_string(c.kind);
+        if (c.kind == simulation::CrossingKind::Mesh) out << ", depth " << c.depth;
+        out << ") at largest fold angle " << fraction_of(s) * 180.0 << " deg";
         return out.str();
       }
     }
@@ -147,18 +150,24 @@ class Folder {
       Eigen::SparseMatrix<double> J;
       system_.evaluate(x, r, J);
       const geometry::NullSpaceVelocity t = solver_.project_onto_null_space(J, w);
-      result_.rank = t.rank;
-      result_.dof = static_cast<int>(system_.cols()) - t.rank;
       result_.min_pivot_ratio = std::min(result_.min_pivot_ratio, t.pivot_ratio);
+      // The LDLᵀ pivots only screen: a change in their count, or collapsing pivots, calls for a
+      // rank-revealing decision, and only that decision stops the fold.
+      const bool suspect = t.pivot_ratio < opt_.singular_ratio;
+      if (t.rank != screened_rank_ || suspect) {
+        screened_rank_ = t.rank;
+        decide(J);
+      }
       std::ostringstream at;
       at << " at largest fold angle " << fraction_of(x) * 180.0 << " deg (step " << result_.steps << ")";
-      if (reference_rank >= 0 && t.rank < reference_rank)
+      if (reference_rank >= 0 && decision_.rank < reference_rank)
         return finish(FoldStop::Singular, "the closure Jacobian drops rank from " + std::to_string(reference_rank) + " to " +
-                                              std::to_string(t.rank) + at.str() + ": a bifurcation");
-      reference_rank = std::max(reference_rank, t.rank);
-      if (t.pivot_ratio < opt_.singular_ratio) {
+                                              std::to_string(decision_.rank) + at.str() + " (" + evidence() + "): a bifurcation");
+      reference_rank = std::max(reference_rank, decision_.rank);
+      if (suspect && decision_.smallest_kept < opt_.singular_ratio * decision_.sigma_max) {
         std::ostringstream out;
-        out << "the closure Jacobian is nearly singular (pivot ratio " << t.pivot_ratio << ")" << at.str();
+        out << "the closure Jacobian is nearly singular (smallest kept singular value " << decision_.smallest_kept / decision_.sigma_max
+            << " of the largest)" << at.str();
         return finish(FoldStop::Singular, out.str());
       }
       const double vnorm = t.velocity.norm();
@@ -267,10 +276,30 @@ class Folder {
         return false;
       }
     }
-    result_.max_closure_error = std::max(result_.max_closure_error, system_.max_error(next.state));
+    const double error = system_.max_error(next.state);
+    result_.max_closure_error = std::max(result_.max_closure_error, error);
     result_.states.push_back(next.state);
     result_.steps = static_cast<int>(result_.states.size()) - 1;
+    if (opt_.progress) opt_.progress({static_cast<double>(result_.steps), 0.0, "steps", error});
     return true;
+  }
+
+  // J's rank by singular values (geometry::LeastNormSolver::decide_rank), the fold's record of it.
+  void decide(const Eigen::SparseMatrix<double>& J) {
+    decision_ = solver_.decide_rank(J, std::sqrt(opt_.rank_tolerance));
+    ++result_.rank_decisions;
+    result_.rank = decision_.rank;
+    result_.dof = decision_.nullity;
+    result_.rank_gap = decision_.gap();
+    result_.rank_method = decision_.method;
+    result_.min_rank_gap = std::min(result_.min_rank_gap, decision_.gap());
+  }
+
+  std::string evidence() const {
+    std::ostringstream out;
+    out << decision_.method << ": singular values <= " << decision_.tolerance << " count as 0; largest counted "
+        << decision_.largest_zero << ", smallest kept " << decision_.smallest_kept << ", gap " << decision_.gap();
+    return out.str();
   }
 
   void finish(FoldStop stop, const std::string& message) {
@@ -285,6 +314,8 @@ class Folder {
   geometry::LeastNormSolver solver_;  // keeps its ordering between the thousands of steps
   geometry::ProjectionOptions po_;
   std::optional<PathChecker> checker_;
+  int screened_rank_ = -1;
+  geometry::RankDecision decision_;
 };
 
 }  // namespace
@@ -323,6 +354,7 @@ ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, co
   if (options.replay && result.states.size() > 1) {
     simulation::SimulationOptions so;
     so.collisions = options.collisions;
+    so.progress = options.progress;
     result.replay = simulation::simulate(pattern, result.sequence, so);
     if (!result.replay->ok)
       result.message += "; the simulator rejects the CMML: " +

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -10,6 +11,7 @@
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/narrowphase/collision.h>
 
+#include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/geometry/triangle_overlap.hpp"
 #include "triangle_crossing.hpp"
 
@@ -66,11 +68,38 @@ struct CollisionWorld::Impl {
   std::vector<std::pair<int, int>> candidates;
   std::size_t mesh_tests = 0;
 
+  // The creases and their turns at the state being judged, for relative poses along chains.
+  std::vector<std::vector<std::pair<int, int>>> neighbours;  // per actor: (joint, other actor)
+  std::vector<geometry::JointAxis> axes;                      // per joint
+  std::vector<std::array<double, 2>> sides;                   // per joint: side_of each of its actors
+  const geometry::FoldState* state = nullptr;
+  std::vector<Eigen::Isometry3d> turn;                        // per joint, valid where turn_stamp == stamp
+  std::vector<long> turn_stamp;
+  long stamp = 0;
+  // Chains between pairs, as steps (joint << 1 | k): into actor actors[k] of joint `joint`. A
+  // chain holding only kNoChain means none within reach (the given poses are used).
+  std::unordered_map<std::uint64_t, std::vector<int>> chains;
+  static constexpr int kNoChain = -1;
+  // Farthest a chain search looks, in facets visited: a pair this far apart in the sheet is not
+  // held together by a few loops, and its placement by the tree is as good as any.
+  static constexpr std::size_t kMaxVisited = 256;
+
   Impl(const CreasePattern& p, const CollisionOptions& o) : pattern(&p), options(o) {
     tol = o.tolerance * p.diagonal();
     for (const auto& j : p.joints()) hinged.insert(key(std::min(j.actors[0], j.actors[1]), std::max(j.actors[0], j.actors[1])));
     facets.reserve(p.actors().size());
     for (std::size_t a = 0; a < p.actors().size(); ++a) facets.push_back(make_facet(static_cast<int>(a)));
+    neighbours.resize(p.actors().size());
+    for (std::size_t j = 0; j < p.joints().size(); ++j) {
+      const auto& joint = p.joints()[j];
+      neighbours[joint.actors[0]].emplace_back(static_cast<int>(j), joint.actors[1]);
+      neighbours[joint.actors[1]].emplace_back(static_cast<int>(j), joint.actors[0]);
+      axes.push_back(geometry::joint_axis(p, static_cast<int>(j)));
+      sides.push_back({geometry::side_of(p, static_cast<int>(j), joint.actors[0]),
+                       geometry::side_of(p, static_cast<int>(j), joint.actors[1])});
+    }
+    turn.resize(p.joints().size());
+    turn_stamp.assign(p.joints().size(), -1);
     if (o.broad_phase == BroadPhase::DynamicAabbTree) {
       for (auto& f : facets) manager.registerObject(f.object.get());
       manager.setup();
@@ -107,8 +136,22 @@ struct CollisionWorld::Impl {
     return f;
   }
 
+  // How far the given poses disagree across a crease: the two facets of each crease put its ends
+  // in different places by up to this much (0 for a closed state's poses, up to round-off).
+  double mismatch(const std::vector<Eigen::Isometry3d>& poses) const {
+    double worst = 0.0;
+    for (const auto& joint : pattern->joints())
+      for (int v : joint.v) {
+        const Eigen::Vector3d p(pattern->vertices()[v].x(), pattern->vertices()[v].y(), 0.0);
+        worst = std::max(worst, (poses[joint.actors[0]] * p - poses[joint.actors[1]] * p).norm());
+      }
+    return worst;
+  }
+
   void place(const std::vector<Eigen::Isometry3d>& poses) {
-    const Eigen::Vector3d grow = Eigen::Vector3d::Constant(options.margin + tol);
+    // Pairs judged along their own chains may sit closer than the tree's poses say, by up to the
+    // mismatch across the creases in between; twice the largest one keeps them in the broad phase.
+    const Eigen::Vector3d grow = Eigen::Vector3d::Constant(options.margin + tol + 2.0 * mismatch(poses));
     for (std::size_t a = 0; a < facets.size(); ++a) {
       Facet& f = facets[a];
       Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -146,6 +189,65 @@ struct CollisionWorld::Impl {
         if (!hinged.count(key(a, b))) candidates.emplace_back(a, b);
   }
 
+  void start(const geometry::FoldState& s) {
+    state = &s;
+    ++stamp;
+  }
+
+  const Eigen::Isometry3d& turned(int joint) {
+    if (turn_stamp[joint] != stamp) {
+      turn[joint] = geometry::joint_motion(axes[joint], state->angles[joint]);
+      turn_stamp[joint] = stamp;
+    }
+    return turn[joint];
+  }
+
+  // Breadth-first from a to b over the creases; neighbours in crease order, so the chain is the
+  // same whatever the actors' numbering when it is the only shortest one (round a vertex, it is
+  // one of two of equal length, which differ by that vertex's closure error alone).
+  const std::vector<int>& chain(int a, int b) {
+    const auto [it, fresh] = chains.try_emplace(key(a, b));
+    if (!fresh) return it->second;
+    std::unordered_map<int, int> via;  // actor → step that reached it
+    via.emplace(a, kNoChain);
+    std::deque<int> queue{a};
+    while (!queue.empty() && !via.count(b) && via.size() < kMaxVisited) {
+      const int f = queue.front();
+      queue.pop_front();
+      for (const auto& [j, g] : neighbours[f]) {
+        if (via.count(g)) continue;
+        via.emplace(g, (j << 1) | (pattern->joints()[j].actors[0] == g ? 0 : 1));
+        queue.push_back(g);
+      }
+    }
+    std::vector<int>& steps = it->second;
+    if (!via.count(b)) {
+      steps.assign(1, kNoChain);
+      return steps;
+    }
+    for (int f = b; f != a;) {
+      const int step = via.at(f);
+      steps.push_back(step);
+      const auto& joint = pattern->joints()[step >> 1];
+      f = joint.actors[1 - (step & 1)];
+    }
+    std::reverse(steps.begin(), steps.end());
+    return steps;
+  }
+
+  // b's frame in a's: along their chain at the current state, or from the given poses.
+  Eigen::Isometry3d relative(int a, int b, const std::vector<Eigen::Isometry3d>& poses) {
+    const std::vector<int>& steps = chain(a, b);
+    if (steps.front() == kNoChain) return poses[a].inverse() * poses[b];
+    Eigen::Isometry3d rel = Eigen::Isometry3d::Identity();
+    for (int step : steps) {
+      const int j = step >> 1;
+      // Entering the facet on the right of the axis turns it by +angle, on the left by −angle.
+      rel = rel * (sides[j][step & 1] > 0 ? turned(j) : turned(j).inverse());
+    }
+    return rel;
+  }
+
   // Where b lies relative to a's plane; `rel` maps b's frame into a's.
   Side side_of(const Facet& b, const Eigen::Isometry3d& rel) const {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -170,14 +272,18 @@ struct CollisionWorld::Impl {
     return false;
   }
 
-  std::optional<Eigen::Vector3d> mesh_crossing(int a, int b, const std::vector<Eigen::Isometry3d>& poses) {
+  // The deepest crossing of a's and b's triangles, with b placed by `rel` in a's frame; the
+  // point in a's frame.
+  std::optional<detail::TriangleCrossing> mesh_crossing(int a, int b, const Eigen::Isometry3d& rel) {
     ++mesh_tests;
     const Facet& fa = facets[a];
     const Facet& fb = facets[b];
     const std::size_t most = fa.triangles.size() * fb.triangles.size();
     fcl::CollisionRequestd request(most, true);
     fcl::CollisionResultd result;
-    fcl::collide(fa.object.get(), fb.object.get(), request, result);
+    fcl::collide(fa.object->collisionGeometry().get(), fcl::Transform3d::Identity(), fb.object->collisionGeometry().get(),
+                 fcl::Transform3d(rel.matrix()), request, result);
+    std::optional<detail::TriangleCrossing> deepest;
     for (std::size_t c = 0; c < result.numContacts(); ++c) {
       const auto& contact = result.getContact(c);
       const bool swapped = contact.o1 != fa.object->collisionGeometry().get();
@@ -185,16 +291,16 @@ struct CollisionWorld::Impl {
       const auto tb = static_cast<std::size_t>(swapped ? contact.b1 : contact.b2);
       detail::Tri3 x, y;
       for (int k = 0; k < 3; ++k) {
-        x[k] = poses[a] * fa.points[fa.triangles[ta][k]];
-        y[k] = poses[b] * fb.points[fb.triangles[tb][k]];
+        x[k] = fa.points[fa.triangles[ta][k]];
+        y[k] = rel * fb.points[fb.triangles[tb][k]];
       }
-      if (auto point = detail::triangles_cross(x, y, tol)) return point;
+      if (auto cut = detail::triangles_cross(x, y, tol); cut && (!deepest || cut->depth > deepest->depth)) deepest = cut;
     }
-    return std::nullopt;
+    return deepest;
   }
 
   std::optional<Crossing> test(int a, int b, const std::vector<Eigen::Isometry3d>& poses) {
-    const Eigen::Isometry3d rel = poses[a].inverse() * poses[b];
+    const Eigen::Isometry3d rel = relative(a, b, poses);
     const Side side = side_of(facets[b], rel);
     Memory& m = memory[key(a, b)];
     const bool seen_last = m.sample == sample - 1;
@@ -202,7 +308,7 @@ struct CollisionWorld::Impl {
     m.sample = sample;
     if (side == Across) {
       m.side = On;
-      if (auto point = mesh_crossing(a, b, poses)) return Crossing{{a, b}, *point, CrossingKind::Mesh};
+      if (auto cut = mesh_crossing(a, b, rel)) return Crossing{{a, b}, poses[a] * cut->point, CrossingKind::Mesh, cut->depth};
       return std::nullopt;
     }
     if (side == On) {
@@ -229,6 +335,7 @@ struct CollisionWorld::Impl {
     if (static_cast<std::size_t>(state.angles.size()) != pattern->joints().size())
       throw std::invalid_argument("CollisionWorld::check: state does not hold one angle per joint");
     mesh_tests = 0;
+    start(state);
     place(poses);
     find_candidates();
     std::vector<Crossing> found;
@@ -241,7 +348,7 @@ struct CollisionWorld::Impl {
       const geometry::Vec2 mid = 0.5 * (pattern->vertices()[joint.v[0]] + pattern->vertices()[joint.v[1]]);
       const int a = std::min(joint.actors[0], joint.actors[1]);
       const int b = std::max(joint.actors[0], joint.actors[1]);
-      found.push_back({{a, b}, poses[joint.actors[0]] * Eigen::Vector3d(mid.x(), mid.y(), 0.0), CrossingKind::Crease});
+      found.push_back({{a, b}, poses[joint.actors[0]] * Eigen::Vector3d(mid.x(), mid.y(), 0.0), CrossingKind::Crease, 0.0});
     }
     ++sample;
     return found;
@@ -262,6 +369,19 @@ CollisionWorld& CollisionWorld::operator=(CollisionWorld&&) noexcept = default;
 std::vector<Crossing> CollisionWorld::check(const std::vector<Eigen::Isometry3d>& poses, const geometry::FoldState& state) {
   return impl_->check(poses, state);
 }
+std::optional<Crossing> CollisionWorld::mesh_crossing(int a, int b, const std::vector<Eigen::Isometry3d>& poses,
+                                                      const geometry::FoldState& state) {
+  const int n = static_cast<int>(impl_->facets.size());
+  if (a < 0 || b < 0 || a >= n || b >= n || a == b || poses.size() != impl_->facets.size() ||
+      static_cast<std::size_t>(state.angles.size()) != impl_->pattern->joints().size())
+    throw std::invalid_argument("CollisionWorld::mesh_crossing: actors, poses or state out of range");
+  if (a > b) std::swap(a, b);
+  impl_->start(state);
+  const Eigen::Isometry3d rel = impl_->relative(a, b, poses);
+  if (auto cut = impl_->mesh_crossing(a, b, rel)) return Crossing{{a, b}, poses[a] * cut->point, CrossingKind::Mesh, cut->depth};
+  return std::nullopt;
+}
+
 void CollisionWorld::reset() {
   impl_->memory.clear();
   impl_->sample = 0;

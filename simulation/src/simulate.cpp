@@ -10,6 +10,7 @@
 #include "actuation.hpp"
 #include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/kinematics.hpp"
+#include "foldkit/geometry/projection.hpp"
 
 namespace foldkit::simulation {
 
@@ -111,6 +112,9 @@ class Replay {
         sweep(before, state, time_, h, event.number);
         time_ += h;
         if (options_.record_frames) frame(state, event.number);
+        if (options_.progress)
+          options_.progress({static_cast<double>(report_.events.size() - 1), static_cast<double>(sequence.events.size()), "events",
+                             last_error_});
       }
       current_->end = time_;
       if (!motion.reached()) {
@@ -162,6 +166,7 @@ class Replay {
   void check(const geometry::FoldState& state, const std::vector<Eigen::Isometry3d>& poses, double t, int event) {
     ++report_.checks;
     const double error = closure_.max_error(state);
+    last_error_ = error;
     current_->max_closure_error = std::max(current_->max_closure_error, error);
     report_.max_closure_error = std::max(report_.max_closure_error, error);
     if (error > options_.closure_tolerance && !closure_reported_) {
@@ -172,18 +177,46 @@ class Replay {
       problem(s.str());
     }
     if (!world_) return;
-    for (const Crossing& c : world_->check(poses, state)) {
+    const std::vector<Crossing> crossings = world_->check(poses, state);
+    std::optional<geometry::ProjectionResult> closed;
+    std::vector<Eigen::Isometry3d> closed_poses;
+    for (const Crossing& c : crossings) {
       const std::array<int, 2> ids{pattern_.actors()[c.actors[0]].id, pattern_.actors()[c.actors[1]].id};
+      CollisionEvent found{t, event, ids, c.point, c.kind, c.depth, error, -1.0, state};
+      // A state between two events closes only to the interpolation's error; a crossing that the
+      // nearest closed state does not have is that error's, not the sheet's.
+      if (c.kind == CrossingKind::Mesh && error > kClosedEnough) {
+        if (!closed) {
+          closed = geometry::project(closure_, state);
+          closed_poses = geometry::facet_poses(pattern_, tree_, closed->state);
+        }
+        if (closed->converged) {
+          const auto again = world_->mesh_crossing(c.actors[0], c.actors[1], closed_poses, closed->state);
+          found.closed_depth = again ? again->depth : 0.0;
+        }
+      }
+      if (found.closed_depth == 0.0) {
+        if (!numerical_.insert({event, c.actors[0], c.actors[1]}).second) continue;
+        ++report_.numerical_count;
+        if (report_.numerical.size() < options_.max_collisions) report_.numerical.push_back(std::move(found));
+        continue;
+      }
       if (!crossed_.insert({event, c.actors[0], c.actors[1]}).second) continue;
       ++report_.collision_count;
       if (report_.collision_count == 1) {
         std::ostringstream s;
-        s << "event " << event << ": actors " << ids[0] << " and " << ids[1] << " collide at t = " << seconds(t);
+        s << "event " << event << ": actors " << ids[0] << " and " << ids[1] << " collide at t = " << seconds(t) << " ("
+          << to_string(c.kind);
+        if (c.kind == CrossingKind::Mesh) s << ", depth " << c.depth << ", closure error " << error << " rad";
+        s << ")";
         problem(s.str());
       }
-      if (report_.collisions.size() < options_.max_collisions) report_.collisions.push_back({t, event, ids, c.point, c.kind, state});
+      if (report_.collisions.size() < options_.max_collisions) report_.collisions.push_back(std::move(found));
     }
   }
+
+  // Loop error (radians) below which a state counts as closed and its crossings are not rechecked.
+  static constexpr double kClosedEnough = 1e-9;
 
   void frame(const geometry::FoldState& state, int event) { report_.frames.push_back({time_, event, state}); }
   void problem(std::string what) { report_.problems.push_back(std::move(what)); }
@@ -197,8 +230,10 @@ class Replay {
   std::vector<Eigen::Isometry3d> poses_;
   double sweep_ = 0.0;
   double time_ = 0.0;
+  double last_error_ = 0.0;
   bool closure_reported_ = false;
   std::set<std::tuple<int, int, int>> crossed_;
+  std::set<std::tuple<int, int, int>> numerical_;
   EventReport* current_ = nullptr;
   SimulationReport report_;
 };

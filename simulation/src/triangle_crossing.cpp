@@ -23,6 +23,12 @@ bool straddles(const std::array<double, 3>& d, double tolerance) {
   return lo < -tolerance && hi > tolerance;
 }
 
+// How far the corners reach through the plane on the side that reaches less.
+double reach(const std::array<double, 3>& d) {
+  const auto [lo, hi] = std::minmax({d[0], d[1], d[2]});
+  return std::min(-lo, hi);
+}
+
 // The interval, along `direction`, of the points where `t` meets the other plane: corners
 // within `tolerance` of it, and edge crossings between corners on opposite sides.
 std::array<double, 2> cut(const Tri3& t, const std::array<double, 3>& d, const Eigen::Vector3d& direction,
@@ -45,7 +51,7 @@ std::array<double, 2> cut(const Tri3& t, const std::array<double, 3>& d, const E
 
 }  // namespace
 
-std::optional<Eigen::Vector3d> triangles_cross(const Tri3& a, const Tri3& b, double tolerance) {
+std::optional<TriangleCrossing> triangles_cross(const Tri3& a, const Tri3& b, double tolerance) {
   const auto da = distances(a, b);  // a's corners against b's plane
   const auto db = distances(b, a);
   if (!da || !db || !straddles(*da, tolerance) || !straddles(*db, tolerance)) return std::nullopt;
@@ -65,7 +71,7 @@ std::optional<Eigen::Vector3d> triangles_cross(const Tri3& a, const Tri3& b, dou
   const double oa = na.dot(a[0]);
   const double ob = nb.dot(b[0]);
   const Eigen::Vector3d base = (oa * nb - ob * na).cross(na.cross(nb)) / na.cross(nb).squaredNorm();
-  return base + line * (0.5 * (lo + hi) - line.dot(base));
+  return TriangleCrossing{base + line * (0.5 * (lo + hi) - line.dot(base)), std::min(reach(*da), reach(*db))};
 }
 
 }  // namespace foldkit::simulation::detail

@@ -56,6 +56,9 @@ TEST(CollisionWorld, PassingStraightThroughIsAMeshCrossing) {
   EXPECT_EQ(found[0].actors, (std::array<int, 2>{0, 1}));
   EXPECT_NEAR(found[0].point.y(), 0.5, 1e-12);
   EXPECT_NEAR(found[0].point.z(), 0.0, 1e-12);
+  // Half of each square reaches through the other's plane.
+  EXPECT_NEAR(found[0].depth, 0.5, 1e-12);
+  EXPECT_NEAR(world.mesh_crossing(1, 0, second_at(upright), flat)->depth, 0.5, 1e-12);
   // Standing on the face (its edge resting on it) is touching.
   upright.translation() = Vector3d(0, 0.5, 0);
   EXPECT_TRUE(world.check(second_at(upright), flat).empty());

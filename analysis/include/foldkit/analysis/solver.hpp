@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include "foldkit/analysis/equilibrium.hpp"
+#include "foldkit/geometry/progress.hpp"
 
 namespace foldkit::analysis {
 
@@ -15,6 +16,7 @@ struct SolveOptions {
   int max_total_iterations = 2000;
   double min_load_step = 1.0 / 4096;  // load stepping gives up below this fraction of the load
   bool estimate_condition = true;
+  geometry::ProgressFn progress;  // per Newton iteration
 };
 
 struct ModuleResult {

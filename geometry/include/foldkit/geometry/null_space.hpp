@@ -3,6 +3,8 @@
 // projected-velocity folding (planners::fold_projected) and by the constrained planning space's
 // projection (statespaces::ClosureConstraint), neither of which may factor a dense Jacobian on
 // patterns with hundreds of creases.
+#include <limits>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -15,6 +17,20 @@ struct NullSpaceVelocity {
   Eigen::VectorXd velocity;  // the desired velocity's orthogonal projection onto null(J)
   int rank = 0;              // numerical rank of J
   double pivot_ratio = 1.0;  // √(smallest / largest kept pivot of JᵀJ): ≈ σ_min / σ_max of J
+};
+
+// A rank decision on J's smallest singular values, with the numbers behind it.
+struct RankDecision {
+  int rank = 0;
+  int nullity = 0;            // columns − rank: the instantaneous degrees of freedom of a closure Jacobian
+  double sigma_max = 0.0;     // largest singular value of J
+  double tolerance = 0.0;     // absolute: singular values at or below it count as zero
+  double largest_zero = 0.0;  // largest singular value counted as zero (0 when none is)
+  double smallest_kept = std::numeric_limits<double>::infinity();  // smallest counted as non-zero
+  std::string method;         // "dense-svd" or "inverse-subspace"
+  // smallest_kept / largest_zero (largest_zero floored at 1e-16·σ_max): how far the decision is
+  // from the tolerance on both sides; a decision with a gap near 1 is a guess.
+  double gap() const;
 };
 
 // Both operations factor JᵀJ + εI, ε = 1e-4 · rank_tolerance · max diag(JᵀJ), by a sparse LDLᵀ
@@ -39,6 +55,15 @@ class LeastNormSolver {
   // The Gauss–Newton step toward the closure manifold of least norm, Δ = −J⁺r, computed as
   // −(JᵀJ + εI)⁻¹Jᵀr. False when the factorisation fails or the step is not finite.
   bool min_norm_step(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& residual, Eigen::VectorXd& step);
+
+  // J's numerical rank: singular values above relative_tolerance·σ_max count. Up to
+  // dense_limit columns, a dense SVD; above, subspace iteration with (JᵀJ + εI)⁻¹ through this
+  // solver's factorisation, a block that starts at the LDLᵀ estimate's nullity + 4 columns and
+  // doubles until some of its Ritz values are kept, then the SVD of J times that block: its
+  // singular values bound J's smallest ones from above and converge to them. A block method,
+  // not Lanczos, because the decision counts a multiple singular value. Deterministic.
+  RankDecision decide_rank(const Eigen::SparseMatrix<double>& jacobian, double relative_tolerance = 1e-8,
+                           Eigen::Index dense_limit = 400);
 
   // How many times the ordering and symbolic analysis were computed (for tests).
   int analyses() const { return analyses_; }

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "foldkit/geometry/fold_sequence.hpp"
+#include "foldkit/geometry/progress.hpp"
 
 namespace foldkit::planners {
 
@@ -35,6 +36,7 @@ struct CarpenterOptions {
   bool all_struts = false;
   // Record one frame every this many steps (the first and last frames are always kept).
   std::size_t frame_stride = 1;
+  geometry::ProgressFn progress;  // per step
 };
 
 struct CarpenterResult {

@@ -45,6 +45,7 @@ struct PlanRequest {
   double velocity = 1.0;        // fastest joint's speed in the CMML, rad/s
   bool replay = true;           // replay the plan in the simulator before accepting it
   bool quiet = true;            // silence OMPL's console messages
+  geometry::ProgressFn progress;  // the replay's progress (the planner itself runs for `time` at most)
 };
 
 struct PlanResult {

@@ -1,4 +1,5 @@
 #pragma once
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -8,6 +9,7 @@
 #include "foldkit/geometry/crease_pattern.hpp"
 #include "foldkit/geometry/fold_sequence.hpp"
 #include "foldkit/geometry/fold_state.hpp"
+#include "foldkit/geometry/progress.hpp"
 #include "foldkit/simulation/simulate.hpp"
 
 namespace foldkit::planners {
@@ -36,13 +38,16 @@ struct ProjectedFoldingOptions {
   double closure_tolerance = 1e-10;  // largest loop error (radians) accepted at every state
   bool collisions = true;            // simulation::CollisionWorld between and at the states
   int max_steps = 20000;
-  // Rank of the Jacobian from the LDLᵀ pivots of JᵀJ + εI: pivots above rank_tolerance × the
-  // largest count (singular values above √rank_tolerance · σ_max).
+  // Rank of the Jacobian: singular values above √rank_tolerance · σ_max count. The LDLᵀ pivots
+  // of JᵀJ + εI (above rank_tolerance × the largest) screen every step; when their count changes
+  // or they collapse, geometry::LeastNormSolver::decide_rank decides from singular values.
   double rank_tolerance = 1e-8;
-  // A state is singular when √(smallest kept pivot / largest) ≈ σ_min/σ_max falls below this.
+  // A state is singular when its smallest kept singular value falls below this × σ_max (screened
+  // by √(smallest kept pivot / largest), confirmed by singular values).
   double singular_ratio = 1e-7;
   bool replay = true;                // replay the CMML in the simulator (collisions as above)
   double cmml_velocity = 1.0;        // fastest joint's speed in the CMML, rad/s
+  geometry::ProgressFn progress;     // per step (steps, closure error), then the replay's
 };
 
 struct ProjectedFoldingResult {
@@ -55,6 +60,10 @@ struct ProjectedFoldingResult {
   int rank = 0;                      // rank of the closure Jacobian at the last state
   int dof = 0;                       // creases − rank there
   double min_pivot_ratio = 1.0;      // smallest σ_min/σ_max estimate (see singular_ratio) along the path
+  int rank_decisions = 0;            // rank-revealing decisions made (the pivots' screen asked for them)
+  double rank_gap = 0.0;             // RankDecision::gap() of the last decision (rank, dof above)
+  double min_rank_gap = std::numeric_limits<double>::infinity();  // smallest gap over the decisions
+  std::string rank_method;           // "dense-svd" or "inverse-subspace"
   double time = 0.0;                 // seconds, folding only (no replay)
   std::string message;
   geometry::FoldSequence sequence;   // CMML: flat → states (geometry::path_sequence)

@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -36,11 +37,22 @@ struct Crossing {
   std::array<int, 2> actors{};  // actor indices, smaller first
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  // world coordinates
   CrossingKind kind = CrossingKind::Mesh;
+  // Mesh crossings: how far the deepest-crossing pair of triangles interpenetrates (sheet units;
+  // the smaller reach of either triangle through the other's plane). 0 for the other kinds.
+  double depth = 0.0;
 };
 
 // The sheet's facets as FCL triangle meshes. Pairs of facets that share a crease are left out of
 // the mesh test and judged by their fold angle instead; every other pair near enough for the
 // broad phase is judged by the rules of docs/SIMULATION.md: touching is allowed, crossing is not.
+//
+// A pair is judged in the frame of its first facet, with the second placed through the creases
+// of the shortest chain of facets between them (round their common vertex, for facets that share
+// one), not through the poses given: those come from one spanning tree, and a state that closes
+// only to round-off or to an interpolation's error (1e-5 rad) opens, along a tree 100 facets
+// deep, into gaps and overlaps of hundredths of the sheet's unit between facets that hang from
+// different branches. The given poses serve the broad phase (grown by their measured mismatch
+// across the creases outside the tree) and pairs in different components of the sheet.
 class CollisionWorld {
  public:
   // Keeps a reference to `pattern`, which must outlive the world.
@@ -56,6 +68,13 @@ class CollisionWorld {
   std::vector<Crossing> check(const std::vector<Eigen::Isometry3d>& poses, const geometry::FoldState& state);
   // Forgets that memory (a new motion starts).
   void reset();
+
+  // Whether facets `a` and `b` (actor indices, not hinged together) cut through each other at
+  // `state`, judged as check() judges a mesh crossing but without its broad phase or memory;
+  // `poses` place facets of different components. Used to test a crossing again at a nearby
+  // state (the simulator's closed-state recheck).
+  std::optional<Crossing> mesh_crossing(int a, int b, const std::vector<Eigen::Isometry3d>& poses,
+                                        const geometry::FoldState& state);
 
   double tolerance() const;                 // absolute
   std::size_t checked_pairs() const;        // pairs the broad phase passed on the last check

@@ -9,6 +9,7 @@
 #include "foldkit/geometry/crease_pattern.hpp"
 #include "foldkit/geometry/fold_sequence.hpp"
 #include "foldkit/geometry/fold_state.hpp"
+#include "foldkit/geometry/progress.hpp"
 #include "foldkit/simulation/collision_world.hpp"
 
 namespace foldkit::simulation {
@@ -41,6 +42,7 @@ struct SimulationOptions {
   bool record_frames = false;        // keep the state at every step (for FOLD file_frames)
   std::size_t max_steps = 10'000'000; // steps one event may take (a guard against 1e-9 deg/s)
   std::size_t max_collisions = 1000; // collisions listed; the count goes on
+  geometry::ProgressFn progress;     // per step: events done of all, closure error of the state
 };
 
 struct CollisionEvent {
@@ -49,6 +51,11 @@ struct CollisionEvent {
   std::array<int, 2> actors{};       // actor IDs
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   CrossingKind kind = CrossingKind::Mesh;
+  double depth = 0.0;                // mesh crossings: interpenetration (sheet units), as Crossing::depth
+  double closure_error = 0.0;        // largest loop error (radians) of the state when it happened
+  // Mesh crossings at a state that does not close: the depth once that state is projected onto
+  // closure (0 when the crossing is gone there, which makes it numerical). −1: not rechecked.
+  double closed_depth = -1.0;
   geometry::FoldState state;         // the sheet when it happened (for snapshots)
 };
 
@@ -78,6 +85,11 @@ struct SimulationReport {
   std::vector<EventReport> events;
   std::vector<CollisionEvent> collisions;   // the first time each pair crossed in each event
   std::size_t collision_count = 0;          // all of them, also those beyond max_collisions
+  // Mesh crossings that vanish when their state is projected onto closure: artefacts of a state
+  // that does not close (e.g. between two events), not crossings; they do not make the sequence
+  // invalid. The first per pair and event, up to max_collisions, and their count.
+  std::vector<CollisionEvent> numerical;
+  std::size_t numerical_count = 0;
   std::vector<std::string> problems;        // why the sequence is invalid, in words
   std::vector<Frame> frames;                // every step when record_frames, else each event's end
   geometry::FoldState final_state;
