@@ -36,11 +36,14 @@ Command add_dof(CLI::App& root) {
                                         {"creases", m.creases},
                                         {"tolerance", m.tolerance},
                                         {"method", m.method},
+                                        {"largest_zero_singular_value", m.decision.largest_zero},
+                                        {"smallest_kept_singular_value", m.decision.smallest_kept},
+                                        {"rank_gap", m.decision.gap()},
                                         {"vertex_loops", system.vertex_loops()},
                                         {"hole_cycles", system.hole_cycles()},
                                         {"closure_error", error}};
             std::cerr << opt->pattern << ": " << m.dof << " DOF (" << m.creases << " creases, rank " << m.rank << " at tolerance "
-                      << m.tolerance << ", " << m.method << ")";
+                      << m.tolerance << ", " << m.method << ", singular-value gap " << m.decision.gap() << ")";
             if (error > 1e-9) std::cerr << "; warning: the state is not closed (error " << error << " rad)";
             std::cerr << '\n';
             if (opt->json) print_json(out);

@@ -15,7 +15,7 @@ bool LeastNormSolver::factor(const Eigen::SparseMatrix<double>& jacobian) {
   a_ = jacobian.transpose() * jacobian;
   double largest = 0.0;
   for (Eigen::Index k = 0; k < a_.cols(); ++k) largest = std::max(largest, a_.coeff(k, k));
-  eps_ = 1e-4 * rank_tolerance_ * std::max(largest, 1.0);
+  eps_ = 1e-4 * rank_tolerance_ * std::max(largest, eps_floor_);
   for (Eigen::Index k = 0; k < a_.cols(); ++k) a_.coeffRef(k, k) += eps_;
   a_.makeCompressed();
   const int* outer = a_.outerIndexPtr();
@@ -126,7 +126,7 @@ Eigen::VectorXd ascending_singular_values(const Eigen::MatrixXd& m) {
 }  // namespace
 
 RankDecision LeastNormSolver::decide_rank(const Eigen::SparseMatrix<double>& jacobian, double relative_tolerance,
-                                          Eigen::Index dense_limit) {
+                                          Eigen::Index dense_limit, double scale_floor) {
   RankDecision d;
   const Eigen::Index n = jacobian.cols();
   if (jacobian.rows() == 0 || jacobian.nonZeros() == 0) {
@@ -137,7 +137,7 @@ RankDecision LeastNormSolver::decide_rank(const Eigen::SparseMatrix<double>& jac
   if (n <= dense_limit || jacobian.rows() <= 1) {
     const Eigen::VectorXd s = ascending_singular_values(Eigen::MatrixXd(jacobian));
     d.sigma_max = s.size() ? s[s.size() - 1] : 0.0;
-    d.tolerance = relative_tolerance * d.sigma_max;
+    d.tolerance = relative_tolerance * std::max(d.sigma_max, scale_floor);
     // Columns beyond the rows have singular value 0.
     Eigen::VectorXd all = Eigen::VectorXd::Zero(n);
     all.tail(s.size()) = s;
@@ -147,7 +147,20 @@ RankDecision LeastNormSolver::decide_rank(const Eigen::SparseMatrix<double>& jac
   }
   d.method = "inverse-subspace";
   d.sigma_max = largest_singular_value(jacobian);
-  d.tolerance = relative_tolerance * d.sigma_max;
+  d.tolerance = relative_tolerance * std::max(d.sigma_max, scale_floor);
+  if (d.sigma_max <= d.tolerance) {  // zero to rounding: nothing to iterate on
+    d.nullity = static_cast<int>(n);
+    d.largest_zero = d.sigma_max;
+    return d;
+  }
+  // ε relative to this J's own scale (floored at the caller's), not the solver's floor of 1: the
+  // inverse iteration separates singular values only above √ε.
+  struct FloorScope {
+    double& floor;
+    double saved;
+    ~FloorScope() { floor = saved; }
+  } scope{eps_floor_, eps_floor_};
+  eps_floor_ = scale_floor * scale_floor;
   const NullSpaceVelocity screen = project_onto_null_space(jacobian, Eigen::VectorXd::Zero(n));  // factors J
   if (screen.rank == static_cast<int>(n) && screen.pivot_ratio == 0.0) throw std::runtime_error("decide_rank: factorisation failed");
   Eigen::Index block = std::min<Eigen::Index>(n, std::max<Eigen::Index>(n - screen.rank + 4, 6));
@@ -169,8 +182,9 @@ RankDecision LeastNormSolver::decide_rank(const Eigen::SparseMatrix<double>& jac
     const Eigen::VectorXd some = ascending_singular_values(jq);
     s.tail(some.size()) = some;
     count(s, n, d);
-    if (d.nullity == q.cols() && q.cols() < n) {
-      // Every Ritz value is below the tolerance: the null space may be larger than the block.
+    if ((d.nullity == q.cols() || d.rank > jacobian.rows()) && q.cols() < n) {
+      // Every Ritz value is below the tolerance (the null space may be larger than the block), or
+      // fewer are than J's shape forces (n − rows at least): widen the block.
       const Eigen::Index grow = std::min<Eigen::Index>(n, 2 * q.cols()) - q.cols();
       Eigen::MatrixXd wider(n, q.cols() + grow);
       wider << q, random_block(n, grow);

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/QR>
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -15,6 +14,7 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/statespaces/closure_constraint.hpp"
@@ -47,12 +47,7 @@ const char* to_string(SpaceKind kind) {
 }
 
 Eigen::Index closure_rank(const geometry::ClosureSystem& system, const FoldState& state) {
-  Eigen::VectorXd r;
-  Eigen::SparseMatrix<double> j;
-  system.evaluate(state, r, j);
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr{Eigen::MatrixXd(j)};
-  qr.setThreshold(1e-8);
-  return qr.rank();
+  return geometry::mobility(system, state).rank;
 }
 
 std::optional<std::vector<FoldState>> densify(const geometry::ClosureSystem& system, const std::vector<FoldState>& waypoints,

@@ -284,9 +284,10 @@ class Folder {
     return true;
   }
 
-  // J's rank by singular values (geometry::LeastNormSolver::decide_rank), the fold's record of it.
+  // J's rank by singular values (geometry::LeastNormSolver::decide_rank), the fold's record of it;
+  // σ_max floored at 1 as geometry::mobility does (closure Jacobians are dimensionless).
   void decide(const Eigen::SparseMatrix<double>& J) {
-    decision_ = solver_.decide_rank(J, std::sqrt(opt_.rank_tolerance));
+    decision_ = solver_.decide_rank(J, std::sqrt(opt_.rank_tolerance), 400, 1.0);
     ++result_.rank_decisions;
     result_.rank = decision_.rank;
     result_.dof = decision_.nullity;

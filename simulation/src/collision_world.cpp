@@ -69,7 +69,6 @@ struct CollisionWorld::Impl {
   std::size_t mesh_tests = 0;
 
   // The creases and their turns at the state being judged, for relative poses along chains.
-  std::vector<std::vector<std::pair<int, int>>> neighbours;  // per actor: (joint, other actor)
   std::vector<geometry::JointAxis> axes;                      // per joint
   std::vector<std::array<double, 2>> sides;                   // per joint: side_of each of its actors
   const geometry::FoldState* state = nullptr;
@@ -89,11 +88,8 @@ struct CollisionWorld::Impl {
     for (const auto& j : p.joints()) hinged.insert(key(std::min(j.actors[0], j.actors[1]), std::max(j.actors[0], j.actors[1])));
     facets.reserve(p.actors().size());
     for (std::size_t a = 0; a < p.actors().size(); ++a) facets.push_back(make_facet(static_cast<int>(a)));
-    neighbours.resize(p.actors().size());
     for (std::size_t j = 0; j < p.joints().size(); ++j) {
       const auto& joint = p.joints()[j];
-      neighbours[joint.actors[0]].emplace_back(static_cast<int>(j), joint.actors[1]);
-      neighbours[joint.actors[1]].emplace_back(static_cast<int>(j), joint.actors[0]);
       axes.push_back(geometry::joint_axis(p, static_cast<int>(j)));
       sides.push_back({geometry::side_of(p, static_cast<int>(j), joint.actors[0]),
                        geometry::side_of(p, static_cast<int>(j), joint.actors[1])});
@@ -202,19 +198,24 @@ struct CollisionWorld::Impl {
     return turn[joint];
   }
 
-  // Breadth-first from a to b over the creases; neighbours in crease order, so the chain is the
+  // Breadth-first from a to b over the facet graph's creases, in crease order, so the chain is the
   // same whatever the actors' numbering when it is the only shortest one (round a vertex, it is
-  // one of two of equal length, which differ by that vertex's closure error alone).
+  // one of two of equal length, which differ by that vertex's closure error alone). Written out
+  // rather than boost::breadth_first_search because it stops at b or after kMaxVisited facets,
+  // which a BGL visitor can do only by throwing.
   const std::vector<int>& chain(int a, int b) {
     const auto [it, fresh] = chains.try_emplace(key(a, b));
     if (!fresh) return it->second;
+    const geometry::FacetGraph& graph = pattern->facet_graph();
+    const auto edge_index = boost::get(boost::edge_index, graph);
     std::unordered_map<int, int> via;  // actor → step that reached it
     via.emplace(a, kNoChain);
     std::deque<int> queue{a};
     while (!queue.empty() && !via.count(b) && via.size() < kMaxVisited) {
       const int f = queue.front();
       queue.pop_front();
-      for (const auto& [j, g] : neighbours[f]) {
+      for (auto [e, end] = boost::out_edges(f, graph); e != end; ++e) {
+        const int j = edge_index[*e], g = static_cast<int>(boost::target(*e, graph));
         if (via.count(g)) continue;
         via.emplace(g, (j << 1) | (pattern->joints()[j].actors[0] == g ? 0 : 1));
         queue.push_back(g);
@@ -328,14 +329,14 @@ struct CollisionWorld::Impl {
     return std::nullopt;
   }
 
-  std::vector<Crossing> check(const std::vector<Eigen::Isometry3d>& poses, const geometry::FoldState& state) {
+  std::vector<Crossing> check(const std::vector<Eigen::Isometry3d>& poses, const geometry::FoldState& at) {
     if (poses.size() != facets.size())
       throw std::invalid_argument("CollisionWorld::check: " + std::to_string(poses.size()) + " poses for " +
                                   std::to_string(facets.size()) + " actors");
-    if (static_cast<std::size_t>(state.angles.size()) != pattern->joints().size())
+    if (static_cast<std::size_t>(at.angles.size()) != pattern->joints().size())
       throw std::invalid_argument("CollisionWorld::check: state does not hold one angle per joint");
     mesh_tests = 0;
-    start(state);
+    start(at);
     place(poses);
     find_candidates();
     std::vector<Crossing> found;
@@ -343,7 +344,7 @@ struct CollisionWorld::Impl {
       if (auto c = test(a, b, poses)) found.push_back(*c);
     for (std::size_t j = 0; j < pattern->joints().size(); ++j) {
       // Two facets turning about their common crease meet again only beyond ±180°.
-      if (std::abs(state.angles[static_cast<Eigen::Index>(j)]) <= M_PI + 1e-12) continue;
+      if (std::abs(at.angles[static_cast<Eigen::Index>(j)]) <= M_PI + 1e-12) continue;
       const auto& joint = pattern->joints()[j];
       const geometry::Vec2 mid = 0.5 * (pattern->vertices()[joint.v[0]] + pattern->vertices()[joint.v[1]]);
       const int a = std::min(joint.actors[0], joint.actors[1]);

@@ -11,6 +11,7 @@
 #include <ompl/base/spaces/constraint/ProjectedStateSpace.h>
 #include <ompl/base/spaces/constraint/TangentBundleStateSpace.h>
 
+#include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/null_space.hpp"
 
 namespace foldkit::statespaces {
@@ -23,10 +24,11 @@ unsigned int ClosureConstraint::rank_at(const geometry::ClosureSystem& system, c
   Eigen::VectorXd r;
   Eigen::SparseMatrix<double> j;
   system.evaluate(reference, r, j);
+  // The rank by singular values (the one rank decision of foldkit, geometry::mobility); the rows
+  // kept are the first `rank` that column-pivoted QR of Jᵀ picks as independent.
+  const Eigen::Index rank = geometry::mobility(system, reference).rank;
   const Eigen::MatrixXd jt = Eigen::MatrixXd(j).transpose();
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(jt);
-  qr.setThreshold(1e-8);
-  const auto rank = qr.rank();
   if (rank <= 0 || rank >= system.cols())
     throw std::invalid_argument("constrained space: the closure Jacobian has rank " + std::to_string(rank) + " for " +
                                 std::to_string(system.cols()) + " creases at the reference state (no motion)");

@@ -95,3 +95,48 @@ TEST(LeastNormSolver, AnalysesOncePerSparsityPattern) {
 }
 
 }  // namespace
+
+namespace {
+
+// decide_rank against Eigen's JacobiSVD (the oracle: a different SVD algorithm), on both paths:
+// dense SVD (the default limit) and subspace iteration (limit 0). Random matrices of known rank
+// r0 (rows beyond r0 repeat earlier ones), wider than the dense limit would pass; the rank and the
+// singular values on both sides of the tolerance agree.
+TEST(LeastNormSolver, DecideRankMatchesJacobiSvd) {
+  std::mt19937 rng(17);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int n = 60, m = 48, r0 = trial % 2 ? 36 : 48;
+    const Sparse j = random_jacobian(m, n, r0, rng);
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd{Eigen::MatrixXd(j)};
+    const Eigen::VectorXd s = svd.singularValues();
+    const double tol = 1e-8 * s[0];
+    int rank = 0;
+    for (Eigen::Index i = 0; i < s.size(); ++i) rank += s[i] > tol;
+    LeastNormSolver solver;
+    for (Eigen::Index limit : {Eigen::Index{1000}, Eigen::Index{0}}) {
+      const foldkit::geometry::RankDecision d = solver.decide_rank(j, 1e-8, limit);
+      EXPECT_EQ(d.method, limit ? "dense-svd" : "inverse-subspace");
+      EXPECT_EQ(d.rank, rank) << trial << " " << d.method;
+      EXPECT_EQ(d.nullity, n - rank) << trial << " " << d.method;
+      EXPECT_NEAR(d.sigma_max, s[0], 1e-4 * s[0]);  // by power iteration on the sparse path
+      EXPECT_NEAR(d.smallest_kept, s[rank - 1], 1e-4 * s[rank - 1]) << trial << " " << d.method;
+      EXPECT_LE(d.largest_zero, tol);
+      EXPECT_GT(d.gap(), 1e4) << trial << " " << d.method;
+    }
+  }
+}
+
+// Relative by default: the same matrix scaled by 1e-9 keeps its rank. With a scale floor, a
+// matrix that is zero to rounding has rank 0 (as a closure Jacobian of a straight crease does).
+TEST(LeastNormSolver, DecideRankScaleFloor) {
+  std::mt19937 rng(3);
+  const Sparse j = random_jacobian(24, 30, 18, rng);
+  LeastNormSolver solver;
+  for (Eigen::Index limit : {Eigen::Index{1000}, Eigen::Index{0}}) {
+    EXPECT_EQ(solver.decide_rank(Sparse(1e-9 * j), 1e-8, limit).rank, 18) << limit;
+    EXPECT_EQ(solver.decide_rank(Sparse(1e-17 * j), 1e-8, limit, 1.0).rank, 0) << limit;
+    EXPECT_EQ(solver.decide_rank(Sparse(1e-17 * j), 1e-8, limit, 1.0).nullity, 30) << limit;
+  }
+}
+
+}  // namespace

@@ -1,5 +1,8 @@
+#include <charconv>
 #include <cmath>
+#include <optional>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -39,6 +42,48 @@ TEST(NumberFormat, DegreesRoundTripRandom) {
     const double typed = deg(rng) / 1e6;
     EXPECT_EQ(parse_numbers(format_degrees(degrees_to_radians(typed))).values[0], typed);
   }
+}
+
+// The search format_degrees once ran, kept as its oracle: every precision 1…17 on the product and
+// its four neighbours either side, first that maps back wins.
+std::optional<std::string> every_precision(double radians) {
+  const double degrees = radians * (180.0 / M_PI);
+  std::vector<double> candidates{degrees};
+  for (double up = degrees, down = degrees; candidates.size() < 9;) {
+    candidates.push_back(up = std::nextafter(up, HUGE_VAL));
+    candidates.push_back(down = std::nextafter(down, -HUGE_VAL));
+  }
+  for (int digits = 1; digits <= 17; ++digits)
+    for (double d : candidates) {
+      char buf[40];
+      auto [end, ec] = std::to_chars(buf, buf + sizeof buf, d, std::chars_format::general, digits);
+      if (ec != std::errc()) continue;
+      double back = 0.0;
+      std::from_chars(buf, end, back);
+      if (degrees_to_radians(back) == radians) return format_number(back);
+    }
+  return std::nullopt;
+}
+
+std::string every_precision_degrees(double radians) {
+  if (radians == 0.0) return "0";
+  if (auto exact = every_precision(radians)) return *exact;
+  if (auto exact = every_precision(degrees_to_radians(radians * (180.0 / M_PI)))) return *exact;
+  return format_number(radians * (180.0 / M_PI));
+}
+
+TEST(NumberFormat, DegreesMatchEveryPrecisionSearch) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-M_PI, M_PI);
+  std::uniform_int_distribution<int> deg(-180000, 180000);
+  std::uniform_real_distribution<double> exponent(-300, 300);
+  for (int i = 0; i < 20000; ++i) {
+    for (double r : {u(rng), degrees_to_radians(deg(rng) / 1e3), degrees_to_radians(deg(rng)),
+                     std::pow(10.0, exponent(rng)) * (i % 2 ? 1 : -1)})
+      ASSERT_EQ(format_degrees(r), every_precision_degrees(r)) << std::hexfloat << r;
+  }
+  for (double typed : {1200.0, 90.0, 0.5, 1e-7, 123456789.0, 359.999999})
+    EXPECT_EQ(format_degrees(degrees_to_radians(typed)), every_precision_degrees(degrees_to_radians(typed)));
 }
 
 TEST(NumberFormat, ParseRejectsNonFinite) {

@@ -56,14 +56,16 @@ class LeastNormSolver {
   // −(JᵀJ + εI)⁻¹Jᵀr. False when the factorisation fails or the step is not finite.
   bool min_norm_step(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& residual, Eigen::VectorXd& step);
 
-  // J's numerical rank: singular values above relative_tolerance·σ_max count. Up to
+  // J's numerical rank: singular values above relative_tolerance·max(σ_max, scale_floor) count
+  // (scale_floor: the size of an entry of J that is not rounding, so that a J zero to rounding
+  // has rank 0; 0 leaves the tolerance purely relative). Up to
   // dense_limit columns, a dense SVD; above, subspace iteration with (JᵀJ + εI)⁻¹ through this
   // solver's factorisation, a block that starts at the LDLᵀ estimate's nullity + 4 columns and
   // doubles until some of its Ritz values are kept, then the SVD of J times that block: its
   // singular values bound J's smallest ones from above and converge to them. A block method,
   // not Lanczos, because the decision counts a multiple singular value. Deterministic.
   RankDecision decide_rank(const Eigen::SparseMatrix<double>& jacobian, double relative_tolerance = 1e-8,
-                           Eigen::Index dense_limit = 400);
+                           Eigen::Index dense_limit = 400, double scale_floor = 0.0);
 
   // How many times the ordering and symbolic analysis were computed (for tests).
   int analyses() const { return analyses_; }
@@ -76,6 +78,9 @@ class LeastNormSolver {
   Eigen::SparseMatrix<double> a_;  // JᵀJ + εI
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
   double eps_ = 0.0;
+  // ε's scale is max diag(JᵀJ) floored at this (1: closure Jacobians, entries of order 1);
+  // decide_rank sets it from its scale_floor for the duration of a decision.
+  double eps_floor_ = 1.0;
   std::vector<int> outer_, inner_;  // the pattern ldlt_ was analysed for
   int analyses_ = 0;
 };

@@ -77,7 +77,7 @@ std::optional<std::vector<geometry::FoldState>> densify(const geometry::ClosureS
 std::vector<geometry::FoldState> lead_in(const geometry::ClosureSystem& system, const geometry::FoldState& start,
                                          const geometry::FoldState& goal, Eigen::Index rank, double max_step);
 
-// Rank of the closure Jacobian at `state` (dense column-pivoted QR, threshold 1e-8).
+// Rank of the closure Jacobian at `state`: geometry::mobility (singular values, relative tolerance 1e-8).
 Eigen::Index closure_rank(const geometry::ClosureSystem& system, const geometry::FoldState& state);
 
 }  // namespace foldkit::planners
