@@ -1,20 +1,34 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages foldkit builds against, when any is missing.
+# Installs the Debian 12 packages foldkit builds against, when any is missing. Extra packages a
+# script needs beyond those (e.g. clang for scripts/test-tsan.sh) can be given as arguments.
 # OMPL's CMake config links Boost.Serialization/Filesystem/System and ODE, which libompl-dev
 # does not pull in, so they are listed explicitly.
 set -euo pipefail
 
+# --demo: only what building the foldkit CLI needs (scripts/demo.sh); the test, benchmark and
+# experiment packages are left out.
+demo=0
+if [ "${1:-}" = "--demo" ]; then
+  demo=1
+  shift
+fi
+
 packages=(
-  cmake g++ make
+  cmake g++ make ccache
   libeigen3-dev libboost-dev libboost-graph-dev
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
   libtinyxml2-dev nlohmann-json3-dev libcli11-dev
   libompl-dev libode-dev libfcl-dev libccd-dev
   coinor-libclp-dev pkg-config
-  libbenchmark-dev libgtest-dev
-  python3-matplotlib
-  ompl-demos
+  "$@"
 )
+if [ "$demo" -eq 0 ]; then
+  packages+=(
+    libbenchmark-dev libgtest-dev
+    python3-matplotlib
+    ompl-demos
+  )
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -7,6 +7,8 @@
 
 #include <Eigen/Cholesky>
 
+#include <tinyxml2.h>
+
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/number_format.hpp"
 #include "foldkit/io/parse_error.hpp"

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <tinyxml2.h>
+
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/number_format.hpp"
 #include "foldkit/io/parse_error.hpp"

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <sstream>
 
+#include <tinyxml2.h>
+
 #include "foldkit/io/number_format.hpp"
 #include "foldkit/io/xml_reader.hpp"
 

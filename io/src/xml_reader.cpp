@@ -9,6 +9,8 @@
 #include <string_view>
 #include <utility>
 
+#include <tinyxml2.h>
+
 #include "foldkit/io/number_format.hpp"
 #include "foldkit/io/parse_error.hpp"
 #include "text_lines.hpp"
@@ -157,8 +159,10 @@ std::optional<std::pair<std::size_t, std::string>> bad_reference(std::string_vie
 
 }  // namespace
 
+XmlInput::~XmlInput() = default;
+
 XmlInput::XmlInput(const std::string& text, std::string name)
-    : doc_(true, tinyxml2::PRESERVE_WHITESPACE), name_(std::move(name)) {
+    : doc_(std::make_unique<tinyxml2::XMLDocument>(true, tinyxml2::PRESERVE_WHITESPACE)), name_(std::move(name)) {
   if (const auto nul = text.find('\0'); nul != std::string::npos)
     fail(line_at(text, nul), "contains NUL bytes: not an XML text file");
   // The declaration first: a Latin-1 file is better told so than pointed at its first byte.
@@ -169,19 +173,19 @@ XmlInput::XmlInput(const std::string& text, std::string name)
       if (auto enc = declared_encoding(head.substr(2, end - 2)); enc && !is_utf8_name(*enc)) fail(1, unsupported_encoding(*enc));
   if (auto bad = bad_character(text)) fail(line_at(text, bad->first), bad->second);
   if (auto bad = bad_reference(text)) fail(line_at(text, bad->first), bad->second);
-  if (doc_.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
-    std::string what = doc_.ErrorStr() ? doc_.ErrorStr() : "XML syntax error";
+  if (doc_->Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
+    std::string what = doc_->ErrorStr() ? doc_->ErrorStr() : "XML syntax error";
     // tinyxml2's message repeats the line as "line=N"; keep the part that says what is wrong.
     if (auto pos = what.find(" Line number"); pos != std::string::npos) what.resize(pos);
-    int line = doc_.ErrorLineNum();
-    if (doc_.ErrorID() == tinyxml2::XML_ERROR_EMPTY_DOCUMENT) {
+    int line = doc_->ErrorLineNum();
+    if (doc_->ErrorID() == tinyxml2::XML_ERROR_EMPTY_DOCUMENT) {
       what = "the file is empty";
       line = 1;
     }
-    if (doc_.ErrorID() == tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED) what = "elements are nested too deeply";
+    if (doc_->ErrorID() == tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED) what = "elements are nested too deeply";
     fail(line, (line == 1 && what == "the file is empty" ? "" : "invalid XML: ") + what);
   }
-  check_decoded(doc_);
+  check_decoded(*doc_);
 }
 
 void XmlInput::check_decoded(const tinyxml2::XMLNode& node) const {
@@ -199,7 +203,7 @@ void XmlInput::check_decoded(const tinyxml2::XMLNode& node) const {
 }
 
 const tinyxml2::XMLElement& XmlInput::root(const char* expected) const {
-  const tinyxml2::XMLElement* r = doc_.RootElement();
+  const tinyxml2::XMLElement* r = doc_->RootElement();
   if (!r) fail(1, std::string("no <") + expected + "> element");
   if (std::strcmp(r->Name(), expected) != 0)
     fail(*r, std::string("the root element is <") + r->Name() + ">, expected <" + expected + ">");

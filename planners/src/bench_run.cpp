@@ -21,6 +21,7 @@
 #include "foldkit/planners/bench_suite.hpp"
 #include "foldkit/planners/plan_setup.hpp"
 #include "foldkit/planners/planner_factory.hpp"
+#include "foldkit/simulation/clearance.hpp"
 #include "foldkit/simulation/simulate.hpp"
 
 namespace foldkit::planners {
@@ -59,7 +60,7 @@ PathMetrics measure_path(const BenchScene& scene, const std::vector<FoldState>& 
   for (std::size_t i = 0; i < waypoints.size(); i += stride) sample.push_back(waypoints[i]);
   if (sample.size() == 0 || (sample.back().angles - waypoints.back().angles).cwiseAbs().maxCoeff() > 0.0)
     sample.push_back(waypoints.back());
-  m.min_clearance = min_clearance(p, sample);
+  m.min_clearance = simulation::min_clearance(p, sample);
   const geometry::FoldSequence seq = geometry::path_sequence(p, waypoints, scene.request.velocity, p.title());
   m.cmml_events = seq.events.size();
   simulation::SimulationOptions so;

@@ -95,8 +95,9 @@ FoldState projected_goal(const PlanRequest& req, std::mt19937& rng, Guess guess,
     if (!bounds.contains(goal, 1e-9) || !validity.valid(goal)) continue;
     const std::vector<FoldState> line = projected_line(system, start, goal, req.waypoint_step);
     if (line.empty() || (line.back().angles - goal.angles).cwiseAbs().maxCoeff() > 1e-9) continue;
-    bool ok = validity.valid(line.front());
-    for (std::size_t i = 1; i < line.size() && ok; ++i) ok = validity.valid_next(line[i]) && bounds.contains(line[i], 1e-9);
+    statespaces::FoldValidity::Motion motion(validity);
+    bool ok = motion.valid_first(line.front());
+    for (std::size_t i = 1; i < line.size() && ok; ++i) ok = motion.valid_next(line[i]) && bounds.contains(line[i], 1e-9);
     if (ok) return goal;
   }
   throw std::runtime_error("bench: no reachable goal for scene " + name);

@@ -27,24 +27,65 @@ StateReader constrained_reader() {
 
 FoldValidity::FoldValidity(const geometry::CreasePattern& p, AngleBounds b, bool check_collisions,
                            double tolerance, const simulation::CollisionOptions& collision)
-    : pattern(&p),
-      bounds(std::move(b)),
-      closure_tolerance(tolerance),
-      system_(std::make_shared<geometry::ClosureSystem>(p)),
-      tree_(geometry::make_tree(p)) {
-  if (check_collisions) collisions = std::make_shared<simulation::CollisionWorld>(p, collision);
+    : pattern_(&p),
+      bounds_(std::move(b)),
+      closure_tolerance_(tolerance),
+      check_collisions_(check_collisions),
+      collision_(collision),
+      system_(p),
+      tree_(geometry::make_tree(p)) {}
+
+FoldValidity::~FoldValidity() = default;
+
+std::unique_ptr<simulation::CollisionWorld> FoldValidity::take() const {
+  if (!check_collisions_) return nullptr;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!pool_.empty()) {
+      auto world = std::move(pool_.back());
+      pool_.pop_back();
+      return world;
+    }
+    ++built_;
+  }
+  // Built outside the lock: a large sheet's world takes a while, and other threads may go on.
+  return std::make_unique<simulation::CollisionWorld>(*pattern_, collision_);
+}
+
+void FoldValidity::give(std::unique_ptr<simulation::CollisionWorld> world) const {
+  if (!world) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  pool_.push_back(std::move(world));
+}
+
+std::size_t FoldValidity::worlds_built() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return built_;
+}
+
+bool FoldValidity::valid_with(const geometry::FoldState& state, simulation::CollisionWorld* world) const {
+  if (!state.angles.allFinite() || !bounds_.contains(state, 1e-9)) return false;
+  if (system_.max_error(state) > closure_tolerance_) return false;
+  if (!world) return true;
+  return world->check(geometry::facet_poses(*pattern_, tree_, state), state).empty();
 }
 
 bool FoldValidity::valid(const geometry::FoldState& state) const {
-  if (collisions) collisions->reset();
-  return valid_next(state);
+  Motion motion(*this);
+  return motion.valid_first(state);
 }
 
-bool FoldValidity::valid_next(const geometry::FoldState& state) const {
-  if (!state.angles.allFinite() || !bounds.contains(state, 1e-9)) return false;
-  if (system_->max_error(state) > closure_tolerance) return false;
-  if (!collisions) return true;
-  return collisions->check(geometry::facet_poses(*pattern, tree_, state), state).empty();
+FoldValidity::Motion::Motion(const FoldValidity& validity) : validity_(validity), world_(validity.take()) {}
+
+FoldValidity::Motion::~Motion() { validity_.give(std::move(world_)); }
+
+bool FoldValidity::Motion::valid_first(const geometry::FoldState& state) {
+  if (world_) world_->reset();
+  return validity_.valid_with(state, world_.get());
+}
+
+bool FoldValidity::Motion::valid_next(const geometry::FoldState& state) {
+  return validity_.valid_with(state, world_.get());
 }
 
 FoldValidityChecker::FoldValidityChecker(const ob::SpaceInformationPtr& si, std::shared_ptr<const FoldValidity> validity,
@@ -83,7 +124,8 @@ bool FoldMotionValidator::check(const ob::State* s1, const ob::State* s2, std::p
     ++invalid_;
     return false;
   };
-  if (!reader_(s1, f1) || !validity_->valid(f1)) return fail();
+  FoldValidity::Motion motion(*validity_);
+  if (!reader_(s1, f1) || !motion.valid_first(f1)) return fail();
   if (!reader_(s2, f2)) return fail();
   ob::State* tmp = space.allocState();
   struct Guard {
@@ -96,7 +138,7 @@ bool FoldMotionValidator::check(const ob::State* s1, const ob::State* s2, std::p
   std::function<bool(double, const geometry::FoldState&, double, const geometry::FoldState&, int)> advance =
       [&](double ta, const geometry::FoldState& fa, double tb, const geometry::FoldState& fb, int depth) -> bool {
     if ((fb.angles - fa.angles).cwiseAbs().maxCoeff() <= max_jump_) {
-      if (!validity_->valid_next(fb)) return false;
+      if (!motion.valid_next(fb)) return false;
       last_t = tb;
       return true;
     }

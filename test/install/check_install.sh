@@ -17,4 +17,16 @@ cmake --build "$prefix/consumer" >/dev/null
 out=$("$prefix/consumer/use_foldkit")
 echo "$out"
 test "$out" = "15 actors, 22 joints"
+# As on a machine without OMPL, FCL and Clp: the geometry + io components must not look for them.
+cmake -S "$source_dir/examples/use_foldkit" -B "$prefix/bare" -DCMAKE_PREFIX_PATH="$prefix/install" \
+  -DCMAKE_DISABLE_FIND_PACKAGE_ompl=ON -DCMAKE_DISABLE_FIND_PACKAGE_fcl=ON -DCMAKE_DISABLE_FIND_PACKAGE_PkgConfig=ON \
+  -DCMAKE_CXX_FLAGS="$cxx_flags" -DCMAKE_EXE_LINKER_FLAGS="$linker_flags" >/dev/null
+cmake --build "$prefix/bare" >/dev/null
+test "$("$prefix/bare/use_foldkit")" = "15 actors, 22 joints"
+# Asking for the planners without them fails at configure time, with foldkit's message.
+if cmake -S "$source_dir/examples/use_foldkit" -B "$prefix/no-planners" -DCMAKE_PREFIX_PATH="$prefix/install" \
+  -DCMAKE_DISABLE_FIND_PACKAGE_ompl=ON -DFOLDKIT_CONSUMER_COMPONENTS=planners >/dev/null 2>&1; then
+  echo "check_install: find_package(foldkit COMPONENTS planners) succeeded without OMPL" >&2
+  exit 1
+fi
 "$prefix/install/bin/foldkit" --version

@@ -90,6 +90,27 @@ TEST(Plan, SingleVerticesOfDegree4To12FromFlatWithAndWithoutCollision) {
   }
 }
 
+// PRM and PRM* grow their roadmap in a second thread and check states from both at once; with
+// collisions on, every check shares one FoldValidity (scripts/test-tsan.sh runs this under
+// ThreadSanitizer).
+TEST(Plan, ThreadedPlannersWithCollisions) {
+  std::mt19937 rng(7);
+  const CreasePattern p = build_or_throw(gen::single_vertex(foldkit::test::random_sectors(6, rng, 0.2)));
+  for (const char* planner : {"PRM", "PRMstar"}) {
+    PlanRequest req;
+    req.pattern = &p;
+    req.goal = random_goal(p, 11, true);
+    req.space = SpaceKind::SingleVertex;
+    req.planner = planner;
+    req.time = 1.0;
+    req.seed = 5;
+    req.collisions = true;
+    const PlanResult r = plan(req);
+    SCOPED_TRACE(planner);
+    expect_valid_plan(p, req, r);
+  }
+}
+
 }  // namespace
 
 namespace {

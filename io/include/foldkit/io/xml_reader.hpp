@@ -1,9 +1,16 @@
 #pragma once
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include <tinyxml2.h>
+// tinyxml2 stays private to foldkit::io: a reader elsewhere (load cases in foldkit::analysis) that
+// walks the elements includes <tinyxml2.h> and links tinyxml2 itself.
+namespace tinyxml2 {
+class XMLDocument;
+class XMLElement;
+class XMLNode;
+}  // namespace tinyxml2
 
 // Shared by foldkit's readers of XML formats in the style of PMML (PMML and CMML here, load cases
 // in foldkit::analysis), so that all of them hold the same rules; not meant as a general API.
@@ -15,6 +22,9 @@ namespace foldkit::io::detail {
 class XmlInput {
  public:
   XmlInput(const std::string& text, std::string name);
+  ~XmlInput();
+  XmlInput(const XmlInput&) = delete;
+  XmlInput& operator=(const XmlInput&) = delete;
 
   // The root element, which must be named `expected`.
   const tinyxml2::XMLElement& root(const char* expected) const;
@@ -46,7 +56,7 @@ class XmlInput {
  private:
   void check_decoded(const tinyxml2::XMLNode& node) const;
 
-  tinyxml2::XMLDocument doc_;
+  std::unique_ptr<tinyxml2::XMLDocument> doc_;
   std::string name_;
 };
 

@@ -182,9 +182,6 @@ struct PathMetrics {
 };
 PathMetrics measure_path(const BenchScene& scene, const std::vector<geometry::FoldState>& waypoints);
 
-// Smallest distance (pattern units) between two facets that share no vertex of the pattern,
-// by FCL on the facets' triangles; +∞ when every pair shares a vertex.
-double min_clearance(const geometry::CreasePattern& pattern, const std::vector<geometry::FoldState>& states);
 
 // Error against the time allowed: every planner of the options on every scene, `runs` runs per
 // time limit; a run stops at its first exact solution, as in the benchmark. What is measured is

@@ -1,7 +1,8 @@
 #pragma once
 #include <functional>
 #include <memory>
-#include <optional>
+#include <mutex>
+#include <vector>
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/StateValidityChecker.h>
@@ -20,24 +21,63 @@ StateReader single_vertex_reader(std::shared_ptr<const SingleVertexStateSpace> s
 StateReader constrained_reader();
 
 // What a valid state is: every angle within its bounds, every loop closed within
-// `closure_tolerance` (the simulator's, 1e-3 rad), and — when a collision world is given — no
+// `closure_tolerance` (the simulator's, 1e-3 rad), and — when collisions are checked — no
 // crossing facets, judged by the simulator's own CollisionWorld (same pairs, same tolerance).
-struct FoldValidity {
-  const geometry::CreasePattern* pattern = nullptr;
-  AngleBounds bounds;
-  double closure_tolerance = 1e-3;
-  std::shared_ptr<simulation::CollisionWorld> collisions;  // null: collisions are not checked
-
+//
+// Safe to use from several threads at once (OMPL's PRM and PRM* check states in parallel): a
+// collision world remembers the previous state of a motion, so each check or motion takes a world
+// of its own from a pool (one per thread at most, built on first need) and gives it back after.
+class FoldValidity {
+ public:
   FoldValidity(const geometry::CreasePattern& pattern, AngleBounds bounds, bool check_collisions,
                double closure_tolerance = 1e-3, const simulation::CollisionOptions& collision = {});
-  // An isolated state (the collision world's memory is reset first).
+  ~FoldValidity();
+  FoldValidity(const FoldValidity&) = delete;
+  FoldValidity& operator=(const FoldValidity&) = delete;
+
+  // An isolated state.
   bool valid(const geometry::FoldState& state) const;
-  // The next state along a motion (stacked facets are judged against the previous call).
-  bool valid_next(const geometry::FoldState& state) const;
+
+  // The states of one motion, checked in order by one thread: stacked facets are judged against
+  // the motion's previous state. Holds a collision world until it is destroyed.
+  class Motion {
+   public:
+    explicit Motion(const FoldValidity& validity);
+    ~Motion();
+    Motion(const Motion&) = delete;
+    Motion& operator=(const Motion&) = delete;
+    // The motion's first state (its collision memory is cleared first).
+    bool valid_first(const geometry::FoldState& state);
+    // The next state along the motion.
+    bool valid_next(const geometry::FoldState& state);
+
+   private:
+    const FoldValidity& validity_;
+    std::unique_ptr<simulation::CollisionWorld> world_;  // null: collisions are not checked
+  };
+
+  const geometry::CreasePattern& pattern() const { return *pattern_; }
+  const AngleBounds& bounds() const { return bounds_; }
+  double closure_tolerance() const { return closure_tolerance_; }
+  bool checks_collisions() const { return check_collisions_; }
+  // Collision worlds built so far (at most the number of threads that checked at once; tests).
+  std::size_t worlds_built() const;
 
  private:
-  std::shared_ptr<geometry::ClosureSystem> system_;
+  bool valid_with(const geometry::FoldState& state, simulation::CollisionWorld* world) const;
+  std::unique_ptr<simulation::CollisionWorld> take() const;
+  void give(std::unique_ptr<simulation::CollisionWorld> world) const;
+
+  const geometry::CreasePattern* pattern_;
+  AngleBounds bounds_;
+  double closure_tolerance_;
+  bool check_collisions_;
+  simulation::CollisionOptions collision_;
+  geometry::ClosureSystem system_;
   geometry::KinematicTree tree_;
+  mutable std::mutex mutex_;  // guards pool_ and built_
+  mutable std::vector<std::unique_ptr<simulation::CollisionWorld>> pool_;
+  mutable std::size_t built_ = 0;
 };
 
 class FoldValidityChecker : public ompl::base::StateValidityChecker {

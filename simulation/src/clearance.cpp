@@ -1,6 +1,8 @@
-// Minimum clearance of a folded sheet. simulation::CollisionWorld answers only "do facets cross",
-// so the distance is FCL's, between facets that share no vertex of the pattern (facets that do
-// share one touch there: their distance is 0 whatever the fold).
+// CollisionWorld answers only "do facets cross"; the distance is FCL's, between facets that share
+// no vertex of the pattern (facets that do share one touch there: their distance is 0 whatever
+// the fold).
+#include "foldkit/simulation/clearance.hpp"
+
 #include <algorithm>
 #include <limits>
 #include <memory>
@@ -10,9 +12,8 @@
 #include <fcl/narrowphase/distance.h>
 
 #include "foldkit/geometry/kinematics.hpp"
-#include "foldkit/planners/bench_suite.hpp"
 
-namespace foldkit::planners {
+namespace foldkit::simulation {
 
 double min_clearance(const geometry::CreasePattern& pattern, const std::vector<geometry::FoldState>& states) {
   using Mesh = fcl::BVHModel<fcl::RSSd>;
@@ -79,4 +80,4 @@ double min_clearance(const geometry::CreasePattern& pattern, const std::vector<g
   return best;
 }
 
-}  // namespace foldkit::planners
+}  // namespace foldkit::simulation
