@@ -10,8 +10,8 @@
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
-#include "foldkit/planners/carpenter.hpp"
-#include "foldkit/planners/carpenter_spherical.hpp"
+#include "foldkit/folding/carpenter.hpp"
+#include "foldkit/folding/carpenter_spherical.hpp"
 
 namespace foldkit::apps {
 namespace {
@@ -19,7 +19,7 @@ namespace {
 struct Options {
   std::string chain, output, frames_csv, state;
   bool closed = false, fold = false, json = false;
-  std::size_t max_steps = planners::CarpenterOptions{}.max_steps;
+  std::size_t max_steps = folding::CarpenterOptions{}.max_steps;
 };
 
 // A single-vertex crease pattern (PMML or FOLD) in the state of --state (or the FOLD file's own
@@ -31,11 +31,11 @@ int run_spherical(const Options& opt) {
   geometry::FoldState folded = loaded.state ? *loaded.state : geometry::FoldState::flat(loaded.pattern);
   if (!opt.state.empty()) folded = state_from(loaded.pattern, opt.state);
   else if (!loaded.state) throw UsageError(opt.chain + ": a single vertex needs its folded state: --state FOLDED.cmml");
-  const planners::FlattenResult r = [&] {
+  const folding::FlattenResult r = [&] {
     try {
-      planners::SphericalOptions options;
+      folding::SphericalOptions options;
       options.max_steps = static_cast<int>(std::min<std::size_t>(opt.max_steps, std::numeric_limits<int>::max()));
-      return planners::flatten_single_vertex(loaded.pattern, folded, options);
+      return folding::flatten_single_vertex(loaded.pattern, folded, options);
     } catch (const std::invalid_argument& e) {
       throw io::ParseError(opt.chain, 0, e.what());
     }
@@ -61,29 +61,29 @@ int run_planar(const Options& opt) {
   if (!opt.output.empty() && !has_extension(opt.output, ".cmml") && !has_extension(opt.output, ".json") &&
       !has_extension(opt.output, ".csv"))
     throw UsageError(opt.output + ": unknown output format (expected .cmml, .json or .csv)");
-  planners::PlanarChain chain{planners::parse_chain_points(io::read_file(opt.chain), opt.chain), opt.closed};
+  folding::PlanarChain chain{folding::parse_chain_points(io::read_file(opt.chain), opt.chain), opt.closed};
   try {
-    planners::check_simple_chain(chain);
+    folding::check_simple_chain(chain);
   } catch (const std::invalid_argument& e) {
     throw io::ParseError(opt.chain, 0, e.what());
   }
-  planners::CarpenterOptions options;
+  folding::CarpenterOptions options;
   options.max_steps = opt.max_steps;
   ProgressLine progress("carpenter");
   options.progress = progress.callback();
-  const planners::CarpenterResult r = planners::carpenter_planar(chain, options);
-  const std::vector<planners::Frame2> frames = opt.fold ? planners::reversed(r.frames) : r.frames;
+  const folding::CarpenterResult r = folding::carpenter_planar(chain, options);
+  const std::vector<folding::Frame2> frames = opt.fold ? folding::reversed(r.frames) : r.frames;
   if (!opt.output.empty()) {
     std::string text;
     if (has_extension(opt.output, ".cmml"))
-      text = io::write_cmml(planners::turning_angle_sequence(frames, opt.closed, opt.chain));
+      text = io::write_cmml(folding::turning_angle_sequence(frames, opt.closed, opt.chain));
     else if (has_extension(opt.output, ".json"))
-      text = planners::frames_json(frames, opt.closed);
+      text = folding::frames_json(frames, opt.closed);
     else
-      text = planners::frames_csv(frames);
+      text = folding::frames_csv(frames);
     io::write_file_atomic(opt.output, text);
   }
-  if (!opt.frames_csv.empty()) io::write_file_atomic(opt.frames_csv, planners::frames_csv(frames));
+  if (!opt.frames_csv.empty()) io::write_file_atomic(opt.frames_csv, folding::frames_csv(frames));
   const char* goal = opt.closed ? "convex" : "straight";
   if (r.done)
     std::cerr << opt.chain << ": " << goal << " after " << r.steps << " steps, " << r.frames.size() << " frames ("

@@ -7,7 +7,7 @@
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
-#include "foldkit/planners/projected_folding.hpp"
+#include "foldkit/folding/projected_folding.hpp"
 
 namespace foldkit::apps {
 namespace {
@@ -15,7 +15,7 @@ namespace {
 // "ID:VALUE,ID:VALUE,…" over the assignment's signs: each named crease gets VALUE (any finite
 // number; its sign says mountain or valley, its size how fast relative to the others).
 Eigen::VectorXd parse_velocity(const geometry::CreasePattern& pattern, const std::string& text) {
-  Eigen::VectorXd w = planners::assignment_velocity(pattern);
+  Eigen::VectorXd w = folding::assignment_velocity(pattern);
   for (const auto& [j, value] :
        parse_joint_values(pattern, text, "--velocity", "ID:VALUE", [](double v) { return std::isfinite(v); }, "a number"))
     w[j] = value;
@@ -52,7 +52,7 @@ Command add_fold(CLI::App& root) {
             if (kind_of(opt->output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt->output + "'");
             if (!(opt->fraction > 0.0)) throw UsageError("--fraction must be greater than 0");
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
-            planners::ProjectedFoldingOptions o;
+            folding::ProjectedFoldingOptions o;
             if (!opt->velocity.empty()) {
               o.velocity = parse_velocity(pattern, opt->velocity);
               if (!(o.velocity.cwiseAbs().maxCoeff() > 0.0))
@@ -62,17 +62,17 @@ Command add_fold(CLI::App& root) {
             o.max_step = opt->step;
             o.max_steps = opt->max_steps;
             o.collisions = !opt->no_collision;
-            planners::ProjectedFoldingResult r;
+            folding::ProjectedFoldingResult r;
             try {
               ProgressLine progress("fold");
               o.progress = progress.callback();
-              r = planners::fold_projected(pattern, o);
+              r = folding::fold_projected(pattern, o);
             } catch (const std::invalid_argument& e) {
               throw io::ParseError(opt->pattern, 0, e.what());
             }
-            const bool reached = r.stop == planners::FoldStop::Reached;
+            const bool reached = r.stop == folding::FoldStop::Reached;
             const bool replay_ok = r.replay && r.replay->ok;
-            std::cerr << planners::to_string(r.stop) << ": " << r.message << " (fraction " << r.fraction << ", " << r.steps
+            std::cerr << folding::to_string(r.stop) << ": " << r.message << " (fraction " << r.fraction << ", " << r.steps
                       << " steps, " << r.newton_iterations << " Newton iterations, closure error " << r.max_closure_error
                       << " rad, " << r.time << " s)\n";
             if (r.rank_decisions > 0)
@@ -84,7 +84,7 @@ Command add_fold(CLI::App& root) {
               std::cerr << "wrote " << opt->output << '\n';
             }
             if (opt->json) {
-              nlohmann::json j{{"stop", planners::to_string(r.stop)},
+              nlohmann::json j{{"stop", folding::to_string(r.stop)},
                                {"reached", reached},
                                {"fraction", r.fraction},
                                {"target", opt->fraction},

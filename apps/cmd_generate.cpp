@@ -9,7 +9,7 @@
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
-#include "foldkit/planners/cube_chain.hpp"
+#include "foldkit/folding/cube_chain.hpp"
 
 namespace foldkit::apps {
 namespace {
@@ -176,7 +176,7 @@ Command add_generate(CLI::App& root) {
             std::string chain;
             std::size_t chain_events = 0;
             if (cubes->parsed() && !p->chain_cmml.empty()) {
-              const geometry::FoldSequence folding = planners::fold_cube_chain(pattern, p->cubes);
+              const geometry::FoldSequence folding = folding::fold_cube_chain(pattern, p->cubes);
               chain_events = folding.events.size();
               chain = io::write_cmml(folding);
             }

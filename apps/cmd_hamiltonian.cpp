@@ -4,14 +4,14 @@
 
 #include "cli_common.hpp"
 #include "foldkit/io/atomic_write.hpp"
-#include "foldkit/planners/hamiltonian.hpp"
+#include "foldkit/folding/hamiltonian.hpp"
 
 namespace foldkit::apps {
 namespace {
 
-std::string path_text(const planners::HamiltonianResult& r, bool three_d) {
+std::string path_text(const folding::HamiltonianResult& r, bool three_d) {
   std::ostringstream out;
-  for (const planners::Cell& c : r.path) {
+  for (const folding::Cell& c : r.path) {
     out << c.x << ' ' << c.y;
     if (three_d) out << ' ' << c.z;
     out << '\n';
@@ -20,8 +20,8 @@ std::string path_text(const planners::HamiltonianResult& r, bool three_d) {
 }
 
 // "X,Y" or "X,Y,Z" (Z only for voxels).
-planners::Cell parse_start(const std::string& text, bool three_d) {
-  planners::Cell c;
+folding::Cell parse_start(const std::string& text, bool three_d) {
+  folding::Cell c;
   char comma1 = 0, comma2 = 0, extra = 0;
   std::istringstream in(text);
   in >> c.x >> comma1 >> c.y;
@@ -37,7 +37,7 @@ Command add_hamiltonian(CLI::App& root) {
   struct Options {
     std::string shape, output, start;
     bool refine = false, cycle = false, json = false;
-    std::uint64_t budget = planners::ExactOptions{}.node_budget;
+    std::uint64_t budget = folding::ExactOptions{}.node_budget;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("hamiltonian", "Hamiltonian path (chain of cubes) through a pixel or voxel shape");
@@ -50,40 +50,40 @@ Command add_hamiltonian(CLI::App& root) {
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
   return {app, [opt] {
             const std::string& path = opt->shape;
-            const bool three_d = planners::is_voxel_path(path);
+            const bool three_d = folding::is_voxel_path(path);
             if (!three_d && !has_extension(path, ".txt") && !has_extension(path, ".grid") && !has_extension(path, ".pbm"))
               throw UsageError(path + ": unknown shape format (expected .txt, .grid, .pbm or .vox)");
             if (opt->refine && opt->cycle) throw UsageError("--refine always builds a cycle; --cycle is for the exact search");
-            planners::ExactOptions exact;
+            folding::ExactOptions exact;
             exact.node_budget = opt->budget;
             exact.cycle = opt->cycle;
     if (!opt->start.empty()) {
       if (opt->refine || opt->cycle) throw UsageError("--start is for the exact path search (not --refine or --cycle)");
       exact.start = parse_start(opt->start, three_d);
     }
-            planners::HamiltonianResult r;
+            folding::HamiltonianResult r;
             std::size_t cells = 0;
             if (three_d) {
-              const planners::VoxelShape s = planners::read_voxel_shape(path);
+              const folding::VoxelShape s = folding::read_voxel_shape(path);
               cells = s.count() * (opt->refine ? 8 : 1);
-              r = opt->refine ? planners::refined_hamiltonian_cycle(s) : planners::exact_hamiltonian(s, exact);
+              r = opt->refine ? folding::refined_hamiltonian_cycle(s) : folding::exact_hamiltonian(s, exact);
             } else {
-              const planners::PixelShape s = planners::read_pixel_shape(path);
+              const folding::PixelShape s = folding::read_pixel_shape(path);
               cells = s.count() * (opt->refine ? 4 : 1);
-              r = opt->refine ? planners::refined_hamiltonian_cycle(s) : planners::exact_hamiltonian(s, exact);
+              r = opt->refine ? folding::refined_hamiltonian_cycle(s) : folding::exact_hamiltonian(s, exact);
             }
-            const bool found = r.verdict == planners::Verdict::Found;
+            const bool found = r.verdict == folding::Verdict::Found;
             if (found && !opt->output.empty()) io::write_file_atomic(opt->output, path_text(r, three_d));
             const char* method = opt->refine ? "refined" : "exact";
             if (found)
               std::cerr << path << ": Hamiltonian " << (r.cycle ? "cycle" : "path") << " through " << r.path.size() << " cells ("
                         << method << ")\n";
             else
-              std::cerr << path << ": " << (r.verdict == planners::Verdict::None ? "no Hamiltonian " : "undecided Hamiltonian ")
+              std::cerr << path << ": " << (r.verdict == folding::Verdict::None ? "no Hamiltonian " : "undecided Hamiltonian ")
                         << (opt->cycle ? "cycle" : "path") << ": " << r.reason << '\n';
             if (opt->json) {
               nlohmann::json j = {{"found", found},
-                                  {"verdict", planners::to_string(r.verdict)},
+                                  {"verdict", folding::to_string(r.verdict)},
                                   {"method", method},
                                   {"dimension", three_d ? 3 : 2},
                                   {"cells", cells},

@@ -12,11 +12,11 @@
 #include <random>
 #include <vector>
 
-#include "foldkit/planners/carpenter.hpp"
+#include "foldkit/folding/carpenter.hpp"
 
 namespace {
 
-using namespace foldkit::planners;
+using namespace foldkit::folding;
 using Vec = Eigen::Vector2d;
 
 double segment_gap(const Vec& a, const Vec& b, const Vec& c, const Vec& d) {

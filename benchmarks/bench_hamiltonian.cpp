@@ -8,11 +8,11 @@
 #include <set>
 #include <tuple>
 
-#include "foldkit/planners/hamiltonian.hpp"
+#include "foldkit/folding/hamiltonian.hpp"
 
 namespace {
 
-using namespace foldkit::planners;
+using namespace foldkit::folding;
 
 // A roughly square blob of n cells grown at random (seeded), so the spanning tree branches.
 PixelShape blob(std::size_t n) {

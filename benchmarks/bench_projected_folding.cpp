@@ -8,18 +8,19 @@
 
 #include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/generators.hpp"
+#include "foldkit/folding/projected_folding.hpp"
 #include "foldkit/planners/plan.hpp"
-#include "foldkit/planners/projected_folding.hpp"
 
 namespace {
 
 namespace geo = foldkit::geometry;
 namespace pl = foldkit::planners;
+namespace fo = foldkit::folding;
 
 constexpr double kFraction = 0.9;
 
-pl::ProjectedFoldingOptions folding_options() {
-  pl::ProjectedFoldingOptions o;
+fo::ProjectedFoldingOptions folding_options() {
+  fo::ProjectedFoldingOptions o;
   o.target_fraction = kFraction;
   o.replay = false;
   return o;
@@ -28,12 +29,12 @@ pl::ProjectedFoldingOptions folding_options() {
 void BM_ProjectedFoldingMiura(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const geo::CreasePattern p = geo::build_or_throw(geo::generators::miura(n, n));
-  pl::ProjectedFoldingResult r;
+  fo::ProjectedFoldingResult r;
   for (auto _ : state) {
-    r = pl::fold_projected(p, folding_options());
+    r = fo::fold_projected(p, folding_options());
     benchmark::DoNotOptimize(r.states.data());
   }
-  if (r.stop != pl::FoldStop::Reached) state.SkipWithError(r.message.c_str());
+  if (r.stop != fo::FoldStop::Reached) state.SkipWithError(r.message.c_str());
   state.counters["creases"] = static_cast<double>(p.joints().size());
   state.counters["steps"] = r.steps;
   state.counters["newton_iterations"] = r.newton_iterations;
@@ -47,7 +48,7 @@ BENCHMARK(BM_ProjectedFoldingMiura)->Arg(4)->Arg(10)->Arg(20)->Unit(benchmark::k
 void BM_RRTConnectProjectedMiura(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const geo::CreasePattern p = geo::build_or_throw(geo::generators::miura(n, n));
-  const pl::ProjectedFoldingResult folded = pl::fold_projected(p, folding_options());
+  const fo::ProjectedFoldingResult folded = fo::fold_projected(p, folding_options());
   pl::PlanRequest req;
   req.pattern = &p;
   req.goal = folded.states.back();

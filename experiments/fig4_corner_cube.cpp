@@ -19,7 +19,7 @@
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/pmml.hpp"
-#include "foldkit/planners/carpenter_spherical.hpp"
+#include "foldkit/folding/carpenter_spherical.hpp"
 #include "foldkit/simulation/simulate.hpp"
 
 namespace {
@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
   const geometry::CreasePattern p = geometry::build_or_throw(geometry::generators::single_vertex({h, h, h, q, q}));
   const geometry::FoldState goal = corner(p);
 
-  const planners::FlattenResult r = planners::flatten_single_vertex(p, goal);
+  const folding::FlattenResult r = folding::flatten_single_vertex(p, goal);
   std::cerr << "fig4_corner_cube: " << r.message << ", " << r.frames.size() << " frames\n";
 
   // Replay the CMML as written, read back, as `foldkit simulate` would.
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
     const auto& s = r.frames[f];
     csv << f;
     for (int j : r.joints) csv << ',' << num(s.angles[j] * kDeg, 10);
-    const auto u = planners::crease_directions(p, s);
+    const auto u = folding::crease_directions(p, s);
     double closest = M_PI;
     for (std::size_t i = 0; i < u.size(); ++i)
       for (std::size_t k = i + 1; k < u.size(); ++k) closest = std::min(closest, std::atan2(u[i].cross(u[k]).norm(), u[i].dot(u[k])));
@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
   std::ostringstream md;
   md << "# Fig. 4: corner cube by spherical Carpenter's rule\n\n"
      << "Degree-5 vertex, sectors 90°, 90°, 90°, 45°, 45°; the corner 0.01 rad short of shut. Unfolded to flat by\n"
-     << "expansive motions of its spherical polygon (planners::flatten_single_vertex), the frames replayed backwards as\n"
+     << "expansive motions of its spherical polygon (folding::flatten_single_vertex), the frames replayed backwards as\n"
      << "CMML (fig4_corner_cube.cmml) and that CMML replayed by the simulator (motor model, FCL self-collision).\n\n"
      << "| figure | value |\n|---|---|\n"
      << "| unfolding | " << r.message << " |\n"

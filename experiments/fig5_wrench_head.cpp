@@ -14,13 +14,13 @@
 #include <vector>
 
 #include "experiment_io.hpp"
-#include "foldkit/planners/carpenter.hpp"
-#include "foldkit/planners/hamiltonian.hpp"
+#include "foldkit/folding/carpenter.hpp"
+#include "foldkit/folding/hamiltonian.hpp"
 
 namespace {
 
 using namespace foldkit;
-using namespace foldkit::planners;
+using namespace foldkit::folding;
 using Vec = Eigen::Vector2d;
 
 // The unit square on vertex i, turned along the bar to its successor (the last along the bar

@@ -1,5 +1,5 @@
 // The paper's Fig. 5a / Fig. 8a→8b: the sheet of 8 cube nets (48 tiles, as in Fig. 10a) folded
-// into a straight chain of closed cubes by planners::fold_cube_chain, the CMML replayed by the
+// into a straight chain of closed cubes by folding::fold_cube_chain, the CMML replayed by the
 // simulator (FCL self-collision), and the end state checked cube by cube.
 //
 //   fig5a_cube_chain [--out DIR] [--check]
@@ -19,7 +19,7 @@
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/pmml.hpp"
-#include "foldkit/planners/cube_chain.hpp"
+#include "foldkit/folding/cube_chain.hpp"
 #include "foldkit/simulation/simulate.hpp"
 #include "foldkit/simulation/snapshot.hpp"
 
@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
                                             "  The Fig. 8a sheet of 8 cube nets folded into a line of cubes (Fig. 5a).\n");
   const geometry::CreasePattern sheet = geometry::build_or_throw(geometry::generators::cube_sheet(kCubes));
   const auto started = std::chrono::steady_clock::now();
-  const std::string cmml = io::write_cmml(planners::fold_cube_chain(sheet, kCubes));
+  const std::string cmml = io::write_cmml(folding::fold_cube_chain(sheet, kCubes));
   // Replay the CMML as written, read back, as `foldkit simulate` would.
   const geometry::FoldSequence replayed = io::parse_cmml(cmml, "fig5a_cube_chain.cmml");
   const simulation::SimulationReport report = simulation::simulate(sheet, replayed);
@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
   std::ostringstream md;
   md << "# Fig. 5a: the Fig. 8a sheet folded into a chain of cubes\n\n"
      << "generators::cube_sheet(" << kCubes << ") (" << sheet.actors().size() << " tiles, " << sheet.joints().size()
-     << " hinges) folded by planners::fold_cube_chain; the CMML (fig5a_cube_chain.cmml) replayed by the simulator\n"
+     << " hinges) folded by folding::fold_cube_chain; the CMML (fig5a_cube_chain.cmml) replayed by the simulator\n"
      << "(motor model, FCL self-collision).\n\n"
      << "| figure | value |\n|---|---|\n"
      << "| CMML events | " << replayed.events.size() << " |\n"

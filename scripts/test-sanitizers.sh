@@ -15,7 +15,7 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DFOLDKIT_BUILD_BENCHMARKS
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
 cmake --build build-sanitize -j "$(nproc)" >&2
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-# Label scale (AtScale.*, test/planners/at_scale_test.cpp): folds and replays of sheets with
+# Label scale (AtScale.*, test/folding/at_scale_test.cpp): folds and replays of sheets with
 # thousands of facets, minutes under the sanitizers and the same code as the small cases; the
 # Release suite runs them.
 ctest --test-dir build-sanitize --output-on-failure -j "$(nproc)" -LE scale

@@ -9,9 +9,9 @@
 #include <ompl/geometric/PathGeometric.h>
 
 #include "foldkit/planners/bench_suite.hpp"
-#include "foldkit/planners/carpenter_spherical.hpp"
+#include "foldkit/folding/carpenter_spherical.hpp"
 #include "foldkit/planners/planner_factory.hpp"
-#include "foldkit/planners/projected_folding.hpp"
+#include "foldkit/folding/projected_folding.hpp"
 
 namespace foldkit::planners {
 
@@ -116,13 +116,13 @@ const std::vector<Method>& methods() {
       // until the largest fold angle is the goal's.
       {"ProjectedFolding",
        [](const DeterministicProblem& p, const ob::PlannerTerminationCondition&) -> std::vector<FoldState> {
-         ProjectedFoldingOptions o;
+         folding::ProjectedFoldingOptions o;
          o.velocity = p.goal.angles;
          o.target_fraction = std::min(1.0, p.goal.angles.cwiseAbs().maxCoeff() / M_PI);
          o.max_step = p.step;
          o.replay = false;
          try {
-           return from_flat(p, fold_projected(*p.pattern, o).states);
+           return from_flat(p, folding::fold_projected(*p.pattern, o).states);
          } catch (const std::invalid_argument&) {
            return {};
          }
@@ -130,10 +130,10 @@ const std::vector<Method>& methods() {
       // Carpenter's rule on the sphere (single vertices): the goal flattened, the frames reversed.
       {"SphericalCarpenter",
        [](const DeterministicProblem& p, const ob::PlannerTerminationCondition&) -> std::vector<FoldState> {
-         SphericalOptions o;
+         folding::SphericalOptions o;
          o.frame_step = p.step;
          try {
-           const FlattenResult r = flatten_single_vertex(*p.pattern, p.goal, o);
+           const folding::FlattenResult r = folding::flatten_single_vertex(*p.pattern, p.goal, o);
            if (!r.flat) return {};
            return from_flat(p, std::vector<FoldState>(r.frames.rbegin(), r.frames.rend()));
          } catch (const std::invalid_argument&) {

@@ -64,7 +64,7 @@ PatternSpec square_twist(double side = 1.0, double twist = 1.0471975511965976, d
 // The sheet of Fig. 8a: `cubes` cube nets in a row, each a row of three tiles with a column of
 // caps on the middle one (a cap above; a cap below and a far cap beyond it); the last tile of one
 // net is hinged to the first tile of the next, so that the sheet folds into a straight line of
-// cubes (planners::fold_cube_chain). Numbering and geometry: docs/GENERATORS.md.
+// cubes (folding::fold_cube_chain). Numbering and geometry: docs/GENERATORS.md.
 PatternSpec cube_sheet(int cubes, double tile = 1.0, JointDefaults j = {});
 
 }  // namespace foldkit::geometry::generators

@@ -1,6 +1,6 @@
 #pragma once
 // Sparse null-space projection and least-norm Gauss–Newton steps for closure Jacobians: used by
-// projected-velocity folding (planners::fold_projected) and by the constrained planning space's
+// projected-velocity folding (folding::fold_projected) and by the constrained planning space's
 // projection (statespaces::ClosureConstraint), neither of which may factor a dense Jacobian on
 // patterns with hundreds of creases.
 #include <limits>

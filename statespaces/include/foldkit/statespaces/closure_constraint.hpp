@@ -45,7 +45,7 @@ class ClosureConstraint : public ompl::base::Constraint {
                               std::vector<Eigen::Index>* rows);
 
   // Singular values below √kRankTolerance·σ_max barely move the least-norm step (as in
-  // planners::ProjectedFoldingOptions::rank_tolerance).
+  // folding::ProjectedFoldingOptions::rank_tolerance).
   static constexpr double kRankTolerance = 1e-8;
 
   geometry::ClosureSystem system_;

@@ -1,0 +1,463 @@
+// Carpenter's rule for planar chains (Connelly, Demaine & Rote; docs/CARPENTER.md): merge straight
+// joints, solve the expansive-motion LP, step, restore bar lengths exactly, repeat.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "carpenter_planar_velocity.hpp"
+#include "foldkit/folding/carpenter.hpp"
+
+namespace foldkit::folding {
+namespace {
+
+using Vec = Eigen::Vector2d;
+
+double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+double turn(const Vec& a, const Vec& b, const Vec& c) {
+  const Vec u = b - a, w = c - b;
+  return std::atan2(cross(u, w), u.dot(w));
+}
+
+// The chain with its straight joints merged: vertex a of the merged chain is input vertex
+// key[a]; merged bar a runs from key[a] to key[a + 1] (closed: the last one back to key[0]) and
+// carries the input vertices between them at their arc lengths.
+class MergedChain {
+ public:
+  MergedChain(const Frame2& points, bool closed) : closed_(closed), n_(static_cast<int>(points.size())) {
+    const int bars = closed ? n_ : n_ - 1;
+    arc_.assign(static_cast<std::size_t>(n_) + 1, 0.0);
+    for (int b = 0; b < bars; ++b) arc_[b + 1] = arc_[b] + (points[(b + 1) % n_] - points[b]).norm();
+    for (int i = 0; i < n_; ++i) key_.push_back(i);
+    q_ = points;
+    lengths();
+  }
+
+  bool closed() const { return closed_; }
+  int vertices() const { return static_cast<int>(key_.size()); }
+  int bars() const { return closed_ ? vertices() : vertices() - 1; }
+  const Frame2& q() const { return q_; }
+  const std::vector<double>& length() const { return length_; }
+  int key(int a) const { return key_[a]; }
+  int next(int a) const { return (a + 1) % vertices(); }
+  // Merged vertices that are joints (not chain ends).
+  bool is_joint(int a) const { return closed_ || (a > 0 && a + 1 < vertices()); }
+  double theta(const Frame2& q, int a) const {
+    const int m = vertices();
+    return turn(q[(a + m - 1) % m], q[a], q[(a + 1) % m]);
+  }
+
+  void set_q(Frame2 q) { q_ = std::move(q); }
+
+  // Drops merged joints a (which must be joints); the input vertices they held now lie on the
+  // merged bar through their neighbours.
+  void merge(const std::vector<int>& joints) {
+    std::vector<char> drop(key_.size(), 0);
+    for (int a : joints) drop[a] = 1;
+    std::vector<int> key;
+    Frame2 q;
+    for (std::size_t a = 0; a < key_.size(); ++a)
+      if (!drop[a]) {
+        key.push_back(key_[a]);
+        q.push_back(q_[a]);
+      }
+    key_ = std::move(key);
+    q_ = std::move(q);
+    lengths();
+  }
+
+  // Input-vertex positions: merged vertices where they are, the others along their merged bar.
+  Frame2 expand(const Frame2& q) const {
+    Frame2 p(static_cast<std::size_t>(n_));
+    const int m = vertices();
+    for (int a = 0; a < bars(); ++a) {
+      const int b = next(a);
+      const Vec d = q[b] - q[a];
+      const Vec u = d / d.norm();
+      p[key_[a]] = q[a];
+      for (int i = (key_[a] + 1) % n_; i != key_[b]; i = (i + 1) % n_) p[i] = q[a] + along(key_[a], i) * u;
+    }
+    if (!closed_) p[key_[m - 1]] = q[m - 1];
+    return p;
+  }
+
+ private:
+  // Arc length from input vertex i forward to j (through vertex 0 of a closed chain if j ≤ i).
+  double along(int i, int j) const { return j > i ? arc_[j] - arc_[i] : arc_[n_] - arc_[i] + arc_[j]; }
+
+  void lengths() {
+    length_.clear();
+    for (int a = 0; a < bars(); ++a) {
+      const int b = next(a);
+      length_.push_back(along(key_[a], key_[b]));
+    }
+  }
+
+  bool closed_;
+  int n_;
+  std::vector<double> arc_;  // arc length from vertex 0 to each vertex (closed: [n] = perimeter)
+  std::vector<int> key_;
+  Frame2 q_;
+  std::vector<double> length_;
+};
+
+// Positions after turning each bar for a time h at the angular speed v gives it, laid out with
+// its own length from the pinned vertex 0: lengths stay exact, and a part of the chain that v
+// turns rigidly turns exactly (moving along h·v and projecting back would not). A closed chain is
+// then closed by Newton steps on the bar directions (bar 0 stays pinned).
+Frame2 advance(const MergedChain& chain, const Frame2& v, double h) {
+  const Frame2& q = chain.q();
+  const int m = chain.vertices(), bars = chain.bars();
+  const std::vector<double>& len = chain.length();
+  std::vector<double> phi(static_cast<std::size_t>(bars));
+  for (int a = 0; a < bars; ++a) {
+    const int b = chain.next(a);
+    const Vec d = q[b] - q[a], dv = v[b] - v[a];
+    phi[a] = std::atan2(d.y(), d.x()) + h * cross(d, dv) / d.squaredNorm();
+  }
+  if (chain.closed()) {
+    for (int iteration = 0; iteration < 50; ++iteration) {
+      Vec gap = Vec::Zero();
+      Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
+      for (int a = 0; a < bars; ++a) {
+        const Vec u(std::cos(phi[a]), std::sin(phi[a]));
+        gap += len[a] * u;
+        if (a == 0) continue;
+        const Vec column = len[a] * Vec(-u.y(), u.x());
+        normal += column * column.transpose();
+      }
+      if (gap.norm() <= 1e-15 * (std::abs(q[0].x()) + std::abs(q[0].y()) + len[0]) * bars) break;
+      const Vec y = normal.ldlt().solve(gap);
+      for (int a = 1; a < bars; ++a) {
+        const Vec u(std::cos(phi[a]), std::sin(phi[a]));
+        phi[a] -= len[a] * Vec(-u.y(), u.x()).dot(y);
+      }
+    }
+  }
+  Frame2 out(static_cast<std::size_t>(m));
+  out[0] = q[0];
+  for (int a = 0; a + 1 < m; ++a) out[a + 1] = out[a] + len[a] * Vec(std::cos(phi[a]), std::sin(phi[a]));
+  return out;
+}
+
+// Every pair of merged vertices that is not a bar keeps or grows its distance, to within the
+// rounding of the coordinates: a strut across an almost straight joint grows only to second
+// order in the joint angle, below what doubles resolve.
+bool expansive(const MergedChain& chain, const Frame2& before, const Frame2& after) {
+  const int m = chain.vertices();
+  double extent = 0.0;
+  for (const Vec& x : before) extent = std::max(extent, x.cwiseAbs().maxCoeff());
+  const double rounding = 4.0 * std::numeric_limits<double>::epsilon() * extent;
+  // Squared distances first, over coordinate arrays (vectorised): a pair whose squared distance
+  // did not shrink passes without a square root, as sqrt is monotone.
+  std::vector<double> bx(m), by(m), ax(m), ay(m), shrunk(m);
+  for (int a = 0; a < m; ++a) {
+    bx[a] = before[a].x();
+    by[a] = before[a].y();
+    ax[a] = after[a].x();
+    ay[a] = after[a].y();
+  }
+  for (int a = 0; a < m; ++a) {
+    const int last = chain.closed() && a == 0 ? m - 2 : m - 1;
+    bool any = false;
+    for (int b = a + 2; b <= last; ++b) {
+      const double ex = bx[b] - bx[a], ey = by[b] - by[a], fx = ax[b] - ax[a], fy = ay[b] - ay[a];
+      shrunk[b] = (fx * fx + fy * fy) - (ex * ex + ey * ey);
+      any = any || shrunk[b] < 0.0;
+    }
+    if (!any) continue;
+    for (int b = a + 2; b <= last; ++b)
+      if (shrunk[b] < 0.0 && (after[b] - after[a]).norm() < (before[b] - before[a]).norm() - rounding) return false;
+  }
+  return true;
+}
+
+// Bar directions of an open chain, unwrapped along it: each differs from the one before by the
+// turn at their joint, in (−π, π].
+std::vector<double> bar_directions(const MergedChain& chain) {
+  const Frame2& q = chain.q();
+  std::vector<double> phi(static_cast<std::size_t>(chain.bars()));
+  const Vec d = q[1] - q[0];
+  phi[0] = std::atan2(d.y(), d.x());
+  for (int a = 1; a < chain.bars(); ++a) phi[a] = phi[a - 1] + chain.theta(q, a);
+  return phi;
+}
+
+// The chain laid out from its (fixed) vertex 0 with bar a at direction phi[a], exact lengths.
+Frame2 lay_out(const MergedChain& chain, const std::vector<double>& phi) {
+  const std::vector<double>& len = chain.length();
+  Frame2 out(static_cast<std::size_t>(chain.vertices()));
+  out[0] = chain.q()[0];
+  for (int a = 0; a + 1 < chain.vertices(); ++a) out[a + 1] = out[a] + len[a] * Vec(std::cos(phi[a]), std::sin(phi[a]));
+  return out;
+}
+
+// Open chains whose unwrapped bar directions span at most π (monotone in some direction) are
+// straightened in closed form, without LPs: every bar direction moves linearly to a common angle c,
+// φₐ(s) = c + (1 − s)(φₐ − c). The vector between two points of the chain is Σ ℓₐ u(φₐ) over the
+// (partial) bars between them, so its squared length is Σ ℓₐ ℓ_b cos(φₐ − φ_b); every |φₐ − φ_b|
+// shrinks by the factor (1 − s) and stays ≤ π, where cos decreases: no distance between any two
+// points ever shrinks. This ends the run where the LP steps are worst: on an almost straight chain
+// every distance is within second order of its final value, the first-order growth the LP asks
+// for is swamped by the integration error, and steps crept (a 1,000-link chain once spent 60,000
+// steps at 11 merged vertices with joints at 1e-3 rad).
+constexpr double kMonotoneSpread = M_PI - 1e-6;
+
+bool finished(const MergedChain& chain) {
+  if (!chain.closed()) return chain.vertices() <= 2;
+  bool left = false, right = false;
+  for (int a = 0; a < chain.vertices(); ++a) {
+    const double t = chain.theta(chain.q(), a);
+    left = left || t > 0;
+    right = right || t < 0;
+  }
+  return !(left && right);
+}
+
+double sign(double x) { return (x > 0) - (x < 0); }
+
+constexpr double kLookahead = 4.0;
+constexpr int kFarProbes = 4;  // look 4, 16, 64 and 256 steps ahead
+
+}  // namespace
+
+CarpenterResult carpenter_planar(const PlanarChain& input, const CarpenterOptions& options) {
+  check_simple_chain(input);
+  const auto start = std::chrono::steady_clock::now();
+  const bool closed = input.closed;
+  MergedChain chain(input.points, closed);
+  double mean_bar = 0.0;
+  for (double l : chain.length()) mean_bar += l;
+  mean_bar /= chain.bars();
+
+  CarpenterResult result;
+  result.closed = closed;
+  double min_growth = std::numeric_limits<double>::infinity();
+  Frame2 last_recorded;
+  auto record = [&](const Frame2& p) {
+    if (!last_recorded.empty()) {
+      const MotionCheck c = check_motion({last_recorded, p}, closed);
+      min_growth = std::min(min_growth, c.min_distance_growth);
+    }
+    const MotionCheck lengths = check_motion({input.points, p}, closed);
+    result.max_length_error = std::max(result.max_length_error, lengths.max_length_error);
+    result.frames.push_back(p);
+    last_recorded = p;
+  };
+
+  // Joints straight in the input (within rounding) are rigid from the start: an expansive motion
+  // cannot open them further, so the LP would have no strictly expansive solution.
+  auto merge_straight = [&](double tolerance) {
+    std::vector<int> straight;
+    for (int a = 0; a < chain.vertices(); ++a)
+      if (chain.is_joint(a) && std::abs(chain.theta(chain.q(), a)) <= tolerance) straight.push_back(a);
+    if (closed && chain.vertices() - static_cast<int>(straight.size()) < 3) return;  // a flat polygon: rejected earlier
+    if (!straight.empty()) chain.merge(straight);
+  };
+  merge_straight(1e-12);
+  record(chain.expand(chain.q()));
+
+  detail::BasisMemo basis_memo;              // the last LP's optimal basis: the next starts there
+  std::vector<std::pair<int, int>> carried;  // binding struts of the last step, as input vertices
+  Frame2 pending;                            // the last unrecorded frame (frame_stride > 1)
+  const std::size_t stride = std::max<std::size_t>(1, options.frame_stride);
+  double turn_budget = options.max_turn;
+  // Every `stride`-th step's frame is recorded, the last one always; the others wait in `pending`.
+  auto record_step = [&] {
+    const Frame2 p = chain.expand(chain.q());
+    if (result.steps % stride == 0 || finished(chain)) {
+      record(p);
+      pending.clear();
+    } else {
+      pending = p;
+    }
+  };
+  bool monotone_failed = false;  // the closed-form straightening was tried and a check failed
+  while (!finished(chain)) {
+    if (result.steps >= options.max_steps) {
+      result.stop_reason = "stopped after " + std::to_string(options.max_steps) + " steps";
+      break;
+    }
+    if (!closed && !monotone_failed) {
+      const std::vector<double> phi = bar_directions(chain);
+      const auto [lo, hi] = std::minmax_element(phi.begin(), phi.end());
+      if (*hi - *lo <= kMonotoneSpread) {
+        double c = 0.0, total = 0.0, sharpest = 0.0;
+        for (int a = 0; a < chain.bars(); ++a) {
+          c += chain.length()[a] * phi[a];
+          total += chain.length()[a];
+        }
+        c /= total;
+        for (int a = 1; a + 1 < chain.vertices(); ++a) sharpest = std::max(sharpest, std::abs(chain.theta(chain.q(), a)));
+        // Joints turn by θₖ/pieces per step, at most max_turn.
+        const int pieces = std::max(1, static_cast<int>(std::ceil(sharpest / options.max_turn)));
+        for (int k = 1; k <= pieces && !monotone_failed; ++k) {
+          if (result.steps >= options.max_steps) break;
+          const double s = static_cast<double>(k) / pieces;
+          std::vector<double> to(phi.size());
+          for (std::size_t a = 0; a < phi.size(); ++a) to[a] = k == pieces ? c : c + (1.0 - s) * (phi[a] - c);
+          const Frame2 next = lay_out(chain, to);
+          // The argument above, checked like every LP step (rounding could only matter at a
+          // spread of π, which the threshold keeps away from).
+          if (!expansive(chain, chain.q(), next)) {
+            monotone_failed = true;
+            break;
+          }
+          chain.set_q(next);
+          ++result.steps;
+          if (k == pieces) {
+            std::vector<int> joints;
+            for (int a = 1; a + 1 < chain.vertices(); ++a) joints.push_back(a);
+            chain.merge(joints);
+          }
+          record_step();
+        }
+        continue;
+      }
+    }
+    const int m = chain.vertices();
+    std::vector<int> keys(static_cast<std::size_t>(m));
+    for (int a = 0; a < m; ++a) keys[a] = chain.key(a);
+    // Struts carried over from the last step, renumbered after merges.
+    std::vector<int> merged_index(input.points.size(), -1);
+    for (int a = 0; a < m; ++a) merged_index[chain.key(a)] = a;
+    std::vector<std::pair<int, int>> seed;
+    for (const auto& [i, j] : carried)
+      if (merged_index[i] >= 0 && merged_index[j] >= 0) seed.emplace_back(merged_index[i], merged_index[j]);
+    double mean_merged = 0.0;
+    for (double l : chain.length()) mean_merged += l;
+    mean_merged /= chain.bars();
+
+    const detail::ExpansiveVelocity field =
+        detail::expansive_velocity(chain.q(), closed, seed, options.near_radius * mean_merged, options.all_struts,
+                                   &keys, &basis_memo);
+    result.lp_solves += field.lp_solves;
+    result.max_struts = std::max(result.max_struts, field.struts);
+    if (!field.solved) {
+      result.stop_reason = "the expansive-motion LP failed at step " + std::to_string(result.steps) + " (" + field.status + ")";
+      break;
+    }
+    if (!(field.t > 0.0)) {
+      result.stop_reason = "no strictly expansive motion found at step " + std::to_string(result.steps) +
+                           " (smallest weighted strut rate " + std::to_string(field.t) + ")";
+      break;
+    }
+    carried.clear();
+    for (const auto& [a, b] : field.binding) carried.emplace_back(chain.key(a), chain.key(b));
+
+    // The step turns the fastest joint by about `turn_budget` radians: far vertices may sweep a
+    // long way when a large part of the chain turns almost rigidly, which angle coordinates
+    // integrate exactly. The budget grows while steps pass at once and shrinks when halved.
+    double speed = 0.0;
+    std::vector<double> omega(static_cast<std::size_t>(chain.bars()));
+    for (int a = 0; a < chain.bars(); ++a) {
+      const int b = chain.next(a);
+      const Vec d = chain.q()[b] - chain.q()[a];
+      omega[a] = cross(d, field.v[b] - field.v[a]) / d.squaredNorm();
+    }
+    for (int a = 0; a < m; ++a)
+      if (chain.is_joint(a)) speed = std::max(speed, std::abs(omega[a % chain.bars()] - omega[(a + m - 1) % m]));
+    double h = turn_budget / speed;
+
+    std::vector<double> theta0(static_cast<std::size_t>(m), 0.0);
+    for (int a = 0; a < m; ++a)
+      if (chain.is_joint(a)) theta0[a] = chain.theta(chain.q(), a);
+
+    // Look ahead: a joint that would pass straight a little beyond the step is taken all the way
+    // there now, so no joint is left almost straight, where the LP optimum would be too small
+    // for the solver's tolerances.
+    // Farther probes catch a joint that creeps towards straight ever more slowly (its speed
+    // shrinks with its angle): stepping a little at a time would never reach it. Halvings back
+    // down to the usual step do not shrink the budget.
+    int free_halvings = 0;
+    for (int reach = 0; reach < kFarProbes; ++reach) {
+      const Frame2 probe = advance(chain, field.v, kLookahead * h);
+      bool flips = false;
+      for (int a = 0; a < m && !flips; ++a) flips = chain.is_joint(a) && sign(chain.theta(probe, a)) != sign(theta0[a]);
+      if (flips) {
+        h *= kLookahead;
+        free_halvings = 2 * reach;
+        break;
+      }
+      if (reach + 1 < kFarProbes) h *= kLookahead;
+      else h /= std::pow(kLookahead, kFarProbes - 1);
+    }
+
+    Frame2 next;
+    int event_joint = -1;
+    bool accepted = false;
+    int attempts = 0;
+    for (int attempt = 0; attempt < 200 && !accepted; ++attempt) {
+      ++attempts;
+      next = advance(chain, field.v, h);
+      // A joint that would pass straight stops the step exactly there (found by bisection);
+      // it is then merged.
+      event_joint = -1;
+      for (int a = 0; a < m; ++a) {
+        if (!chain.is_joint(a) || sign(chain.theta(next, a)) == sign(theta0[a])) continue;
+        // Joints are visited in order and `next` follows h, so a joint is bisected only when it
+        // still passes straight within the step already shortened for earlier ones.
+        double lo = 0.0, hi = h;
+        // Open chains turn each joint at a constant rate in angle coordinates, so the crossing
+        // is near −θ₀/θ̇: bisection starts from a bracket around it when the bracket holds (it
+        // spares some 30 of the ~50 halvings, each a layout of the whole chain).
+        const double rate = omega[a % chain.bars()] - omega[(a + m - 1) % m];
+        const double guess = rate != 0.0 ? -theta0[a] / rate : 0.0;
+        if (!closed && guess > 0.0 && guess < h) {
+          const double below = guess * (1.0 - 1e-9), above = std::min(h, guess * (1.0 + 1e-9));
+          if (sign(chain.theta(advance(chain, field.v, below), a)) == sign(theta0[a]) &&
+              sign(chain.theta(advance(chain, field.v, above), a)) != sign(theta0[a])) {
+            lo = below;
+            hi = above;
+          }
+        }
+        for (int i = 0; i < 200; ++i) {
+          const double mid = 0.5 * (lo + hi);
+          if (mid <= lo || mid >= hi) break;
+          if (sign(chain.theta(advance(chain, field.v, mid), a)) == sign(theta0[a]))
+            lo = mid;
+          else
+            hi = mid;
+        }
+        h = lo;
+        event_joint = a;
+        next = advance(chain, field.v, h);
+      }
+      if (h > 0.0 && expansive(chain, chain.q(), next)) {
+        accepted = true;
+      } else {
+        h *= 0.5;
+      }
+    }
+    const int halvings = std::max(0, attempts - 1 - free_halvings);
+    turn_budget = halvings == 0 ? std::min(turn_budget * 1.5, options.max_turn) : turn_budget * std::pow(0.5, halvings);
+    if (!accepted) {
+      result.stop_reason = "no step keeps every distance growing at step " + std::to_string(result.steps);
+      break;
+    }
+    chain.set_q(next);
+    ++result.steps;
+    if (options.progress) options.progress({static_cast<double>(result.steps), 0.0, "steps", -1.0});
+    // Merge the event joint and any other joint the step left straight to within rounding.
+    std::vector<int> straight;
+    for (int a = 0; a < m; ++a) {
+      if (!chain.is_joint(a)) continue;
+      const double t = chain.theta(next, a);
+      const double reach = std::min(chain.length()[(a + m - 1) % m], chain.length()[a % chain.bars()]);
+      if (a == event_joint || std::abs(t) * reach <= 1e-13 * mean_bar) straight.push_back(a);
+    }
+    if (!straight.empty()) chain.merge(straight);
+    record_step();
+  }
+  if (!pending.empty()) record(pending);
+  result.done = finished(chain);
+  result.min_distance_growth = std::isinf(min_growth) ? 0.0 : min_growth;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace foldkit::folding

@@ -1,0 +1,46 @@
+#pragma once
+// The LP of one Carpenter's-rule step: a strictly expansive infinitesimal motion of a (merged)
+// planar chain, with struts added by constraint generation.
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace foldkit::folding::detail {
+
+struct ExpansiveVelocity {
+  std::vector<Eigen::Vector2d> v;  // one per vertex; vertices 0 and 1 (bar 0) are pinned
+  double t = 0.0;                  // smallest weighted strut rate over all pairs, capped at 2 (≥ 1 when solved)
+  std::size_t lp_solves = 0;
+  std::size_t struts = 0;                    // strut rows in the last LP
+  std::vector<std::pair<int, int>> binding;  // struts within a factor 2 of the bound (vertex indices)
+  bool solved = false;
+  const char* status = "optimal";  // the LP's status when not solved
+};
+
+// The optimal basis of the last step's LP, by input vertex, so that the next step's LP (the same
+// structure on slightly moved points, perhaps with joints merged) starts the dual simplex near
+// its optimum. Statuses are Clp's codes; 0 = unknown.
+struct BasisMemo {
+  std::vector<unsigned char> vx, vy, plus, minus, bar_row, joint_row;  // per input vertex
+  std::unordered_map<std::int64_t, unsigned char> strut_row;             // key_a · n + key_b
+  bool valid = false;
+};
+
+// Minimise Σ|θ̇| over the joints subject to bars (v_{a+1} − v_a)·(p_{a+1} − p_a) = 0 (and the
+// closing bar when `closed`), bar 0 pinned, and w_ab·(v_b − v_a)·(p_b − p_a) ≥ 1 on every other
+// pair (positive weights, see the source). The LP starts with the struts in `seed` and the
+// pairs closer than `near_radius`, and adds the most violated of all pairs until none is
+// violated; `all_struts` puts every pair in at once. With `key` (input vertex of each vertex,
+// all below the memo's size) and `memo`, the first LP starts from the basis in `memo`, which is
+// then replaced by this step's. Not solved when no strictly expansive
+// motion exists (straight / convex) or the LP fails.
+ExpansiveVelocity expansive_velocity(const std::vector<Eigen::Vector2d>& p, bool closed,
+                                     const std::vector<std::pair<int, int>>& seed, double near_radius,
+                                     bool all_struts, const std::vector<int>* key = nullptr,
+                                     BasisMemo* memo = nullptr);
+
+}  // namespace foldkit::folding::detail

@@ -1,0 +1,367 @@
+#include "foldkit/folding/projected_folding.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/kinematics.hpp"
+#include "foldkit/geometry/projection.hpp"
+#include "foldkit/simulation/collision_world.hpp"
+#include "foldkit/geometry/null_space.hpp"
+
+namespace foldkit::folding {
+
+using geometry::FoldState;
+
+const char* to_string(FoldStop stop) {
+  switch (stop) {
+    case FoldStop::Reached: return "reached";
+    case FoldStop::Collision: return "collision";
+    case FoldStop::Singular: return "singular";
+    case FoldStop::NotRigidlyFoldable: return "not-rigidly-foldable";
+    case FoldStop::NoProgress: return "no-progress";
+    case FoldStop::StepLimit: return "step-limit";
+  }
+  return "unknown";
+}
+
+Eigen::VectorXd assignment_velocity(const geometry::CreasePattern& pattern) {
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(pattern.joints().size()));
+  for (std::size_t j = 0; j < pattern.joints().size(); ++j) {
+    const auto a = pattern.joints()[j].assignment;
+    w[static_cast<Eigen::Index>(j)] = a == geometry::Assignment::Mountain ? 1.0 : a == geometry::Assignment::Valley ? -1.0 : 0.0;
+  }
+  return w;
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double fraction_of(const FoldState& s) { return s.angles.size() ? s.angles.cwiseAbs().maxCoeff() / kPi : 0.0; }
+
+// Follows the path through a collision world, in order, with sub-steps so that no facet corner
+// moves farther between two checks than the world's margin (its memory of stacked facets needs that).
+class PathChecker {
+ public:
+  explicit PathChecker(const geometry::CreasePattern& pattern)
+      : pattern_(pattern), tree_(geometry::make_tree(pattern)), margin_(0.25 * simulation::smallest_feature(pattern)),
+        world_(pattern, options(margin_)) {}
+
+  // Empty when the straight motion from `a` to `b` crosses nothing, else what crossed.
+  std::string crossing(const FoldState& a, const FoldState& b) {
+    const auto pa = geometry::facet_poses(pattern_, tree_, a), pb = geometry::facet_poses(pattern_, tree_, b);
+    double moved = 0.0;
+    for (std::size_t f = 0; f < pattern_.actors().size(); ++f)
+      for (const auto& t : pattern_.actors()[f].triangles)
+        for (int v : t.v) {
+          const Eigen::Vector3d p(pattern_.vertices()[v].x(), pattern_.vertices()[v].y(), 0.0);
+          moved = std::max(moved, (pa[f] * p - pb[f] * p).norm());
+        }
+    const int parts = std::max(1, static_cast<int>(std::ceil(moved / margin_)));
+    for (int k = first_ ? 0 : 1; k <= parts; ++k) {
+      const FoldState s{a.angles + (static_cast<double>(k) / parts) * (b.angles - a.angles)};
+      const auto crossings = world_.check(geometry::facet_poses(pattern_, tree_, s), s);
+      if (!crossings.empty()) {
+        const auto& c = crossings.front();
+        std::ostringstream out;
+        out << "actors " << pattern_.actors()[c.actors[0]].id << " and " << pattern_.actors()[c.actors[1]].id << " cross ("
+            << simulation::to_string(c.kind);
+        if (c.kind == simulation::CrossingKind::Mesh) out << ", depth " << c.depth;
+        out << ") at largest fold angle " << fraction_of(s) * 180.0 << " deg";
+        return out.str();
+      }
+    }
+    first_ = false;
+    return {};
+  }
+
+ private:
+  static simulation::CollisionOptions options(double margin) {
+    simulation::CollisionOptions o;
+    o.margin = margin;
+    return o;
+  }
+
+  const geometry::CreasePattern& pattern_;
+  geometry::KinematicTree tree_;
+  double margin_;
+  simulation::CollisionWorld world_;
+  bool first_ = true;
+};
+
+struct Corrected {
+  FoldState state;
+  bool ok = false;
+  int iterations = 0;
+  double error = 0.0;
+};
+
+class Folder {
+ public:
+  Folder(const geometry::CreasePattern& pattern, const ProjectedFoldingOptions& o, ProjectedFoldingResult& r)
+      : pattern_(pattern), opt_(o), result_(r), system_(pattern), solver_(o.rank_tolerance) {
+    po_.tolerance = 0.1 * o.closure_tolerance;
+    po_.max_iterations = 60;
+    po_.keep_signs = true;
+  }
+
+  // Newton with minimum-norm steps from `guess` back to the manifold; when that crosses a crease
+  // through flat or does not converge in a few iterations, geometry::project (Levenberg–Marquardt,
+  // signs kept) from `guess` instead.
+  Corrected correct(const FoldState& guess) {
+    FoldState s = guess;
+    Eigen::VectorXd r, delta;
+    Eigen::SparseMatrix<double> J;
+    for (int it = 0;; ++it) {
+      const double error = system_.max_error(s);
+      if (error <= po_.tolerance) return {s, true, it, error};
+      if (it == 6) break;
+      system_.evaluate(s, r, J);
+      if (!solver_.min_norm_step(J, r, delta)) break;
+      s.angles += delta;
+      ++result_.newton_iterations;
+      if ((s.angles.array() * guess.angles.array() < 0.0).any() || s.angles.cwiseAbs().maxCoeff() > kPi) break;
+    }
+    const geometry::ProjectionResult p = geometry::project(system_, guess, po_);
+    result_.newton_iterations += p.iterations;
+    return {p.state, p.converged && p.error <= opt_.closure_tolerance, p.iterations, p.error};
+  }
+
+  void run(const Eigen::VectorXd& desired) {
+    const Eigen::VectorXd w = desired / desired.cwiseAbs().maxCoeff();
+    const double target = opt_.target_fraction;
+    std::vector<FoldState>& states = result_.states;
+    states.assign(1, FoldState::flat(pattern_));
+    if (opt_.collisions) checker_.emplace(pattern_);
+    if (checker_) checker_->crossing(states[0], states[0]);
+
+    if (!lead_in(w)) return;
+    if (fraction_of(states.back()) >= target - 1e-12) return finish(FoldStop::Reached, "target reached");
+
+    int reference_rank = -1;
+    while (true) {
+      const FoldState& x = states.back();
+      Eigen::VectorXd r;
+      Eigen::SparseMatrix<double> J;
+      system_.evaluate(x, r, J);
+      const geometry::NullSpaceVelocity t = solver_.project_onto_null_space(J, w);
+      result_.min_pivot_ratio = std::min(result_.min_pivot_ratio, t.pivot_ratio);
+      // The LDLᵀ pivots only screen: a change in their count, or collapsing pivots, calls for a
+      // rank-revealing decision, and only that decision stops the fold.
+      const bool suspect = t.pivot_ratio < opt_.singular_ratio;
+      if (t.rank != screened_rank_ || suspect) {
+        screened_rank_ = t.rank;
+        decide(J);
+      }
+      std::ostringstream at;
+      at << " at largest fold angle " << fraction_of(x) * 180.0 << " deg (step " << result_.steps << ")";
+      if (reference_rank >= 0 && decision_.rank < reference_rank)
+        return finish(FoldStop::Singular, "the closure Jacobian drops rank from " + std::to_string(reference_rank) + " to " +
+                                              std::to_string(decision_.rank) + at.str() + " (" + evidence() + "): a bifurcation");
+      reference_rank = std::max(reference_rank, decision_.rank);
+      if (suspect && decision_.smallest_kept < opt_.singular_ratio * decision_.sigma_max) {
+        std::ostringstream out;
+        out << "the closure Jacobian is nearly singular (smallest kept singular value " << decision_.smallest_kept / decision_.sigma_max
+            << " of the largest)" << at.str();
+        return finish(FoldStop::Singular, out.str());
+      }
+      const double vnorm = t.velocity.norm();
+      const double cosine = vnorm > 0.0 ? t.velocity.dot(w) / (vnorm * w.norm()) : 0.0;
+      if (!(cosine > 1e-6))
+        return finish(FoldStop::NoProgress, "the desired velocity has no component along the motions closure allows" + at.str());
+      if (result_.steps >= opt_.max_steps)
+        return finish(FoldStop::StepLimit, "stopped after " + std::to_string(opt_.max_steps) + " steps" + at.str());
+      const Eigen::VectorXd v = t.velocity / t.velocity.cwiseAbs().maxCoeff();
+
+      double h = opt_.max_step;
+      Corrected next;
+      std::string why;
+      while (true) {
+        next = correct(FoldState{x.angles + h * v});
+        why = check_step(x, FoldState{x.angles + h * v}, next, h);
+        if (why.empty()) break;
+        h *= 0.5;
+        if (h < opt_.max_step / 64) return finish(FoldStop::Singular, why + at.str());
+      }
+      bool reached = false;
+      if (fraction_of(next.state) >= target) {
+        next = land(x, v, h, target);
+        reached = true;
+      }
+      if (!accept(x, next)) return;
+      if (reached) return finish(FoldStop::Reached, "target reached");
+    }
+  }
+
+ private:
+  // Flat is singular (every vertex's crease axes lie in one plane, so the Jacobian drops rank and
+  // first-order motions need not extend). The first states are the closed states nearest to the
+  // desired direction at amplitudes s growing to lead_in, signs kept, until the Jacobian's rank and
+  // pivots mean something; a pattern that folds rigidly along it keeps most of each amplitude, one
+  // that does not (the square twist) collapses back to flat, where closure holds to second order
+  // at angles of about √tolerance.
+  bool lead_in(const Eigen::VectorXd& w) {
+    const double amplitude = std::min(opt_.lead_in, 0.5 * opt_.target_fraction * kPi);
+    const int parts = std::max(1, static_cast<int>(std::ceil(amplitude / opt_.max_step - 1e-9)));
+    for (int k = 1; k <= parts; ++k) {
+      const double s = amplitude * k / parts;
+      const Corrected c = correct(FoldState{s * w});
+      const double kept = c.state.angles.cwiseAbs().maxCoeff() / s;
+      const double cosine = c.state.angles.dot(w) / (c.state.angles.norm() * w.norm() + 1e-300);
+      if (!c.ok || kept < 0.25 || cosine < 0.2) {
+        std::ostringstream out;
+        out << "no closed state near flat follows the desired velocity: the closed state nearest to it at amplitude " << s
+            << " rad (signs kept) keeps " << kept * 100.0 << "% of that amplitude (at least 25% needed";
+        if (!c.ok) out << "; the projection did not converge, error " << c.error << " rad";
+        out << "), so the sheet does not fold rigidly this way";
+        finish(FoldStop::NotRigidlyFoldable, out.str());
+        return false;
+      }
+      if ((c.state.angles - result_.states.back().angles).cwiseAbs().maxCoeff() > 2.0 * opt_.max_step) {
+        finish(FoldStop::Singular, "the way out of the flat state jumps between branches at amplitude " + std::to_string(s) + " rad");
+        return false;
+      }
+      if (!accept(result_.states.back(), c)) return false;
+    }
+    return true;
+  }
+
+  // Empty when `next` (corrected from `predicted`) is an acceptable step from `x`.
+  std::string check_step(const FoldState& x, const FoldState& predicted, const Corrected& next, double h) const {
+    if (!next.ok) {
+      std::ostringstream out;
+      out << "the Newton correction does not return to the closure manifold (error " << next.error << " rad)";
+      return out.str();
+    }
+    if ((next.state.angles - predicted.angles).cwiseAbs().maxCoeff() > 0.5 * h)
+      return "the Newton correction jumps away from the predicted step (another branch)";
+    for (Eigen::Index j = 0; j < x.angles.size(); ++j)
+      if (x.angles[j] * predicted.angles[j] < 0.0)
+        return "crease " + std::to_string(pattern_.joints()[static_cast<std::size_t>(j)].id) +
+               " returns to flat (it would change between mountain and valley)";
+    return {};
+  }
+
+  // The step from x along v whose corrected state has its largest angle at target·π (regula falsi
+  // on the step length; the fraction is nearly linear in it).
+  Corrected land(const FoldState& x, const Eigen::VectorXd& v, double h, double target) {
+    double lo = 0.0, flo = fraction_of(x) - target, hi = h;
+    Corrected best = correct(FoldState{x.angles + hi * v});
+    double fhi = fraction_of(best.state) - target;
+    for (int it = 0; it < 40 && std::abs(fhi) > 1e-12; ++it) {
+      const double mid = hi - fhi * (hi - lo) / (fhi - flo);
+      const Corrected c = correct(FoldState{x.angles + mid * v});
+      if (!c.ok) break;
+      const double fm = fraction_of(c.state) - target;
+      if (fm >= 0.0) {
+        hi = mid, fhi = fm, best = c;
+      } else {
+        lo = mid, flo = fm;
+      }
+    }
+    return best;
+  }
+
+  // Appends `next` unless the motion to it collides; ends the run (Collision) when it does.
+  bool accept(const FoldState& x, const Corrected& next) {
+    if (checker_) {
+      const std::string what = checker_->crossing(x, next.state);
+      if (!what.empty()) {
+        finish(FoldStop::Collision, "the next step collides: " + what);
+        return false;
+      }
+    }
+    const double error = system_.max_error(next.state);
+    result_.max_closure_error = std::max(result_.max_closure_error, error);
+    result_.states.push_back(next.state);
+    result_.steps = static_cast<int>(result_.states.size()) - 1;
+    if (opt_.progress) opt_.progress({static_cast<double>(result_.steps), 0.0, "steps", error});
+    return true;
+  }
+
+  // J's rank by singular values (geometry::LeastNormSolver::decide_rank), the fold's record of it;
+  // σ_max floored at 1 as geometry::mobility does (closure Jacobians are dimensionless).
+  void decide(const Eigen::SparseMatrix<double>& J) {
+    decision_ = solver_.decide_rank(J, std::sqrt(opt_.rank_tolerance), 400, 1.0);
+    ++result_.rank_decisions;
+    result_.rank = decision_.rank;
+    result_.dof = decision_.nullity;
+    result_.rank_gap = decision_.gap();
+    result_.rank_method = decision_.method;
+    result_.min_rank_gap = std::min(result_.min_rank_gap, decision_.gap());
+  }
+
+  std::string evidence() const {
+    std::ostringstream out;
+    out << decision_.method << ": singular values <= " << decision_.tolerance << " count as 0; largest counted "
+        << decision_.largest_zero << ", smallest kept " << decision_.smallest_kept << ", gap " << decision_.gap();
+    return out.str();
+  }
+
+  void finish(FoldStop stop, const std::string& message) {
+    result_.stop = stop;
+    result_.message = message;
+  }
+
+  const geometry::CreasePattern& pattern_;
+  const ProjectedFoldingOptions& opt_;
+  ProjectedFoldingResult& result_;
+  geometry::ClosureSystem system_;
+  geometry::LeastNormSolver solver_;  // keeps its ordering between the thousands of steps
+  geometry::ProjectionOptions po_;
+  std::optional<PathChecker> checker_;
+  int screened_rank_ = -1;
+  geometry::RankDecision decision_;
+};
+
+}  // namespace
+
+ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, const ProjectedFoldingOptions& options) {
+  const auto n = static_cast<Eigen::Index>(pattern.joints().size());
+  if (n == 0) throw std::invalid_argument("fold_projected: the pattern has no crease");
+  const Eigen::VectorXd desired = options.velocity.size() ? options.velocity : assignment_velocity(pattern);
+  if (desired.size() != n)
+    throw std::invalid_argument("fold_projected: the desired velocity has " + std::to_string(desired.size()) +
+                                " entries for " + std::to_string(n) + " creases");
+  if (!desired.allFinite()) throw std::invalid_argument("fold_projected: the desired velocity is not finite");
+  if (!(desired.cwiseAbs().maxCoeff() > 0.0))
+    throw std::invalid_argument(options.velocity.size()
+                                    ? "fold_projected: the desired velocity is zero"
+                                    : "fold_projected: no crease has a mountain/valley assignment; give a desired velocity");
+  if (!(options.target_fraction > 0.0 && options.target_fraction <= 1.0))
+    throw std::invalid_argument("fold_projected: the target fraction must lie in (0, 1]");
+  if (!(options.max_step > 0.0 && options.max_step <= 0.5))
+    throw std::invalid_argument("fold_projected: the step must lie in (0, 0.5] rad");
+  if (!(options.closure_tolerance > 0.0 && options.closure_tolerance < 1e-3))
+    throw std::invalid_argument("fold_projected: the closure tolerance must lie in (0, 1e-3)");
+  if (options.max_steps < 1) throw std::invalid_argument("fold_projected: max_steps must be at least 1");
+  if (!(options.lead_in > 0.0 && options.lead_in <= 1.0))
+    throw std::invalid_argument("fold_projected: the lead-in amplitude must lie in (0, 1] rad");
+  if (!(options.rank_tolerance > 0.0) || !(options.singular_ratio >= 0.0) || !(options.cmml_velocity > 0.0) ||
+      !std::isfinite(options.cmml_velocity))
+    throw std::invalid_argument("fold_projected: rank tolerance and CMML velocity must be positive");
+
+  ProjectedFoldingResult result;
+  const auto t0 = std::chrono::steady_clock::now();
+  Folder(pattern, options, result).run(desired);
+  result.time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result.fraction = fraction_of(result.states.back());
+  result.sequence = geometry::path_sequence(pattern, result.states, options.cmml_velocity, pattern.title());
+  if (options.replay && result.states.size() > 1) {
+    simulation::SimulationOptions so;
+    so.collisions = options.collisions;
+    so.progress = options.progress;
+    result.replay = simulation::simulate(pattern, result.sequence, so);
+    if (!result.replay->ok)
+      result.message += "; the simulator rejects the CMML: " +
+                        (result.replay->problems.empty() ? std::string("invalid") : result.replay->problems.front());
+  }
+  return result;
+}
+
+}  // namespace foldkit::folding

@@ -1,0 +1,293 @@
+// Projected-velocity folding. Oracles that do not share its code: the Miura-ori closed form
+// (NOTES.md), the closure residual evaluated afresh, geometry::mobility, the simulator's replay,
+// the strip's collision angle by elementary geometry, and OrigamiSimulator's square twist.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/generators.hpp"
+#include "foldkit/geometry/mobility.hpp"
+#include "foldkit/folding/projected_folding.hpp"
+#include "test_paths.hpp"
+
+namespace {
+
+namespace geo = foldkit::geometry;
+namespace gen = foldkit::geometry::generators;
+using foldkit::folding::FoldStop;
+using foldkit::folding::fold_projected;
+using foldkit::folding::ProjectedFoldingOptions;
+using foldkit::folding::ProjectedFoldingResult;
+
+constexpr double kPi = 3.14159265358979323846;
+
+double sign_of(geo::Assignment a) { return a == geo::Assignment::Mountain ? 1.0 : a == geo::Assignment::Valley ? -1.0 : 0.0; }
+
+// Closed at every state (evaluated here, not taken from the result), no crease jumps, and the
+// simulator replays the CMML without a problem.
+void expect_valid_path(const geo::CreasePattern& p, const ProjectedFoldingResult& r, double max_step) {
+  const geo::ClosureSystem system(p);
+  ASSERT_FALSE(r.states.empty());
+  EXPECT_EQ(r.states.front().angles.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(r.steps + 1, static_cast<int>(r.states.size()));
+  for (std::size_t i = 0; i < r.states.size(); ++i) {
+    EXPECT_LE(system.max_error(r.states[i]), 1e-10) << "state " << i;
+    if (i > 0) {
+      EXPECT_LE((r.states[i].angles - r.states[i - 1].angles).cwiseAbs().maxCoeff(), 1.5 * max_step) << "state " << i;
+    }
+  }
+  EXPECT_LE(r.max_closure_error, 1e-10);
+  ASSERT_TRUE(r.replay.has_value());
+  EXPECT_TRUE(r.replay->ok) << (r.replay->problems.empty() ? "" : r.replay->problems.front());
+  EXPECT_EQ(geo::end_state(p, r.sequence).angles, r.states.back().angles);
+}
+
+// Every crease stays on the side of its assignment (0 allowed for flat/unassigned).
+void expect_assignment_kept(const geo::CreasePattern& p, const ProjectedFoldingResult& r) {
+  for (const auto& s : r.states)
+    for (std::size_t j = 0; j < p.joints().size(); ++j)
+      EXPECT_GE(s.angles[static_cast<Eigen::Index>(j)] * sign_of(p.joints()[j].assignment), 0.0) << "joint " << p.joints()[j].id;
+}
+
+TEST(ProjectedFolding, MiuraFollowsTheClosedFormToTheTarget) {
+  const double phi = kPi / 3;
+  const geo::CreasePattern p = geo::build_or_throw(gen::miura(4, 4, 1.0, 1.0, phi));
+  ProjectedFoldingOptions o;
+  o.target_fraction = 0.9;
+  const ProjectedFoldingResult r = fold_projected(p, o);
+  ASSERT_EQ(r.stop, FoldStop::Reached) << r.message;
+  EXPECT_NEAR(r.fraction, 0.9, 1e-9);
+  EXPECT_NEAR(r.states.back().angles.cwiseAbs().maxCoeff(), 0.9 * kPi, 1e-9);
+  expect_valid_path(p, r, o.max_step);
+  expect_assignment_kept(p, r);
+  EXPECT_EQ(r.dof, 1);
+  // Straight creases are the vertical ones; tan(ρ_straight/2) = cos φ · tan(ρ_zigzag/2) at every
+  // vertex, so every crease of a kind has the same |angle|.
+  for (std::size_t i = 1; i < r.states.size(); ++i) {
+    double straight = -1.0, zigzag = -1.0;
+    for (std::size_t j = 0; j < p.joints().size(); ++j) {
+      const auto& joint = p.joints()[j];
+      const double a = std::abs(r.states[i].angles[static_cast<Eigen::Index>(j)]);
+      const bool vertical = std::abs(p.vertices()[joint.v[0]].x() - p.vertices()[joint.v[1]].x()) < 1e-12;
+      double& kind = vertical ? straight : zigzag;
+      if (kind < 0.0) kind = a;
+      EXPECT_NEAR(a, kind, 1e-8) << "state " << i << " joint " << joint.id;
+    }
+    EXPECT_NEAR(std::tan(straight / 2), std::cos(phi) * std::tan(zigzag / 2), 1e-8 * (1 + std::tan(zigzag / 2))) << "state " << i;
+  }
+}
+
+TEST(ProjectedFolding, WaterbombFoldsAlongItsAssignment) {
+  const geo::CreasePattern p = geo::build_or_throw(gen::waterbomb(2, 2));
+  const ProjectedFoldingResult r = fold_projected(p, {});
+  ASSERT_EQ(r.stop, FoldStop::Reached) << r.message;
+  expect_valid_path(p, r, ProjectedFoldingOptions{}.max_step);
+  expect_assignment_kept(p, r);
+  EXPECT_NEAR(r.fraction, 0.9, 1e-9);
+}
+
+TEST(ProjectedFolding, BoatFoldsWithAGivenVelocityAndEndsWithOneDof) {
+  const geo::CreasePattern p = geo::build_or_throw(gen::boat());
+  ProjectedFoldingOptions o;
+  // Keel ends mountain, keel middle valley, diagonals and transverse creases valley.
+  o.velocity.resize(10);
+  o.velocity << 1, -1, -1, 1, -1, -1, -1, -1, -1, -1;
+  o.target_fraction = 0.5;
+  const ProjectedFoldingResult r = fold_projected(p, o);
+  ASSERT_EQ(r.stop, FoldStop::Reached) << r.message;
+  expect_valid_path(p, r, o.max_step);
+  const geo::ClosureSystem system(p);
+  EXPECT_EQ(geo::mobility(system, r.states.back()).dof, 1);  // NOTES.md: the folded boat has 1 DOF
+  EXPECT_EQ(r.dof, 1);
+}
+
+TEST(ProjectedFolding, ThrowsForAPatternWithoutAssignmentAndBadOptions) {
+  const geo::CreasePattern boat = geo::build_or_throw(gen::boat());
+  EXPECT_THROW(fold_projected(boat, {}), std::invalid_argument);
+  ProjectedFoldingOptions o;
+  o.velocity = Eigen::VectorXd::Ones(3);
+  EXPECT_THROW(fold_projected(boat, o), std::invalid_argument);
+  o.velocity = Eigen::VectorXd::Zero(10);
+  EXPECT_THROW(fold_projected(boat, o), std::invalid_argument);
+  const geo::CreasePattern miura = geo::build_or_throw(gen::miura(2, 2));
+  for (double f : {0.0, -0.5, 1.5, std::nan("")}) {
+    ProjectedFoldingOptions bad;
+    bad.target_fraction = f;
+    EXPECT_THROW(fold_projected(miura, bad), std::invalid_argument) << f;
+  }
+  ProjectedFoldingOptions bad;
+  bad.max_step = 0.0;
+  EXPECT_THROW(fold_projected(miura, bad), std::invalid_argument);
+}
+
+TEST(ProjectedFolding, SquareTwistIsReportedNotRigidlyFoldable) {
+  for (double twist : {kPi / 3, kPi / 4, kPi / 6}) {
+    const geo::CreasePattern p = geo::build_or_throw(gen::square_twist(1.0, twist, 1.0));
+    const ProjectedFoldingResult r = fold_projected(p, {});
+    EXPECT_EQ(r.stop, FoldStop::NotRigidlyFoldable) << twist << ": " << r.message;
+    EXPECT_EQ(r.states.size(), 1u);  // only the flat sheet: no garbage states
+    EXPECT_EQ(r.fraction, 0.0);
+    EXPECT_NE(r.message.find("does not fold rigidly"), std::string::npos) << r.message;
+    EXPECT_TRUE(r.sequence.events.empty());
+  }
+}
+
+// The generator: Kawasaki and Maekawa at the four corners, the sector angles of its doc, the
+// counts of Euler's formula.
+TEST(ProjectedFolding, SquareTwistGeneratorIsTheClassicTwist) {
+  const double twist = 0.4;
+  const geo::CreasePattern p = geo::build_or_throw(gen::square_twist(2.0, twist, 1.5));
+  EXPECT_EQ(p.actors().size(), 9u);
+  EXPECT_EQ(p.joints().size(), 12u);
+  ASSERT_EQ(p.interior_vertices().size(), 4u);
+  for (const auto& star : p.interior_vertices()) {
+    ASSERT_EQ(star.joints.size(), 4u);
+    std::vector<double> sectors = star.sectors;
+    EXPECT_NEAR(sectors[0] + sectors[2], kPi, 1e-12);
+    std::sort(sectors.begin(), sectors.end());
+    EXPECT_NEAR(sectors[0], kPi / 2 - twist, 1e-12);
+    EXPECT_NEAR(sectors[1], kPi / 2, 1e-12);
+    EXPECT_NEAR(sectors[2], kPi / 2, 1e-12);
+    EXPECT_NEAR(sectors[3], kPi / 2 + twist, 1e-12);
+    double sum = 0.0;
+    for (int j : star.joints) sum += sign_of(p.joints()[static_cast<std::size_t>(j)].assignment);
+    EXPECT_EQ(std::abs(sum), 2.0);
+  }
+  // The square's sides (both ends interior) all fold the same way: the classic assignment.
+  int sides = 0;
+  for (const auto& j : p.joints())
+    if (!p.is_boundary_vertex(j.v[0]) && !p.is_boundary_vertex(j.v[1])) {
+      ++sides;
+      EXPECT_EQ(j.assignment, geo::Assignment::Valley);
+    }
+  EXPECT_EQ(sides, 4);
+  EXPECT_THROW(gen::square_twist(1.0, 0.0), std::invalid_argument);
+  EXPECT_THROW(gen::square_twist(1.0, kPi / 2), std::invalid_argument);
+  EXPECT_THROW(gen::square_twist(-1.0), std::invalid_argument);
+}
+
+// OrigamiSimulator's single square twist (red mountain, blue valley, black border): the same
+// sector angles and the same 3 : 1 split with the square's sides alike, at its twist of 60°.
+TEST(ProjectedFolding, SquareTwistMatchesOrigamiSimulatorsTwist) {
+  if (!foldkit::test::fixtures_available()) GTEST_SKIP() << "no shared fixtures";
+  std::ifstream in(foldkit::test::fixture_path("svg/OrigamiSimulator__singlesquaretwist.svg"));
+  ASSERT_TRUE(in.good());
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string svg = text.str();
+  struct Segment {
+    double x0, y0, x1, y1;
+    int sign;
+  };
+  std::vector<Segment> creases;
+  const std::regex path(R"re(stroke="#([0-9A-F]{6})"[^>]*\sd="([^"]*)")re");
+  const std::regex number(R"(-?[0-9]*\.?[0-9]+)");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path); it != std::sregex_iterator(); ++it) {
+    const std::string colour = (*it)[1], d = (*it)[2];
+    if (colour == "000000") continue;
+    std::vector<double> v;
+    for (auto n = std::sregex_iterator(d.begin(), d.end(), number); n != std::sregex_iterator(); ++n) v.push_back(std::stod(n->str()));
+    ASSERT_EQ(v.size() % 4, 0u);
+    for (std::size_t k = 0; k < v.size(); k += 4)
+      creases.push_back({v[k], v[k + 1], v[k] + v[k + 2], v[k + 1] + v[k + 3], colour == "FF0000" ? 1 : -1});
+  }
+  ASSERT_EQ(creases.size(), 12u);
+  // Interior vertices: points where four creases meet (to the SVG's 0.01 px rounding).
+  std::map<std::pair<long, long>, std::vector<std::pair<double, int>>> stars;
+  for (const auto& c : creases)
+    for (int end = 0; end < 2; ++end) {
+      const double x = end ? c.x1 : c.x0, y = end ? c.y1 : c.y0, ox = end ? c.x0 : c.x1, oy = end ? c.y0 : c.y1;
+      stars[{std::lround(x * 20), std::lround(y * 20)}].push_back({std::atan2(oy - y, ox - x), c.sign});
+    }
+  const geo::CreasePattern ours = geo::build_or_throw(gen::square_twist());
+  std::vector<double> expected = ours.interior_vertices()[0].sectors;
+  std::sort(expected.begin(), expected.end());
+  int corners = 0;
+  for (auto& [at, star] : stars) {
+    if (star.size() != 4) continue;
+    ++corners;
+    std::sort(star.begin(), star.end());
+    std::vector<double> sectors;
+    int sum = 0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      sectors.push_back(std::fmod(star[(k + 1) % 4].first - star[k].first + 2 * kPi, 2 * kPi));
+      sum += star[k].second;
+    }
+    std::sort(sectors.begin(), sectors.end());
+    for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(sectors[k], expected[k], 2e-3);
+    EXPECT_EQ(std::abs(sum), 2);
+  }
+  EXPECT_EQ(corners, 4);
+}
+
+// Three panels, both creases mountain: the outer panels fold under the middle one and their free
+// edges meet at 120° (|cos θ| = 1/2 for equal widths); the path must stop there.
+TEST(ProjectedFolding, StripStopsAtTheCollision) {
+  const geo::CreasePattern p = geo::build_or_throw(gen::strip(3));
+  ProjectedFoldingOptions o;
+  o.velocity = Eigen::VectorXd::Ones(2);
+  const ProjectedFoldingResult r = fold_projected(p, o);
+  ASSERT_EQ(r.stop, FoldStop::Collision) << r.message;
+  EXPECT_GT(r.fraction, 119.0 / 180.0);
+  EXPECT_LE(r.fraction, 120.5 / 180.0);
+  ASSERT_TRUE(r.replay.has_value());
+  EXPECT_TRUE(r.replay->ok);  // the path up to the stop is collision-free
+  // Without collision checks the same motion goes on to the target.
+  o.collisions = false;
+  EXPECT_EQ(fold_projected(p, o).stop, FoldStop::Reached);
+}
+
+TEST(ProjectedFolding, SameInputSameOutput) {
+  const geo::CreasePattern p = geo::build_or_throw(gen::miura(3, 3));
+  ProjectedFoldingOptions o;
+  o.target_fraction = 0.5;
+  o.replay = false;
+  const ProjectedFoldingResult a = fold_projected(p, o), b = fold_projected(p, o);
+  ASSERT_EQ(a.states.size(), b.states.size());
+  for (std::size_t i = 0; i < a.states.size(); ++i) EXPECT_EQ(a.states[i].angles, b.states[i].angles);
+  EXPECT_EQ(a.newton_iterations, b.newton_iterations);
+  EXPECT_EQ(a.sequence.events.size(), b.sequence.events.size());
+}
+
+// Folded all the way (fraction 1) the Miura-ori lies flat again, a singular state (the Jacobian
+// drops rank there): the last step lands on it exactly, closed, and the simulator accepts the
+// facets stacked flat.
+TEST(ProjectedFolding, MiuraFoldsAllTheWayFlat) {
+  const geo::CreasePattern p = geo::build_or_throw(gen::miura(3, 3));
+  ProjectedFoldingOptions o;
+  o.target_fraction = 1.0;
+  const ProjectedFoldingResult r = fold_projected(p, o);
+  ASSERT_EQ(r.stop, FoldStop::Reached) << r.message;
+  EXPECT_NEAR(r.fraction, 1.0, 1e-9);
+  expect_valid_path(p, r, o.max_step);
+  // Flat-folded: every crease at ±π.
+  EXPECT_NEAR(r.states.back().angles.cwiseAbs().minCoeff(), kPi, 1e-6);
+}
+
+// A singular stop is reported with the state where it happened and a path that is closed up to
+// it (forced here by a conditioning threshold the Miura-ori crosses on its way: σ_min/σ_max falls
+// as the sheet folds towards flat-folded).
+TEST(ProjectedFolding, SingularStopKeepsAClosedPathAndSaysWhere) {
+  const geo::CreasePattern p = geo::build_or_throw(gen::miura(3, 3));
+  ProjectedFoldingOptions o;
+  o.target_fraction = 1.0;
+  o.replay = false;
+  const ProjectedFoldingResult free_run = fold_projected(p, o);
+  ASSERT_EQ(free_run.stop, FoldStop::Reached);
+  o.singular_ratio = 2.0 * free_run.min_pivot_ratio;
+  const ProjectedFoldingResult r = fold_projected(p, o);
+  ASSERT_EQ(r.stop, FoldStop::Singular) << r.message;
+  EXPECT_NE(r.message.find("nearly singular"), std::string::npos) << r.message;
+  EXPECT_LT(r.fraction, 1.0);
+  EXPECT_GT(r.fraction, 0.0);
+  const geo::ClosureSystem system(p);
+  for (const auto& s : r.states) EXPECT_LE(system.max_error(s), 1e-10);
+}
+
+}  // namespace
