@@ -6,6 +6,7 @@
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
+#include "foldkit/geometry/closure_path.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
@@ -19,26 +20,6 @@ std::vector<std::pair<int, double>> parse_goal_angles(const geometry::CreasePatt
                                 "an angle in degrees within [-180, 180]");
   for (auto& entry : out) entry.second *= M_PI / 180.0;
   return out;
-}
-
-// The closed state nearest to the flat sheet in which the named creases have their angles: the
-// other creases move (Levenberg–Marquardt), the named ones are held. Empty when none is found.
-std::optional<geometry::FoldState> goal_from_angles(const geometry::CreasePattern& pattern,
-                                                    const std::vector<std::pair<int, double>>& angles, std::string& why) {
-  geometry::FoldState rough = geometry::FoldState::flat(pattern);
-  geometry::ProjectionOptions o;
-  o.held.assign(pattern.joints().size(), false);
-  for (const auto& [j, a] : angles) {
-    rough.angles[j] = a;
-    o.held[static_cast<std::size_t>(j)] = true;
-  }
-  const geometry::ClosureSystem system(pattern);
-  const geometry::ProjectionResult r = geometry::project(system, rough, o);
-  if (!r.converged) {
-    why = r.message;
-    return std::nullopt;
-  }
-  return r.state;
 }
 
 }  // namespace
@@ -95,7 +76,7 @@ Command add_plan(CLI::App& root) {
               req.goal = geometry::end_state(pattern, read(opt->goal));
             } else {
               std::string why;
-              const auto g = goal_from_angles(pattern, parse_goal_angles(pattern, opt->goal_angles), why);
+              const auto g = geometry::goal_from_angles(geometry::ClosureSystem(pattern), parse_goal_angles(pattern, opt->goal_angles), why);
               if (!g) {
                 std::cerr << "no plan: no closed state holds the angles of --goal-angles (" << why << ")\n";
                 if (opt->json) print_json({{"solved", false}, {"message", "no closed goal state: " + why}});

@@ -10,6 +10,7 @@
 #include <ompl/base/ScopedState.h>
 
 #include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/closure_path.hpp"
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/planners/bench_suite.hpp"
@@ -53,7 +54,7 @@ FoldState single_vertex_goal(const CreasePattern& p, std::mt19937& rng, int degr
     const geometry::ClosureSystem system(p);
     FoldState dir = FoldState::flat(p);
     for (Eigen::Index j = 0; j < dir.angles.size(); ++j) dir.angles[j] = (j % 2 ? -1.0 : 1.0);
-    way = lead_in(system, way.front(), dir, 3, 0.02);
+    way = geometry::lead_in(system, way.front(), dir, 3, 0.02);
     if (way.empty() || !space->from_fold_state(way.back(), from.get()))
       throw std::runtime_error("bench: no way out of the flat vertex");
   }
@@ -93,7 +94,7 @@ FoldState projected_goal(const PlanRequest& req, std::mt19937& rng, Guess guess,
       goal = r.state;
     }
     if (!bounds.contains(goal, 1e-9) || !validity.valid(goal)) continue;
-    const std::vector<FoldState> line = projected_line(system, start, goal, req.waypoint_step);
+    const std::vector<FoldState> line = geometry::projected_line(system, start, goal, req.waypoint_step);
     if (line.empty() || (line.back().angles - goal.angles).cwiseAbs().maxCoeff() > 1e-9) continue;
     statespaces::FoldValidity::Motion motion(validity);
     bool ok = motion.valid_first(line.front());

@@ -8,30 +8,17 @@
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/geometric/PathGeometric.h>
 
-#include "foldkit/planners/bench_suite.hpp"
 #include "foldkit/folding/carpenter_spherical.hpp"
-#include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/folding/projected_folding.hpp"
+#include "foldkit/geometry/closure_path.hpp"
+#include "foldkit/planners/bench_suite.hpp"
+#include "foldkit/planners/planner_factory.hpp"
 
 namespace foldkit::planners {
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
 using geometry::FoldState;
-
-std::vector<FoldState> projected_line(const geometry::ClosureSystem& system, const FoldState& from, const FoldState& to,
-                                      double step) {
-  if (system.rows() == 0) {
-    const double longest = (to.angles - from.angles).cwiseAbs().maxCoeff();
-    const int parts = std::max(1, static_cast<int>(std::ceil(longest / step - 1e-9)));
-    std::vector<FoldState> out;
-    for (int k = 0; k <= parts; ++k)
-      out.push_back(FoldState{from.angles + (static_cast<double>(k) / parts) * (to.angles - from.angles)});
-    return out;
-  }
-  auto dense = densify(system, {from, to}, step);
-  return dense ? *dense : std::vector<FoldState>{};
-}
 
 DeterministicPlanner::DeterministicPlanner(const ob::SpaceInformationPtr& si, const std::string& name,
                                            DeterministicMethod method, const geometry::CreasePattern& pattern,
@@ -110,7 +97,7 @@ const std::vector<Method>& methods() {
   static const std::vector<Method> m = {
       {"ProjectedLine",
        [](const DeterministicProblem& p, const ob::PlannerTerminationCondition&) {
-         return projected_line(geometry::ClosureSystem(*p.pattern), p.start, p.goal, p.step);
+         return geometry::projected_line(geometry::ClosureSystem(*p.pattern), p.start, p.goal, p.step);
        }},
       // Tachi's projected-velocity folding from flat, the desired velocity pointing at the goal,
       // until the largest fold angle is the goal's.

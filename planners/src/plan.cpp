@@ -14,6 +14,7 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include "foldkit/geometry/closure_path.hpp"
 #include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/planners/planner_factory.hpp"
@@ -44,59 +45,6 @@ const char* to_string(SpaceKind kind) {
     case SpaceKind::TangentBundle: return "tangent-bundle";
     default: return "auto";
   }
-}
-
-Eigen::Index closure_rank(const geometry::ClosureSystem& system, const FoldState& state) {
-  return geometry::mobility(system, state).rank;
-}
-
-std::optional<std::vector<FoldState>> densify(const geometry::ClosureSystem& system, const std::vector<FoldState>& waypoints,
-                                              double max_step) {
-  if (waypoints.empty()) return std::vector<FoldState>{};
-  std::vector<FoldState> out{waypoints.front()};
-  geometry::ProjectionOptions po;
-  po.tolerance = 1e-10;
-  for (std::size_t i = 1; i < waypoints.size(); ++i) {
-    const FoldState& a = waypoints[i - 1];
-    const FoldState& b = waypoints[i];
-    const double longest = (b.angles - a.angles).cwiseAbs().maxCoeff();
-    const int parts = std::max(1, static_cast<int>(std::ceil(longest / max_step - 1e-9)));
-    for (int k = 1; k < parts; ++k) {
-      const FoldState line{a.angles + (static_cast<double>(k) / parts) * (b.angles - a.angles)};
-      const geometry::ProjectionResult p = geometry::project(system, line, po);
-      if (!p.converged || (p.state.angles - line.angles).cwiseAbs().maxCoeff() > 0.5 * max_step) return std::nullopt;
-      out.push_back(p.state);
-    }
-    out.push_back(b);
-  }
-  // A projected point may still sit a little farther from its neighbours than max_step.
-  for (std::size_t i = 1; i < out.size(); ++i)
-    if ((out[i].angles - out[i - 1].angles).cwiseAbs().maxCoeff() > 2.0 * max_step) return std::nullopt;
-  return out;
-}
-
-std::vector<FoldState> lead_in(const geometry::ClosureSystem& system, const FoldState& start, const FoldState& goal,
-                               Eigen::Index rank, double max_step) {
-  Eigen::VectorXd dir = goal.angles - start.angles;
-  const double norm = dir.cwiseAbs().maxCoeff();
-  if (!(norm > 0.0)) return {};
-  dir /= norm;
-  geometry::ProjectionOptions po;
-  po.tolerance = 1e-12;
-  for (double scale : {0.02, 0.05, 0.1, 0.2, 0.4}) {
-    const int parts = std::max(2, static_cast<int>(std::ceil(scale / max_step)));
-    std::vector<FoldState> pts{start};
-    bool ok = true;
-    for (int k = 1; k <= parts && ok; ++k) {
-      const geometry::ProjectionResult p =
-          geometry::project(system, FoldState{start.angles + (scale * k / parts) * dir}, po);
-      ok = p.converged;
-      pts.push_back(p.state);
-    }
-    if (!ok || closure_rank(system, pts.back()) < rank) continue;
-    if (auto dense = densify(system, pts, max_step)) return *dense;
-  }
-  return {};
 }
 
 namespace {
@@ -196,7 +144,7 @@ PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
     if (!sv->from_fold_state(start, probe_state.get())) {
       // The start is singular for the closed form (e.g. a flat vertex whose passive axes line up):
       // leave it along a short closed segment first.
-      setup.prefix = lead_in(*system, start, req.goal, 3, req.waypoint_step);
+      setup.prefix = geometry::lead_in(*system, start, req.goal, 3, req.waypoint_step);
       if (setup.prefix.empty() || !sv->from_fold_state(setup.prefix.back(), probe_state.get()))
         throw std::invalid_argument("plan: no closed way out of the singular start state");
     }
@@ -214,10 +162,10 @@ PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
     setup.si = setup.constrained.si;
     setup.reader = statespaces::constrained_reader();
     const auto rank = static_cast<Eigen::Index>(setup.constrained.constraint->getCoDimension());
-    if (closure_rank(*system, start) < rank) {
+    if (geometry::mobility(*system, start).rank < rank) {
       // Flat (or another singular state): the Jacobian loses rank, charts cannot be anchored
       // and projections may flip branches; plan from a nearby regular state instead.
-      setup.prefix = lead_in(*system, start, req.goal, rank, req.waypoint_step);
+      setup.prefix = geometry::lead_in(*system, start, req.goal, rank, req.waypoint_step);
       if (setup.prefix.empty()) throw std::invalid_argument("plan: no closed way out of the singular start state");
     }
   }
@@ -261,7 +209,7 @@ std::optional<std::vector<FoldState>> path_waypoints(const PlanSetup& setup, og:
   full.insert(full.end(), states.begin() + (states.empty() ? 0 : 1), states.end());
   if (to_goal && (full.size() < 2 || (full.back().angles - req.goal.angles).cwiseAbs().maxCoeff() > 1e-6))
     full.push_back(req.goal);
-  auto dense = densify(*setup.system, full, req.waypoint_step);
+  auto dense = geometry::densify(*setup.system, full, req.waypoint_step);
   if (!dense && why) *why = "the planned path jumps (interpolation left the manifold)";
   return dense;
 }

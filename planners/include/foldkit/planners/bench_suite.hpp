@@ -80,11 +80,6 @@ class DeterministicPlanner : public ompl::base::Planner {
   double step_;
 };
 
-// The straight joint-angle line from `from` to `to`, each point projected onto the closure
-// manifold (signs kept), no joint moving more than `step` between neighbours: the ProjectedLine
-// method, and how scenes check that a goal is reachable. Empty when a projection fails or jumps.
-std::vector<geometry::FoldState> projected_line(const geometry::ClosureSystem& system, const geometry::FoldState& from,
-                                                const geometry::FoldState& to, double step);
 
 // Names of the deterministic methods available in this build (ProjectedLine always: the straight
 // joint-angle line from start to goal, each point projected onto the closure manifold).

@@ -64,20 +64,4 @@ struct PlanResult {
 // not closed, an unknown planner, a single-vertex space on a multi-vertex pattern).
 PlanResult plan(const PlanRequest& request);
 
-// Inserts closed states (straight-line points projected onto the closure manifold, signs kept)
-// until no joint changes more than `max_step` between neighbours. Returns nothing when a
-// projection fails or lands farther than `max_step` from its straight-line point (a jump).
-std::optional<std::vector<geometry::FoldState>> densify(const geometry::ClosureSystem& system,
-                                                         const std::vector<geometry::FoldState>& waypoints,
-                                                         double max_step);
-
-// A short closed path out of a singular start (e.g. the flat sheet): projections of
-// start + s·(goal − start) for growing s, signs kept, ending at a state where the closure
-// Jacobian has rank `rank`. Empty when none is found.
-std::vector<geometry::FoldState> lead_in(const geometry::ClosureSystem& system, const geometry::FoldState& start,
-                                         const geometry::FoldState& goal, Eigen::Index rank, double max_step);
-
-// Rank of the closure Jacobian at `state`: geometry::mobility (singular values, relative tolerance 1e-8).
-Eigen::Index closure_rank(const geometry::ClosureSystem& system, const geometry::FoldState& state);
-
 }  // namespace foldkit::planners
