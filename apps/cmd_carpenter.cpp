@@ -5,8 +5,8 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "progress_line.hpp"
 #include "cli_common.hpp"
+#include "progress_line.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"

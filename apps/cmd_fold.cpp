@@ -2,8 +2,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "progress_line.hpp"
 #include "cli_common.hpp"
+#include "progress_line.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"

@@ -1,13 +1,12 @@
 // foldkit plan: a collision-free, closed fold sequence from a start to a goal, by an OMPL planner.
 #include <iostream>
 
-#include "progress_line.hpp"
 #include "cli_common.hpp"
+#include "progress_line.hpp"
+#include "foldkit/geometry/closure_path.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
-#include "foldkit/geometry/closure_path.hpp"
-#include "foldkit/geometry/projection.hpp"
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 

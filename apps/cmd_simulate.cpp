@@ -1,8 +1,8 @@
 // foldkit simulate: replay a CMML on a pattern and say whether it is physically possible.
 #include <iostream>
 
-#include "progress_line.hpp"
 #include "cli_common.hpp"
+#include "progress_line.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"

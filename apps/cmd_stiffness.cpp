@@ -2,8 +2,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "progress_line.hpp"
 #include "cli_common.hpp"
+#include "progress_line.hpp"
 #include "foldkit/analysis/load_case.hpp"
 #include "foldkit/analysis/solver.hpp"
 #include "foldkit/io/cmml.hpp"

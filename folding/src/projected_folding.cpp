@@ -9,9 +9,9 @@
 
 #include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/kinematics.hpp"
+#include "foldkit/geometry/null_space.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/simulation/collision_world.hpp"
-#include "foldkit/geometry/null_space.hpp"
 
 namespace foldkit::folding {
 

@@ -11,11 +11,11 @@
 
 namespace foldkit::geometry {
 
-bool LeastNormSolver::factor(const Eigen::SparseMatrix<double>& jacobian) {
+bool LeastNormSolver::factor(const Eigen::SparseMatrix<double>& jacobian, double eps_floor) {
   a_ = jacobian.transpose() * jacobian;
   double largest = 0.0;
   for (Eigen::Index k = 0; k < a_.cols(); ++k) largest = std::max(largest, a_.coeff(k, k));
-  eps_ = 1e-4 * rank_tolerance_ * std::max(largest, eps_floor_);
+  eps_ = 1e-4 * rank_tolerance_ * std::max(largest, eps_floor);
   for (Eigen::Index k = 0; k < a_.cols(); ++k) a_.coeffRef(k, k) += eps_;
   a_.makeCompressed();
   const int* outer = a_.outerIndexPtr();
@@ -60,17 +60,21 @@ NullSpaceVelocity LeastNormSolver::project_onto_null_space(const Eigen::SparseMa
     return t;
   }
   t.velocity = eps_ * solve(desired);
+  count_pivots(t);
+  return t;
+}
 
+void LeastNormSolver::count_pivots(NullSpaceVelocity& t) const {
   const Eigen::VectorXd d = ldlt_.vectorD();
   const double top = d.maxCoeff();
   double smallest_kept = std::numeric_limits<double>::infinity();
-  for (Eigen::Index k = 0; k < n; ++k)
+  t.rank = 0;
+  for (Eigen::Index k = 0; k < d.size(); ++k)
     if (d[k] > rank_tolerance_ * top) {
       ++t.rank;
       smallest_kept = std::min(smallest_kept, d[k]);
     }
   t.pivot_ratio = t.rank > 0 ? std::sqrt(smallest_kept / top) : 1.0;
-  return t;
 }
 
 double RankDecision::gap() const {
@@ -155,14 +159,9 @@ RankDecision LeastNormSolver::decide_rank(const Eigen::SparseMatrix<double>& jac
   }
   // ε relative to this J's own scale (floored at the caller's), not the solver's floor of 1: the
   // inverse iteration separates singular values only above √ε.
-  struct FloorScope {
-    double& floor;
-    double saved;
-    ~FloorScope() { floor = saved; }
-  } scope{eps_floor_, eps_floor_};
-  eps_floor_ = scale_floor * scale_floor;
-  const NullSpaceVelocity screen = project_onto_null_space(jacobian, Eigen::VectorXd::Zero(n));  // factors J
-  if (screen.rank == static_cast<int>(n) && screen.pivot_ratio == 0.0) throw std::runtime_error("decide_rank: factorisation failed");
+  if (!factor(jacobian, scale_floor * scale_floor)) throw std::runtime_error("decide_rank: factorisation failed");
+  NullSpaceVelocity screen;
+  count_pivots(screen);
   Eigen::Index block = std::min<Eigen::Index>(n, std::max<Eigen::Index>(n - screen.rank + 4, 6));
   std::mt19937 rng(20101);
   auto random_block = [&](Eigen::Index rows, Eigen::Index cols) {

@@ -6,11 +6,10 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
-#include <unordered_map>
 
-#include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/narrowphase/distance.h>
 
+#include "facet_mesh.hpp"
 #include "foldkit/geometry/kinematics.hpp"
 
 namespace foldkit::simulation {
@@ -22,29 +21,11 @@ double min_clearance(const geometry::CreasePattern& pattern, const std::vector<g
   std::vector<std::vector<Eigen::Vector3d>> corners(actors.size());
   std::vector<std::vector<int>> vertices(actors.size());
   for (std::size_t a = 0; a < actors.size(); ++a) {
-    std::unordered_map<int, int> local;
-    std::vector<fcl::Vector3d> points;
-    std::vector<fcl::Triangle> triangles;
-    for (const auto& t : actors[a].triangles) {
-      int tri[3];
-      for (int k = 0; k < 3; ++k) {
-        const auto [it, fresh] = local.emplace(t.v[k], static_cast<int>(points.size()));
-        if (fresh) {
-          const auto& v = pattern.vertices()[t.v[k]];
-          points.emplace_back(v.x(), v.y(), 0.0);
-          vertices[a].push_back(t.v[k]);
-        }
-        tri[k] = it->second;
-      }
-      triangles.emplace_back(tri[0], tri[1], tri[2]);
-    }
-    corners[a].assign(points.begin(), points.end());
-    auto mesh = std::make_shared<Mesh>();
-    mesh->beginModel(static_cast<int>(triangles.size()), static_cast<int>(points.size()));
-    mesh->addSubModel(points, triangles);
-    mesh->endModel();
-    meshes.push_back(mesh);
+    const detail::FacetMesh mesh = detail::facet_mesh(pattern, static_cast<int>(a));
+    corners[a] = mesh.points;
+    vertices[a] = mesh.vertices;
     std::sort(vertices[a].begin(), vertices[a].end());
+    meshes.push_back(detail::fcl_model<fcl::RSSd>(mesh));
   }
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (std::size_t a = 0; a < actors.size(); ++a)

@@ -13,6 +13,7 @@
 
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/geometry/triangle_overlap.hpp"
+#include "facet_mesh.hpp"
 #include "triangle_crossing.hpp"
 
 namespace foldkit::simulation {
@@ -103,31 +104,16 @@ struct CollisionWorld::Impl {
   }
 
   Facet make_facet(int actor) const {
+    const detail::FacetMesh mesh = detail::facet_mesh(*pattern, actor);
     Facet f;
-    std::unordered_map<int, int> local;
-    std::vector<fcl::Vector3d> points;
-    std::vector<fcl::Triangle> triangles;
-    for (const auto& t : pattern->actors()[actor].triangles) {
-      std::array<int, 3> tri{};
-      geometry::Tri2 flat;
-      for (int k = 0; k < 3; ++k) {
-        const auto [it, fresh] = local.emplace(t.v[k], static_cast<int>(f.points.size()));
-        const geometry::Vec2& v = pattern->vertices()[t.v[k]];
-        if (fresh) f.points.emplace_back(v.x(), v.y(), 0.0);
-        tri[k] = it->second;
-        flat[k] = v;
-      }
-      f.triangles.push_back(tri);
-      f.flat.push_back(flat);
-      triangles.emplace_back(tri[0], tri[1], tri[2]);
-    }
-    points.assign(f.points.begin(), f.points.end());
-    auto mesh = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
-    mesh->beginModel(static_cast<int>(triangles.size()), static_cast<int>(points.size()));
-    mesh->addSubModel(points, triangles);
-    mesh->endModel();
-    mesh->computeLocalAABB();
-    f.object = std::make_unique<FacetObject>(mesh);
+    f.points = mesh.points;
+    f.triangles = mesh.triangles;
+    for (const auto& t : mesh.triangles)
+      f.flat.push_back({pattern->vertices()[mesh.vertices[t[0]]], pattern->vertices()[mesh.vertices[t[1]]],
+                        pattern->vertices()[mesh.vertices[t[2]]]});
+    auto model = detail::fcl_model<fcl::OBBRSSd>(mesh);
+    model->computeLocalAABB();
+    f.object = std::make_unique<FacetObject>(model);
     f.object->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(actor)));
     return f;
   }
@@ -273,9 +259,9 @@ struct CollisionWorld::Impl {
     return false;
   }
 
-  // The deepest crossing of a's and b's triangles, with b placed by `rel` in a's frame; the
-  // point in a's frame.
-  std::optional<detail::TriangleCrossing> mesh_crossing(int a, int b, const Eigen::Isometry3d& rel) {
+  // The deepest crossing of a's and b's triangles, with b placed by `rel` in a's frame; its point
+  // in world coordinates by a's pose.
+  std::optional<Crossing> mesh_crossing(int a, int b, const Eigen::Isometry3d& rel, const std::vector<Eigen::Isometry3d>& poses) {
     ++mesh_tests;
     const Facet& fa = facets[a];
     const Facet& fb = facets[b];
@@ -297,7 +283,8 @@ struct CollisionWorld::Impl {
       }
       if (auto cut = detail::triangles_cross(x, y, tol); cut && (!deepest || cut->depth > deepest->depth)) deepest = cut;
     }
-    return deepest;
+    if (!deepest) return std::nullopt;
+    return Crossing{{a, b}, poses[a] * deepest->point, CrossingKind::Mesh, deepest->depth};
   }
 
   std::optional<Crossing> test(int a, int b, const std::vector<Eigen::Isometry3d>& poses) {
@@ -309,8 +296,7 @@ struct CollisionWorld::Impl {
     m.sample = sample;
     if (side == Across) {
       m.side = On;
-      if (auto cut = mesh_crossing(a, b, rel)) return Crossing{{a, b}, poses[a] * cut->point, CrossingKind::Mesh, cut->depth};
-      return std::nullopt;
+      return mesh_crossing(a, b, rel, poses);
     }
     if (side == On) {
       m.side = before;
@@ -378,9 +364,7 @@ std::optional<Crossing> CollisionWorld::mesh_crossing(int a, int b, const std::v
     throw std::invalid_argument("CollisionWorld::mesh_crossing: actors, poses or state out of range");
   if (a > b) std::swap(a, b);
   impl_->start(state);
-  const Eigen::Isometry3d rel = impl_->relative(a, b, poses);
-  if (auto cut = impl_->mesh_crossing(a, b, rel)) return Crossing{{a, b}, poses[a] * cut->point, CrossingKind::Mesh, cut->depth};
-  return std::nullopt;
+  return impl_->mesh_crossing(a, b, impl_->relative(a, b, poses), poses);
 }
 
 void CollisionWorld::reset() {

@@ -71,16 +71,17 @@ class LeastNormSolver {
   int analyses() const { return analyses_; }
 
  private:
-  bool factor(const Eigen::SparseMatrix<double>& jacobian);
+  // Factors JᵀJ + εI with ε = 1e-4 · rank_tolerance · max(max diag(JᵀJ), eps_floor): the floor
+  // of 1 suits closure Jacobians (entries of order 1); decide_rank passes its own scale.
+  bool factor(const Eigen::SparseMatrix<double>& jacobian, double eps_floor = 1.0);
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // The rank estimate and pivot ratio of the last factorisation (project_onto_null_space).
+  void count_pivots(NullSpaceVelocity& t) const;
 
   double rank_tolerance_;
   Eigen::SparseMatrix<double> a_;  // JᵀJ + εI
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
   double eps_ = 0.0;
-  // ε's scale is max diag(JᵀJ) floored at this (1: closure Jacobians, entries of order 1);
-  // decide_rank sets it from its scale_floor for the duration of a decision.
-  double eps_floor_ = 1.0;
   std::vector<int> outer_, inner_;  // the pattern ldlt_ was analysed for
   int analyses_ = 0;
 };
