@@ -66,6 +66,11 @@ void save_pattern(const std::string& path, const geometry::CreasePattern& patter
   io::write_file_atomic(path, text);
 }
 
+void add_status(nlohmann::json& j, const geometry::Status& status) {
+  j["status"] = geometry::to_string(status.code);
+  j["message"] = status.message;
+}
+
 void print_json(const nlohmann::json& j) {
   // File names need not be UTF-8; JSON must be.
   std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;

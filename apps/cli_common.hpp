@@ -10,6 +10,7 @@
 
 #include "foldkit/geometry/crease_pattern.hpp"
 #include "foldkit/geometry/fold_sequence.hpp"
+#include "foldkit/geometry/status.hpp"
 
 namespace foldkit::apps {
 
@@ -70,6 +71,10 @@ geometry::FoldState state_from(const geometry::CreasePattern& pattern, const std
 
 // One JSON object on stdout.
 void print_json(const nlohmann::json& j);
+
+// The keys every verb's JSON carries for how its algorithm ended: "status" (the code's name,
+// geometry::to_string) and "message".
+void add_status(nlohmann::json& j, const geometry::Status& status);
 
 // "ID:VALUE,ID:VALUE,…" → (joint index, value) per named joint of `pattern`. `option` names the
 // option in messages, `item` the expected item ("ID:DEGREES"); a value for which `valid` is false

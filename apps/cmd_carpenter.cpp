@@ -19,7 +19,7 @@ namespace {
 struct Options {
   std::string chain, output, frames_csv, state;
   bool closed = false, fold = false, json = false;
-  std::size_t max_steps = folding::CarpenterOptions{}.max_steps;
+  std::size_t max_steps = folding::CarpenterPlanarOptions{}.max_steps;
 };
 
 // A single-vertex crease pattern (PMML or FOLD) in the state of --state (or the FOLD file's own
@@ -31,9 +31,9 @@ int run_spherical(const Options& opt) {
   geometry::FoldState folded = loaded.state ? *loaded.state : geometry::FoldState::flat(loaded.pattern);
   if (!opt.state.empty()) folded = state_from(loaded.pattern, opt.state);
   else if (!loaded.state) throw UsageError(opt.chain + ": a single vertex needs its folded state: --state FOLDED.cmml");
-  const folding::FlattenResult r = [&] {
+  const folding::CarpenterSphericalResult r = [&] {
     try {
-      folding::SphericalOptions options;
+      folding::CarpenterSphericalOptions options;
       options.max_steps = static_cast<int>(std::min<std::size_t>(opt.max_steps, std::numeric_limits<int>::max()));
       return folding::flatten_single_vertex(loaded.pattern, folded, options);
     } catch (const std::invalid_argument& e) {
@@ -44,17 +44,20 @@ int run_spherical(const Options& opt) {
     if (!has_extension(opt.output, ".cmml")) throw UsageError(opt.output + ": a single vertex's output is CMML (.cmml)");
     io::write_file_atomic(opt.output, io::write_cmml(r.folding));
   }
-  std::cerr << opt.chain << ": " << (r.flat ? "flattened" : "not flattened") << " in " << r.steps << " steps: " << r.message
+  std::cerr << opt.chain << ": " << (r.status.ok() ? "flattened" : "not flattened") << " in " << r.steps << " steps: " << r.status.message
             << '\n';
-  if (opt.json)
-    print_json({{"spherical", true},
-                {"steps", r.steps},
-                {"frames", r.frames.size()},
-                {"max_length_error", r.max_sector_error},
-                {"min_distance_growth", r.min_distance_growth},
-                {"max_closure_error", r.max_closure_error},
-                {"flat", r.flat}});
-  return r.flat ? kOk : kNoPlan;
+  if (opt.json) {
+    nlohmann::json j{{"spherical", true},
+                     {"steps", r.steps},
+                     {"frames", r.frames.size()},
+                     {"max_length_error", r.max_sector_error},
+                     {"min_distance_growth", r.min_distance_growth},
+                     {"max_closure_error", r.max_closure_error},
+                     {"flat", r.status.ok()}};
+    add_status(j, r.status);
+    print_json(j);
+  }
+  return r.status.ok() ? kOk : kNoPlan;
 }
 
 int run_planar(const Options& opt) {
@@ -67,11 +70,11 @@ int run_planar(const Options& opt) {
   } catch (const std::invalid_argument& e) {
     throw io::ParseError(opt.chain, 0, e.what());
   }
-  folding::CarpenterOptions options;
+  folding::CarpenterPlanarOptions options;
   options.max_steps = opt.max_steps;
   ProgressLine progress("carpenter");
   options.progress = progress.callback();
-  const folding::CarpenterResult r = folding::carpenter_planar(chain, options);
+  const folding::CarpenterPlanarResult r = folding::carpenter_planar(chain, options);
   const std::vector<folding::Frame2> frames = opt.fold ? folding::reversed(r.frames) : r.frames;
   if (!opt.output.empty()) {
     std::string text;
@@ -85,22 +88,25 @@ int run_planar(const Options& opt) {
   }
   if (!opt.frames_csv.empty()) io::write_file_atomic(opt.frames_csv, folding::frames_csv(frames));
   const char* goal = opt.closed ? "convex" : "straight";
-  if (r.done)
+  if (r.status.ok())
     std::cerr << opt.chain << ": " << goal << " after " << r.steps << " steps, " << r.frames.size() << " frames ("
               << r.seconds << " s)\n";
   else
-    std::cerr << opt.chain << ": not " << goal << ": " << r.stop_reason << '\n';
-  if (opt.json)
-    print_json({{"closed", opt.closed},
-                {"vertices", chain.points.size()},
-                {"steps", r.steps},
-                {"frames", r.frames.size()},
-                {"lp_solves", r.lp_solves},
-                {"time", r.seconds},
-                {"max_length_error", r.max_length_error},
-                {"min_distance_growth", r.min_distance_growth},
-                {goal, r.done}});
-  return r.done ? kOk : kNoPlan;
+    std::cerr << opt.chain << ": not " << goal << ": " << r.status.message << '\n';
+  if (opt.json) {
+    nlohmann::json j{{"closed", opt.closed},
+                     {"vertices", chain.points.size()},
+                     {"steps", r.steps},
+                     {"frames", r.frames.size()},
+                     {"lp_solves", r.lp_solves},
+                     {"time", r.seconds},
+                     {"max_length_error", r.max_length_error},
+                     {"min_distance_growth", r.min_distance_growth},
+                     {goal, r.status.ok()}};
+    add_status(j, r.status);
+    print_json(j);
+  }
+  return r.status.ok() ? kOk : kNoPlan;
 }
 
 }  // namespace

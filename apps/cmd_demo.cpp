@@ -47,9 +47,10 @@ nlohmann::json simulation_stage(const geometry::CreasePattern& pattern, const ge
   io::write_file_atomic(base + "-simulation.json", j.dump(2) + "\n");
   write_snapshots(pattern, report, base + "-snapshots");
   std::cerr << "[demo] " << fs::path(base).filename().string() << ": simulated (" << simulation::to_string(model) << "), "
-            << (report.ok ? "valid" : "INVALID") << ", max closure error " << report.max_closure_error << " rad, "
+            << (report.status.ok() ? "valid" : "INVALID") << ", max closure error " << report.max_closure_error << " rad, "
             << report.collision_count << " collisions -> " << base << "{.fold,-simulation.json,-snapshots/}\n";
-  return {{"ok", report.ok},
+  return {{"ok", report.status.ok()},
+          {"status", geometry::to_string(report.status.code)},
           {"max_closure_error", report.max_closure_error},
           {"collisions", report.collision_count},
           {"duration", report.duration},
@@ -69,7 +70,7 @@ nlohmann::json fold_stage(const geometry::CreasePattern& pattern, const geometry
     // The last closed state, moved on by one step of the rough path.
     const geometry::FoldState target{at.angles + rough.angles / waypoints};
     r = geometry::project(system, target);
-    if (!r.converged) throw std::runtime_error(base + ": projection failed at waypoint " + std::to_string(k) + ": " + r.message);
+    if (!r.status.ok()) throw std::runtime_error(base + ": projection failed at waypoint " + std::to_string(k) + ": " + r.status.message);
     at = r.state;
     path.push_back(at);
   }
@@ -102,13 +103,14 @@ nlohmann::json stiffness_stage(const std::string& dir, nlohmann::json& simulatio
   const analysis::Problem problem =
       analysis::make_problem(analysis::build_structure(pattern, state_from(pattern, base + "-folded.cmml")), lc, base + "-top-load.loadcase");
   const analysis::SolveResult r = analysis::solve(problem);
-  if (!r.converged) throw std::runtime_error(base + ": the stiffness solve did not converge: " + r.message);
+  if (!r.status.ok()) throw std::runtime_error(base + ": the stiffness solve did not converge: " + r.status.message);
   int counts[3] = {0, 0, 0};
   for (const auto& c : problem.structure.connections) ++counts[static_cast<int>(c.kind)];
   std::cerr << "[demo] cube-1: folded cube, base fixed, 40 N on top: largest displacement " << r.max_displacement * 1e3
             << " mm (" << r.iterations << " Newton iterations, " << counts[0] << " hinged, " << counts[1] << " face, " << counts[2]
             << " edge connections) -> " << base << "{.pmml,-folded.cmml,-top-load.loadcase}\n";
-  return {{"converged", r.converged},
+  return {{"converged", r.status.ok()},
+          {"status", geometry::to_string(r.status.code)},
           {"max_displacement", r.max_displacement},
           {"iterations", r.iterations},
           {"residual_norm", r.residual_norm},

@@ -22,6 +22,14 @@ Eigen::VectorXd parse_velocity(const geometry::CreasePattern& pattern, const std
   return w;
 }
 
+// The "stop" key predates the shared status and keeps its names ("reached", "step-limit"); the
+// "status" key has the shared ones.
+const char* stop_name(geometry::StatusCode code) {
+  if (code == geometry::StatusCode::Success) return "reached";
+  if (code == geometry::StatusCode::LimitReached) return "step-limit";
+  return geometry::to_string(code);
+}
+
 }  // namespace
 
 Command add_fold(CLI::App& root) {
@@ -70,9 +78,9 @@ Command add_fold(CLI::App& root) {
             } catch (const std::invalid_argument& e) {
               throw io::ParseError(opt->pattern, 0, e.what());
             }
-            const bool reached = r.stop == folding::FoldStop::Reached;
-            const bool replay_ok = r.replay && r.replay->ok;
-            std::cerr << folding::to_string(r.stop) << ": " << r.message << " (fraction " << r.fraction << ", " << r.steps
+            const bool reached = r.status.code == geometry::StatusCode::Success;
+            const bool replay_ok = r.replay && r.replay->status.ok();
+            std::cerr << stop_name(r.status.code) << ": " << r.status.message << " (fraction " << r.fraction << ", " << r.steps
                       << " steps, " << r.newton_iterations << " Newton iterations, closure error " << r.max_closure_error
                       << " rad, " << r.time << " s)\n";
             if (r.rank_decisions > 0)
@@ -84,7 +92,7 @@ Command add_fold(CLI::App& root) {
               std::cerr << "wrote " << opt->output << '\n';
             }
             if (opt->json) {
-              nlohmann::json j{{"stop", folding::to_string(r.stop)},
+              nlohmann::json j{{"stop", stop_name(r.status.code)},
                                {"reached", reached},
                                {"fraction", r.fraction},
                                {"target", opt->fraction},
@@ -100,12 +108,13 @@ Command add_fold(CLI::App& root) {
                                {"min_rank_gap", r.rank_decisions ? nlohmann::json(r.min_rank_gap) : nlohmann::json(nullptr)},
                                {"time", r.time},
                                {"replay_ok", r.replay ? nlohmann::json(replay_ok) : nlohmann::json(nullptr)},
-                               {"message", r.message},
+                               {"message", r.status.message},
                                {"output", write ? nlohmann::json(opt->output) : nlohmann::json(nullptr)}};
               if (r.replay) j["replay_max_closure_error"] = r.replay->max_closure_error;
+              add_status(j, r.status);
               print_json(j);
             }
-            if (r.replay && !r.replay->ok) return kInvalidSequence;
+            if (r.replay && !r.replay->status.ok()) return kInvalidSequence;
             return reached ? kOk : kNoPlan;
           }};
 }

@@ -31,6 +31,13 @@ folding::Cell parse_start(const std::string& text, bool three_d) {
   return c;
 }
 
+// The "verdict" key predates the shared status and keeps its names; "status" has the shared ones.
+const char* verdict_name(geometry::StatusCode code) {
+  if (code == geometry::StatusCode::Success) return "found";
+  if (code == geometry::StatusCode::NoSolution) return "none";
+  return "unknown";
+}
+
 }  // namespace
 
 Command add_hamiltonian(CLI::App& root) {
@@ -72,25 +79,26 @@ Command add_hamiltonian(CLI::App& root) {
               cells = s.count() * (opt->refine ? 4 : 1);
               r = opt->refine ? folding::refined_hamiltonian_cycle(s) : folding::exact_hamiltonian(s, exact);
             }
-            const bool found = r.verdict == folding::Verdict::Found;
+            const bool found = r.status.ok();
             if (found && !opt->output.empty()) io::write_file_atomic(opt->output, path_text(r, three_d));
             const char* method = opt->refine ? "refined" : "exact";
             if (found)
               std::cerr << path << ": Hamiltonian " << (r.cycle ? "cycle" : "path") << " through " << r.path.size() << " cells ("
                         << method << ")\n";
             else
-              std::cerr << path << ": " << (r.verdict == folding::Verdict::None ? "no Hamiltonian " : "undecided Hamiltonian ")
-                        << (opt->cycle ? "cycle" : "path") << ": " << r.reason << '\n';
+              std::cerr << path << ": " << (r.status.code == geometry::StatusCode::NoSolution ? "no Hamiltonian " : "undecided Hamiltonian ")
+                        << (opt->cycle ? "cycle" : "path") << ": " << r.status.message << '\n';
             if (opt->json) {
               nlohmann::json j = {{"found", found},
-                                  {"verdict", folding::to_string(r.verdict)},
+                                  {"verdict", verdict_name(r.status.code)},
                                   {"method", method},
                                   {"dimension", three_d ? 3 : 2},
                                   {"cells", cells},
                                   {"length", r.path.size()},
                                   {"cycle", found && r.cycle},
                                   {"nodes", r.nodes}};
-              if (!found) j["reason"] = r.reason;
+              if (!found) j["reason"] = r.status.message;
+              add_status(j, r.status);
               print_json(j);
             } else if (found && opt->output.empty()) {
               std::cout << path_text(r, three_d);

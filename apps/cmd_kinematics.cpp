@@ -82,21 +82,21 @@ Command add_project(CLI::App& root) {
             geometry::ProjectionOptions po = opt->projection;
             po.keep_signs = !opt->free_signs;
             const geometry::ProjectionResult r = geometry::project(system, start, po);
-            const nlohmann::json out = {{"converged", r.converged},
-                                        {"iterations", r.iterations},
-                                        {"closure_error", r.error},
-                                        {"initial_error", system.max_error(start)},
-                                        {"message", r.message},
-                                        {"output", r.converged ? nlohmann::json(opt->output) : nlohmann::json()}};
-            std::cerr << opt->pattern << ": " << r.message << " after " << r.iterations << " iterations, closure error "
+            nlohmann::json out = {{"converged", r.status.ok()},
+                                  {"iterations", r.iterations},
+                                  {"closure_error", r.error},
+                                  {"initial_error", system.max_error(start)},
+                                  {"output", r.status.ok() ? nlohmann::json(opt->output) : nlohmann::json()}};
+            add_status(out, r.status);
+            std::cerr << opt->pattern << ": " << r.status.message << " after " << r.iterations << " iterations, closure error "
                       << r.error << " rad\n";
-            if (r.converged) {
+            if (r.status.ok()) {
               const std::string title = pattern.title().empty() ? "projected" : pattern.title() + " (projected)";
               io::write_file_atomic(opt->output,
                                     io::write_cmml(geometry::sequence_to(pattern, r.state, opt->velocity * M_PI / 180.0, title)));
             }
             if (opt->json) print_json(out);
-            return r.converged ? kOk : kNoPlan;
+            return r.status.ok() ? kOk : kNoPlan;
           }};
 }
 

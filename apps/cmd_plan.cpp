@@ -102,22 +102,24 @@ Command add_plan(CLI::App& root) {
             } catch (const std::invalid_argument& e) {
               throw io::ParseError(opt->goal.empty() ? "--goal-angles" : opt->goal, 0, e.what());
             }
-            std::cerr << (r.solved ? "solved" : "no plan") << ": " << r.message << " (" << r.planner << " in " << r.space
+            std::cerr << (r.status.ok() ? "solved" : "no plan") << ": " << r.status.message << " (" << r.planner << " in " << r.space
                       << ", " << r.time << " s, " << r.waypoints.size() << " waypoints)\n";
-            if (r.solved) {
+            if (r.status.ok()) {
               io::write_file_atomic(opt->output, io::write_cmml(r.sequence));
               std::cerr << "wrote " << opt->output << '\n';
             }
-            if (opt->json)
-              print_json({{"solved", r.solved},
-                          {"planner", r.planner},
-                          {"space", r.space},
-                          {"time", r.time},
-                          {"path_length", r.path_length},
-                          {"max_closure_error", r.max_closure_error},
-                          {"waypoints", r.waypoints.size()},
-                          {"message", r.message}});
-            return r.solved ? kOk : kNoPlan;
+            if (opt->json) {
+              nlohmann::json j{{"solved", r.status.ok()},
+                               {"planner", r.planner},
+                               {"space", r.space},
+                               {"time", r.time},
+                               {"path_length", r.path_length},
+                               {"max_closure_error", r.max_closure_error},
+                               {"waypoints", r.waypoints.size()}};
+              add_status(j, r.status);
+              print_json(j);
+            }
+            return r.status.ok() ? kOk : kNoPlan;
           }};
 }
 

@@ -70,7 +70,7 @@ Command add_simulate(CLI::App& root) {
               std::cerr << "wrote " << files.size() << " snapshots to " << opt->svg << '\n';
             }
             if (opt->json) print_json(report_json(pattern, report));
-            return report.ok ? kOk : kInvalidSequence;
+            return report.status.ok() ? kOk : kInvalidSequence;
           }};
 }
 

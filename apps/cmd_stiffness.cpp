@@ -55,8 +55,8 @@ Command add_stiffness(CLI::App& root) {
             nlohmann::json modules = nlohmann::json::array();
             for (const auto& m : r.modules)
               modules.push_back({{"id", m.id}, {"fixed", m.fixed}, {"displacement", vec(m.displacement)}, {"rotation", vec(m.rotation)}});
-            const nlohmann::json out = {{"title", lc.title},
-                                        {"converged", r.converged},
+            nlohmann::json out = {{"title", lc.title},
+                                        {"converged", r.status.ok()},
                                         {"linear", opt->linear},
                                         {"iterations", r.iterations},
                                         {"load_steps", r.load_steps},
@@ -66,13 +66,13 @@ Command add_stiffness(CLI::App& root) {
                                         {"condition_estimate", number(r.condition_estimate)},
                                         {"length_unit", number(problem.structure.tile)},
                                         {"connections", {{"hinged", counts[0]}, {"face", counts[1]}, {"edge", counts[2]}}},
-                                        {"message", r.message},
                                         {"modules", modules}};
-            std::cerr << opt->load_case << ": " << r.message << " (" << r.iterations << " iterations, " << counts[0] << " hinged, "
+            add_status(out, r.status);
+            std::cerr << opt->load_case << ": " << r.status.message << " (" << r.iterations << " iterations, " << counts[0] << " hinged, "
                       << counts[1] << " face, " << counts[2] << " edge connections); largest displacement " << r.max_displacement
                       << ", residual " << r.residual_norm << ", condition ~" << r.condition_estimate << '\n';
             if (opt->json) print_json(out);
-            return r.converged ? kOk : kNoPlan;
+            return r.status.ok() ? kOk : kNoPlan;
           }};
 }
 

@@ -36,7 +36,9 @@ nlohmann::json report_json(const geometry::CreasePattern& pattern, const simulat
   for (std::size_t j = 0; j < pattern.joints().size(); ++j)
     angles.push_back({{"joint", pattern.joints()[j].id},
                       {"angle", r.final_state.angles[static_cast<Eigen::Index>(j)] * 180.0 / M_PI}});
-  return {{"ok", r.ok},
+  return {{"ok", r.status.ok()},
+          {"status", geometry::to_string(r.status.code)},
+          {"message", r.status.message},
           {"model", simulation::to_string(r.model)},
           {"time_step", r.time_step},
           {"duration", r.duration},
@@ -59,7 +61,7 @@ void print_summary(const std::string& name, const simulation::SimulationReport& 
             << r.collision_count << " collision" << (r.collision_count == 1 ? "" : "s");
   if (r.numerical_count > 0)
     std::cerr << " (and " << r.numerical_count << " numerical: gone once the state is projected onto closure)";
-  std::cerr << ": " << (r.ok ? "valid" : "INVALID") << '\n';
+  std::cerr << ": " << (r.status.ok() ? "valid" : "INVALID") << '\n';
   for (const auto& p : r.problems) std::cerr << "  " << p << '\n';
 }
 

@@ -71,15 +71,15 @@ Frame2 random_chain(int links, unsigned seed) {
 
 void run(benchmark::State& state, bool all_struts) {
   const Frame2 chain = random_chain(static_cast<int>(state.range(0)), 1);
-  CarpenterOptions options;
+  CarpenterPlanarOptions options;
   options.all_struts = all_struts;
   options.frame_stride = 10;  // the per-frame O(n²) distance bookkeeping is not the planner
-  CarpenterResult r;
+  CarpenterPlanarResult r;
   for (auto _ : state) {
     r = carpenter_planar({chain, false}, options);
     benchmark::DoNotOptimize(r.frames.data());
   }
-  if (!r.done) state.SkipWithError(r.stop_reason.c_str());
+  if (!r.status.ok()) state.SkipWithError(r.status.message.c_str());
   state.counters["steps"] = static_cast<double>(r.steps);
   state.counters["lp_solves"] = static_cast<double>(r.lp_solves);
   state.counters["max_struts"] = static_cast<double>(r.max_struts);

@@ -13,6 +13,7 @@
 namespace {
 
 using namespace foldkit::folding;
+using foldkit::geometry::StatusCode;
 
 // A roughly square blob of n cells grown at random (seeded), so the spanning tree branches.
 PixelShape blob(std::size_t n) {
@@ -79,7 +80,7 @@ void BM_Hamiltonian_Ours(benchmark::State& state) {
     benchmark::DoNotOptimize(r.path.data());
   }
   state.counters["cells"] = static_cast<double>(r.path.size());
-  state.counters["found"] = r.verdict == Verdict::Found ? 1 : 0;
+  state.counters["found"] = r.status.code == StatusCode::Success ? 1 : 0;
 }
 BENCHMARK(BM_Hamiltonian_Ours)->Arg(5)->Arg(10)->Arg(20)->Arg(40)->Arg(80)->Unit(benchmark::kMicrosecond);
 
@@ -92,7 +93,7 @@ void BM_Hamiltonian_Baseline(benchmark::State& state) {
   for (auto _ : state) r = exact_hamiltonian(s, o);
   state.counters["cells"] = static_cast<double>(s.count());
   state.counters["nodes"] = static_cast<double>(r.nodes);
-  state.counters["found"] = r.verdict == Verdict::Found ? 1 : r.verdict == Verdict::None ? 0 : -1;
+  state.counters["found"] = r.status.code == StatusCode::Success ? 1 : r.status.code == StatusCode::NoSolution ? 0 : -1;
 }
 BENCHMARK(BM_Hamiltonian_Baseline)->Arg(5)->Arg(10)->Arg(20)->Arg(40)->Arg(80)->Unit(benchmark::kMicrosecond);
 

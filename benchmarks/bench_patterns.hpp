@@ -41,7 +41,7 @@ inline geometry::FoldState closed_miura(const geometry::CreasePattern& p, const 
       s.angles[i] = (p.joints()[j].assignment == geometry::Assignment::Mountain ? 1 : -1) * std::max(m, std::abs(s.angles[i]));
     }
     const auto r = geometry::project(sys, s);
-    if (!r.converged) throw std::runtime_error("closed_miura: continuation failed: " + r.message);
+    if (!r.status.ok()) throw std::runtime_error("closed_miura: continuation failed: " + r.status.message);
     s = r.state;
   }
   return s;

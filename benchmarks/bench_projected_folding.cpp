@@ -34,7 +34,7 @@ void BM_ProjectedFoldingMiura(benchmark::State& state) {
     r = fo::fold_projected(p, folding_options());
     benchmark::DoNotOptimize(r.states.data());
   }
-  if (r.stop != fo::FoldStop::Reached) state.SkipWithError(r.message.c_str());
+  if (r.status.code != geo::StatusCode::Success) state.SkipWithError(r.status.message.c_str());
   state.counters["creases"] = static_cast<double>(p.joints().size());
   state.counters["steps"] = r.steps;
   state.counters["newton_iterations"] = r.newton_iterations;
@@ -61,11 +61,11 @@ void BM_RRTConnectProjectedMiura(benchmark::State& state) {
   pl::PlanResult r;
   for (auto _ : state) r = pl::plan(req);
   state.counters["creases"] = static_cast<double>(p.joints().size());
-  state.counters["solved"] = r.solved ? 1 : 0;
+  state.counters["solved"] = r.status.ok() ? 1 : 0;
   state.counters["planner_time_s"] = r.time;
   state.counters["waypoints"] = static_cast<double>(r.waypoints.size());
-  state.counters["max_closure_error"] = r.solved ? r.max_closure_error : -1.0;
-  if (!r.solved) state.SetLabel("not solved: " + r.message);
+  state.counters["max_closure_error"] = r.status.ok() ? r.max_closure_error : -1.0;
+  if (!r.status.ok()) state.SetLabel("not solved: " + r.status.message);
 }
 // 20 × 20 became feasible when ClosureConstraint::project moved to sparse steps (1.2 ms per
 // projection instead of 175 ms with a dense decomposition in bench_constraint_projection — 0.55 s

@@ -43,7 +43,7 @@ const Scene& scene(int n) {
         s.angles[static_cast<Eigen::Index>(j)] =
             (slot->pattern.joints()[j].assignment == geometry::Assignment::Mountain ? 1 : -1) * std::max(m, std::abs(s.angles[static_cast<Eigen::Index>(j)]));
       const auto r = geometry::project(sys, s);
-      if (!r.converged) break;
+      if (!r.status.ok()) break;
       s = r.state;
       slot->states.push_back(s);
     }

@@ -164,7 +164,7 @@ void projection_rows(const ProjectionCase& c, std::vector<Row>& rows) {
     r.time_s = timed([&] { res = geometry::project(sys, c.start, o); });
     r.iterations = res.iterations;
     r.error = r.residual = res.error;
-    r.converged = res.converged;
+    r.converged = res.status.ok();
     rows.push_back(r);
     if (res.iterations < k) break;  // converged or stuck: later limits change nothing
   }
@@ -178,7 +178,7 @@ void projection_rows(const ProjectionCase& c, std::vector<Row>& rows) {
       r.time_s = timed([&] { res = geometry::project(sys, c.start, o); });
       r.iterations = res.iterations;
       r.error = r.residual = res.error;
-      r.converged = res.converged;
+      r.converged = res.status.ok();
       rows.push_back(r);
     }
   // The generic way: Gauss–Newton through the dense pseudo-inverse, x ← x − α J⁺ r, its error
@@ -320,7 +320,7 @@ Row solve_row(const std::string& problem, const std::string& method, const std::
   r.time_s = timed([&] { res = analysis::solve(p, o); });
   r.iterations = res.iterations;
   r.load_steps = res.load_steps;
-  r.converged = res.converged;
+  r.converged = res.status.ok();
   r.residual = nonlinear_residual(p, res);
   r.error = error(res);
   return r;
@@ -354,7 +354,7 @@ void stiffness_rows(std::vector<Row>& rows) {
   };
   auto relative_to = [&](const analysis::Problem& p, double expected, bool lin) {
     return [&p, expected, tip, lin](const analysis::SolveResult& res) {
-      if (!res.converged) return kNaN;
+      if (!res.status.ok()) return kNaN;
       return std::abs(deflection(p, res, kLinks, tip, lin) - expected) / std::abs(expected);
     };
   };
@@ -418,7 +418,7 @@ void stiffness_rows(std::vector<Row>& rows) {
     const auto ref = analysis::solve(p, tight);
     const std::string name = g_quick ? "plate50_vs_tol1e-14" : "plate200_vs_tol1e-14";
     auto err = [&p, &ref](const analysis::SolveResult& res) {
-      if (!res.converged || !ref.converged) return kNaN;
+      if (!res.status.ok() || !ref.status.ok()) return kNaN;
       double worst = 0, scale = 0;
       for (std::size_t i = 0; i < res.modules.size(); ++i) {
         worst = std::max(worst, (res.modules[i].displacement - ref.modules[i].displacement).norm());

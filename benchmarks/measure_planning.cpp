@@ -105,9 +105,9 @@ Run run_planner(char method, const CreasePattern& p, const FoldState& goal, cons
   Run r{method, static_cast<int>(p.joints().size()), seed, false, o.time, ""};
   try {
     const foldkit::planners::PlanResult res = foldkit::planners::plan(req);
-    r.solved = res.solved;
-    r.time = res.solved ? res.time : o.time;
-    r.message = res.message;
+    r.solved = res.status.ok();
+    r.time = res.status.ok() ? res.time : o.time;
+    r.message = res.status.message;
   } catch (const std::exception& e) {
     r.message = e.what();
   }

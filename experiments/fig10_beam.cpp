@@ -138,7 +138,7 @@ Outcome run(const analysis::Structure& base, const Case& c, bool linear) {
   Outcome out;
   out.fixed = static_cast<int>(std::count(p.fixed.begin(), p.fixed.end(), true));
   out.loaded = static_cast<int>(loaded.size());
-  out.converged = r.converged;
+  out.converged = r.status.ok();
   out.iterations = r.iterations;
   out.residual = r.residual_norm;
   out.condition = r.condition_estimate;

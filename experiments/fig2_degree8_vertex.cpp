@@ -108,8 +108,8 @@ int main(int argc, char** argv) {
   geometry::FoldState rough = geometry::FoldState::flat(pattern);
   for (Eigen::Index j = 0; j < rough.angles.size(); ++j) rough.angles[j] = j % 2 ? -kValley : kMountain;
   const geometry::ProjectionResult folded = geometry::project(system, rough);
-  if (!folded.converged) {
-    std::cerr << "fig2: projection of the folded state failed: " << folded.message << '\n';
+  if (!folded.status.ok()) {
+    std::cerr << "fig2: projection of the folded state failed: " << folded.status.message << '\n';
     return 1;
   }
   PaperVertex mirrored = paper;
@@ -128,7 +128,7 @@ int main(int argc, char** argv) {
     geometry::FoldState s{t * folded.state.angles};
     if (t > 0) {
       const geometry::ProjectionResult p = geometry::project(system, s);
-      all_converged = all_converged && p.converged;
+      all_converged = all_converged && p.status.ok();
       s = p.state;
       path.push_back(s);
     }

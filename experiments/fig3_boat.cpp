@@ -99,8 +99,8 @@ int main(int argc, char** argv) {
     geometry::FoldState guess{k == 1 ? Eigen::VectorXd(bias * std::abs(driven)) : Eigen::VectorXd(2 * at.angles - prev.angles)};
     guess.angles[kDriven] = driven;
     const geometry::ProjectionResult p = geometry::project(system, guess, options);
-    if (!p.converged) {
-      std::cerr << "fig3: projection failed at step " << k << " (" << driven * 180 / M_PI << "°): " << p.message << '\n';
+    if (!p.status.ok()) {
+      std::cerr << "fig3: projection failed at step " << k << " (" << driven * 180 / M_PI << "°): " << p.status.message << '\n';
       converged = false;
       break;
     }
@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
   unbiased.angles[kDriven] = kFinal / kSteps;
   const geometry::ProjectionResult first = geometry::project(system, unbiased, options);
   const Eigen::VectorXd& u = first.state.angles;
-  const bool straight_keel = first.converged && u.cwiseAbs().maxCoeff() > 0 && std::abs(u[4]) < 1e-9 && std::abs(u[0] - u[1]) < 1e-9;
+  const bool straight_keel = first.status.ok() && u.cwiseAbs().maxCoeff() > 0 && std::abs(u[4]) < 1e-9 && std::abs(u[0] - u[1]) < 1e-9;
   const geometry::Mobility m_flat = geometry::mobility(system, flat), m_folded = geometry::mobility(system, at);
   const std::vector<int> v_flat = vertex_dof(system, flat), v_folded = vertex_dof(system, at);
   const geometry::FoldSequence seq = geometry::path_sequence(pattern, path, M_PI / 6, "boat folded by the keel A-C");
@@ -157,13 +157,13 @@ int main(int argc, char** argv) {
      << "| largest deviation from the degree-4 closed form (°) | — | " << num(worst_form * 180 / M_PI, 2) << " |\n"
      << "| final angles: keel A–C / bow keel / diagonals / transverse at C (°) | — | " << num(at.angles[1] * 180 / M_PI) << " / "
      << num(at.angles[0] * 180 / M_PI) << " / " << num(at.angles[4] * 180 / M_PI) << " / " << num(at.angles[6] * 180 / M_PI, 2) << " |\n"
-     << "| simulator replay of the CMML (" << seq.events.size() << " events, motor) | folds | " << (sim.ok ? "valid" : "INVALID")
+     << "| simulator replay of the CMML (" << seq.events.size() << " events, motor) | folds | " << (sim.status.ok() ? "valid" : "INVALID")
      << ", max closure error " << num(sim.max_closure_error, 2) << " rad (tolerance " << num(sim.closure_tolerance, 2) << "), "
      << sim.collision_count << " collisions |\n\n"
      << "The fold stays symmetric (largest deviation " << num(worst_symmetry * 180 / M_PI, 2)
      << "°): the middle keel pair equal, bow and stern keels opposite to it, the four diagonals equal, C's transverse creases flat. "
      << "Without the bias (first step from the flat sheet with only the keel A–C moved, to " << num(kFinal / kSteps * 180 / M_PI)
-     << "°) the projection " << (first.converged ? "converges" : "fails") << " to bow keel " << num(u[0] * 180 / M_PI, 3)
+     << "°) the projection " << (first.status.ok() ? "converges" : "fails") << " to bow keel " << num(u[0] * 180 / M_PI, 3)
      << "°, diagonals " << num(u[4] * 180 / M_PI, 3) << "°, stern keel " << num(u[3] * 180 / M_PI, 3) << "°"
      << (straight_keel ? ": the other branch, the whole keel folding as one straight line with the diagonals flat — the reason for "
                          "the paper's \"biased in the right direction\"."
@@ -175,14 +175,14 @@ int main(int argc, char** argv) {
   experiments::write_output(args, "fig3_boat.md", md.str());
   experiments::write_output(args, "boat.pmml", io::write_pmml(pattern));
   experiments::write_output(args, "boat-folded.cmml", cmml);
-  const bool valid = converged && sim.ok;
+  const bool valid = converged && sim.status.ok();
   if (!args.check) return valid ? 0 : 1;
   bool ok = experiments::expect(converged && std::abs(final_driven - kFinal * 180 / M_PI) < 1e-9, "every step converged, driven crease at -90°");
   ok &= experiments::expect(m_folded.dof == 1, "folded boat: DOF 1 (paper: 1)");
   ok &= experiments::expect(v_flat == std::vector<int>{2, 2, 2} && m_flat.dof == 4, "flat: each 4-bar 2 DOF (paper: 2), boat 4");
   ok &= experiments::expect(worst_closure < 1e-9, "closure error along the path < 1e-9 rad");
   ok &= experiments::expect(worst_form < 1e-7 && worst_symmetry < 1e-7, "angles follow the degree-4 closed form, symmetric");
-  ok &= experiments::expect(sim.ok && sim.max_closure_error < sim.closure_tolerance && sim.collision_count == 0,
+  ok &= experiments::expect(sim.status.ok() && sim.max_closure_error < sim.closure_tolerance && sim.collision_count == 0,
                             "simulated CMML valid, closure within tolerance, no collision");
   return ok ? 0 : 1;
 }

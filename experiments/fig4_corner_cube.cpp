@@ -39,8 +39,8 @@ geometry::FoldState corner(const geometry::CreasePattern& p) {
   geometry::ProjectionOptions po;
   po.tolerance = 1e-12;
   const auto r = geometry::project(geometry::ClosureSystem(p), geometry::FoldState{guess}, po);
-  if (!r.converged) {
-    std::cerr << "fig4_corner_cube: the corner does not close: " << r.message << '\n';
+  if (!r.status.ok()) {
+    std::cerr << "fig4_corner_cube: the corner does not close: " << r.status.message << '\n';
     std::exit(1);
   }
   return r.state;
@@ -66,8 +66,8 @@ int main(int argc, char** argv) {
   const geometry::CreasePattern p = geometry::build_or_throw(geometry::generators::single_vertex({h, h, h, q, q}));
   const geometry::FoldState goal = corner(p);
 
-  const folding::FlattenResult r = folding::flatten_single_vertex(p, goal);
-  std::cerr << "fig4_corner_cube: " << r.message << ", " << r.frames.size() << " frames\n";
+  const folding::CarpenterSphericalResult r = folding::flatten_single_vertex(p, goal);
+  std::cerr << "fig4_corner_cube: " << r.status.message << ", " << r.frames.size() << " frames\n";
 
   // Replay the CMML as written, read back, as `foldkit simulate` would.
   const std::string cmml = io::write_cmml(r.folding);
@@ -99,14 +99,14 @@ int main(int argc, char** argv) {
      << "expansive motions of its spherical polygon (folding::flatten_single_vertex), the frames replayed backwards as\n"
      << "CMML (fig4_corner_cube.cmml) and that CMML replayed by the simulator (motor model, FCL self-collision).\n\n"
      << "| figure | value |\n|---|---|\n"
-     << "| unfolding | " << r.message << " |\n"
+     << "| unfolding | " << r.status.message << " |\n"
      << "| LP steps | " << r.steps << " |\n"
      << "| frames (CMML events) | " << r.frames.size() << " (" << r.folding.events.size() << ") |\n"
      << "| smallest LP rate t | " << num(r.min_rate) << " |\n"
      << "| smallest change of a pairwise distance between frames | " << num(r.min_distance_growth) << " rad |\n"
      << "| largest sector-angle error | " << num(r.max_sector_error) << " rad |\n"
      << "| largest closure residual of a frame | " << num(r.max_closure_error) << " rad |\n"
-     << "| replay valid | " << (report.ok ? "yes" : "no") << " |\n"
+     << "| replay valid | " << (report.status.ok() ? "yes" : "no") << " |\n"
      << "| replay collisions | " << report.collision_count << " |\n"
      << "| replay closure error (largest) | " << num(report.max_closure_error) << " rad (tolerance "
      << num(report.closure_tolerance) << ") |\n"
@@ -124,10 +124,10 @@ int main(int argc, char** argv) {
 
   if (!args.check) return 0;
   bool ok = true;
-  ok &= expect(r.flat, "the corner unfolds to flat");
+  ok &= expect(r.status.ok(), "the corner unfolds to flat");
   ok &= expect(r.min_distance_growth > -1e-9, "no pairwise distance shrinks between frames");
   ok &= expect(r.max_sector_error < 1e-9 && r.max_closure_error < 1e-9, "every frame keeps its sectors and closes");
-  ok &= expect(report.ok && report.collision_count == 0, "the folding CMML replays valid, without a collision");
+  ok &= expect(report.status.ok() && report.collision_count == 0, "the folding CMML replays valid, without a collision");
   ok &= expect(report.max_closure_error <= report.closure_tolerance, "the replay stays closed");
   ok &= expect(end_error < 1e-6, "the replay ends at the corner");
   ok &= expect(square < 0.02 && flap < -0.99, "the end is a cube corner with its flap shut");

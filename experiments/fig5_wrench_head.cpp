@@ -21,6 +21,7 @@ namespace {
 
 using namespace foldkit;
 using namespace foldkit::folding;
+using foldkit::geometry::StatusCode;
 using Vec = Eigen::Vector2d;
 
 // The unit square on vertex i, turned along the bar to its successor (the last along the bar
@@ -59,12 +60,12 @@ int main(int argc, char** argv) {
   // The exact search settles small shapes; the linear-time 2× refinement is the fallback.
   HamiltonianResult path = exact_hamiltonian(shape);
   std::string method = "exact";
-  if (path.verdict != Verdict::Found) {
+  if (path.status.code != StatusCode::Success) {
     path = refined_hamiltonian_cycle(shape);
     method = "2x refined cycle, opened";
   }
-  if (path.verdict != Verdict::Found) {
-    std::cerr << "no Hamiltonian path: " << path.reason << '\n';
+  if (path.status.code != StatusCode::Success) {
+    std::cerr << "no Hamiltonian path: " << path.status.message << '\n';
     return 1;
   }
   // One cube per cell (of the refined grid when refined), unit bars between cell centres.
@@ -73,9 +74,9 @@ int main(int argc, char** argv) {
 
   // Joints turn at most 0.01 rad between frames (default 0.2): the figure's frames, and the
   // overlap test below, which samples the motion at frames only, stay dense.
-  CarpenterOptions options;
+  CarpenterPlanarOptions options;
   options.max_turn = 0.01;
-  const CarpenterResult r = carpenter_planar({chain, false}, options);
+  const CarpenterPlanarResult r = carpenter_planar({chain, false}, options);
   const std::vector<Frame2> fold = reversed(r.frames);  // straight → wrench head
 
   // Cubes: consecutive ones share a hinge edge, so only pairs two or more apart must stay apart.
@@ -100,7 +101,7 @@ int main(int argc, char** argv) {
   md += "| pixels in the shape | " + std::to_string(pixels) + " |\n";
   md += "| Hamiltonian path | " + std::to_string(path.path.size()) + " cells (" + method + ") |\n";
   md += "| Carpenter steps / frames | " + std::to_string(r.steps) + " / " + std::to_string(r.frames.size()) + " |\n";
-  md += "| straightened | " + std::string(r.done ? "yes" : "no: " + r.stop_reason) + " |\n";
+  md += "| straightened | " + std::string(r.status.ok() ? "yes" : "no: " + r.status.message) + " |\n";
   md += "| max bar length error | " + experiments::num(r.max_length_error) + " |\n";
   md += "| min pairwise distance change between frames (unfolding) | " + experiments::num(r.min_distance_growth) + " |\n";
   md += "| last folding frame vs. the path (max distance) | " + experiments::num(end_error) + " |\n";
@@ -114,7 +115,7 @@ int main(int argc, char** argv) {
   if (!args.check) return 0;
   bool ok = true;
   ok &= experiments::expect(path.path.size() == pixels * (method == "exact" ? 1 : 4), "path visits every pixel once");
-  ok &= experiments::expect(r.done, "the chain straightens");
+  ok &= experiments::expect(r.status.ok(), "the chain straightens");
   ok &= experiments::expect(r.min_distance_growth >= -1e-12, "expansive: no pairwise distance shrinks (unfolding)");
   ok &= experiments::expect(r.max_length_error <= 1e-9, "bar lengths kept to 1e-9");
   ok &= experiments::expect(is_straight(fold.front()), "the folding starts straight");

@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
      << "(motor model, FCL self-collision).\n\n"
      << "| figure | value |\n|---|---|\n"
      << "| CMML events | " << replayed.events.size() << " |\n"
-     << "| replay valid | " << (report.ok ? "yes" : "no") << " |\n"
+     << "| replay valid | " << (report.status.ok() ? "yes" : "no") << " |\n"
      << "| replay collisions | " << report.collision_count << " |\n"
      << "| replay, simulated time | " << num(report.duration) << " s (" << report.steps << " steps, " << report.checks
      << " states checked) |\n"
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
   std::cout << md.str();
 
   if (!args.check) return 0;
-  bool ok = expect(report.ok && report.collision_count == 0, "the CMML replays valid, without a collision");
+  bool ok = expect(report.status.ok() && report.collision_count == 0, "the CMML replays valid, without a collision");
   ok &= expect(shape.six_faces && shape.face_error < 1e-9, "every net ends as a closed unit cube");
   ok &= expect(std::abs(shape.step - 1.0) < 1e-9 && shape.line_error < 1e-9, "the cubes lie in a straight line, face to face");
   return ok ? 0 : 1;

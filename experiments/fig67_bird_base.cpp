@@ -146,7 +146,7 @@ int main(int argc, char** argv) {
     const double e = system.max_error(s);
     const geometry::ProjectionResult near = geometry::project(system, s);
     if (e > peak) peak = e, peak_t = t;
-    straight_csv << num(t, 4) << ',' << num(e, 6) << ',' << (near.converged ? num(max_diff(near.state, s) * kDeg, 6) : "") << '\n';
+    straight_csv << num(t, 4) << ',' << num(e, 6) << ',' << (near.status.ok() ? num(max_diff(near.state, s) * kDeg, 6) : "") << '\n';
   }
   const geometry::FoldSequence straight = geometry::path_sequence(pattern, {target}, M_PI / 6, "bird base, all creases at once");
   simulation::SimulationOptions sync;
@@ -162,8 +162,8 @@ int main(int argc, char** argv) {
   for (int k = 1; k <= kMaxSteps; ++k) {
     const Eigen::VectorXd d = target.angles - at.angles;
     const geometry::ProjectionResult p = geometry::project(system, geometry::FoldState{at.angles + d * std::min(1.0, kStep / d.norm())});
-    if (!p.converged) {
-      stop = "projection failed: " + p.message;
+    if (!p.status.ok()) {
+      stop = "projection failed: " + p.status.message;
       break;
     }
     const double dist = (p.state.angles - target.angles).norm();
@@ -233,12 +233,12 @@ int main(int argc, char** argv) {
      << "| DOF at the flat-folded target (a singular state) | " << m_target.dof << " (rank " << m_target.rank << ") |\n"
      << "| all creases at once, in proportion: largest closure residual | " << num(peak, 3) << " rad (" << num(peak * kDeg, 3)
      << "°) at t = " << num(peak_t, 2) << " |\n"
-     << "| the same as one CMML event, simulated (sync) | " << (straight_sim.ok ? "valid" : "invalid") << ": max closure error "
+     << "| the same as one CMML event, simulated (sync) | " << (straight_sim.status.ok() ? "valid" : "invalid") << ": max closure error "
      << num(straight_sim.max_closure_error, 3) << " rad, " << straight_sim.collision_count << " crossings |\n"
      << "| rigid folding toward the target (" << path.size() << " closed states, steps ≤ " << num(largest_jump * kDeg, 2)
      << "° per crease) | stops " << num(reached_diff, 3) << "° from the target (largest crease difference): " << stop << " |\n"
      << "| its largest closure error | " << num(worst_closure, 2) << " rad |\n"
-     << "| its replay (" << rigid.events.size() << " events, sync) | " << (rigid_sim.ok ? "valid" : "invalid") << ", max closure error "
+     << "| its replay (" << rigid.events.size() << " events, sync) | " << (rigid_sim.status.ok() ? "valid" : "invalid") << ", max closure error "
      << num(rigid_sim.max_closure_error, 2) << " rad; " << rigid_sim.collision_count << " crossings";
   if (first_collision >= 0)
     md << ", the first at state " << first_collision + 1 << " (facets " << crossing_pair << ", "
@@ -248,7 +248,7 @@ int main(int argc, char** argv) {
   md << " |\n"
      << "| `robbykraft_Origami__bird-base-3d.fold`: its fold angles (" << distinct_deg(*second.state)
      << " °) | closure residual " << num(second_error, 3) << " rad: not a rigid state; nearest closed state "
-     << (second_near.converged ? num(max_diff(second_near.state, *second.state) * kDeg, 3) + "° away" : "not found") << " |\n\n"
+     << (second_near.status.ok() ? num(max_diff(second_near.state, *second.state) * kDeg, 3) + "° away" : "not found") << " |\n\n"
      << "Remarks. Folding every crease in proportion (what a one-event CMML with matched velocities does) is not a rigid motion: "
      << "the loops open by up to " << num(peak * kDeg, 3) << "° halfway. Letting the creases move out of proportion, a path of closed states "
      << "exists from flat (" << m_flat.dof << " DOF) through states of " << dof_min << " DOF to within " << num(reached_diff, 2)
@@ -295,13 +295,13 @@ int main(int argc, char** argv) {
   if (!args.check) return 0;
   bool ok = experiments::expect(m_flat.dof == 10 && dof_min == 5 && dof_max == 5 && m_target.dof == 9,
                                 "DOF 10 flat, 5 along the rigid folding, 9 at the flat-folded target");
-  ok &= experiments::expect(peak > 1.2 && peak < 1.3 && std::abs(peak_t - 0.5) < 1e-9 && !straight_sim.ok,
+  ok &= experiments::expect(peak > 1.2 && peak < 1.3 && std::abs(peak_t - 0.5) < 1e-9 && !straight_sim.status.ok(),
                             "straight folding: closure residual peaks at 1.2-1.3 rad halfway, simulator says invalid");
   ok &= experiments::expect(worst_closure < 1e-9 && largest_jump < 0.01 && reached_diff < 0.5,
                             "rigid folding: closed states, small steps, within 0.5° of the flat-folded base");
   ok &= experiments::expect(first_collision > 0 && free_diff > 5 && free_diff < 15 && rigid_sim.max_closure_error < 1e-3,
                             "rigid folding crossing-free until 5-15° before flat-folded, closure kept on replay");
   ok &= experiments::expect(crossing_confirmed, "the first crossing confirmed by the segment-triangle test (and absent one state before)");
-  ok &= experiments::expect(second_error > 0.3 && second_near.converged, "second file's angles are not closed; a nearest closed state exists");
+  ok &= experiments::expect(second_error > 0.3 && second_near.status.ok(), "second file's angles are not closed; a nearest closed state exists");
   return ok ? 0 : 1;
 }

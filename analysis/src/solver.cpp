@@ -12,6 +12,7 @@ namespace {
 
 using Sparse = Eigen::SparseMatrix<double>;
 using Eigen::VectorXd;
+using geometry::StatusCode;
 
 bool finite(const VectorXd& v) { return v.allFinite(); }
 
@@ -154,7 +155,7 @@ SolveResult solve(const Problem& problem, const SolveOptions& options) {
   VectorXd x = VectorXd::Zero(sys.size());
   ScaledLU lu;
   if (sys.size() == 0) {
-    out.converged = true;
+    out.status = {StatusCode::Success, "no free module: nothing to solve"};
   } else if (options.linear) {
     if (lu.factor(sys.tangent(x, 1.0, false))) {
       const VectorXd r0 = sys.residual(x, 1.0);
@@ -164,10 +165,10 @@ SolveResult solve(const Problem& problem, const SolveOptions& options) {
       out.residual_norm = lin.lpNorm<Eigen::Infinity>();
       out.residual_floor = sys.residual_floor(x);
       // Judged at the solution: the floor grows with the displacements the load produced.
-      out.converged = finite(x) && std::isfinite(out.residual_norm) &&
-                      out.residual_norm <= std::max({tol, out.residual_floor, 1e-8});
+      if (finite(x) && std::isfinite(out.residual_norm) && out.residual_norm <= std::max({tol, out.residual_floor, 1e-8}))
+        out.status = {StatusCode::Success, "linear solution"};
     }
-    out.message = out.converged ? "linear solution" : "the linear system is singular or ill-conditioned";
+    if (!out.status) out.status = {StatusCode::Singular, "the linear system is singular or ill-conditioned"};
   } else {
     Newton newton{sys, options, lu, options.tolerance};
     double lambda = 0.0, step = 1.0;
@@ -195,21 +196,24 @@ SolveResult solve(const Problem& problem, const SolveOptions& options) {
       }
     }
     out.iterations = newton.iterations;
-    out.converged = !failed;
     const VectorXd r = sys.residual(x, lambda);
     out.residual_norm = r.lpNorm<Eigen::Infinity>();
     out.residual_floor = sys.residual_floor(x);
-    out.message = out.converged ? "converged" : "did not converge: reached " + std::to_string(lambda) + " of the load";
-    if (out.converged && options.estimate_condition && lu.factor(sys.tangent(x, 1.0))) out.condition_estimate = lu.condition();
+    if (!failed)
+      out.status = {StatusCode::Success, "converged"};
+    else
+      out.status = {newton.iterations >= options.max_total_iterations ? StatusCode::LimitReached : StatusCode::NoProgress,
+                    "did not converge: reached " + std::to_string(lambda) + " of the load"};
+    if (out.status && options.estimate_condition && lu.factor(sys.tangent(x, 1.0))) out.condition_estimate = lu.condition();
   }
-  if (options.linear && out.converged && options.estimate_condition) out.condition_estimate = lu.condition();
+  if (options.linear && out.status && options.estimate_condition) out.condition_estimate = lu.condition();
   const auto& modules = problem.structure.modules;
   for (std::size_t i = 0; i < modules.size(); ++i) {
     ModuleResult m;
     m.id = modules[i].id;
     const int k = sys.index_of(static_cast<int>(i));
     m.fixed = k < 0;
-    if (k >= 0 && out.converged) {
+    if (k >= 0 && out.status) {
       m.displacement = x.segment<3>(6 * k) * sys.length_unit();
       m.rotation = x.segment<3>(6 * k + 3);
     }

@@ -15,6 +15,7 @@ namespace foldkit::folding {
 namespace {
 
 using Vec = Eigen::Vector2d;
+using geometry::StatusCode;
 
 double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -225,7 +226,7 @@ constexpr int kFarProbes = 4;  // look 4, 16, 64 and 256 steps ahead
 
 }  // namespace
 
-CarpenterResult carpenter_planar(const PlanarChain& input, const CarpenterOptions& options) {
+CarpenterPlanarResult carpenter_planar(const PlanarChain& input, const CarpenterPlanarOptions& options) {
   check_simple_chain(input);
   const auto start = std::chrono::steady_clock::now();
   const bool closed = input.closed;
@@ -234,7 +235,7 @@ CarpenterResult carpenter_planar(const PlanarChain& input, const CarpenterOption
   for (double l : chain.length()) mean_bar += l;
   mean_bar /= chain.bars();
 
-  CarpenterResult result;
+  CarpenterPlanarResult result;
   result.closed = closed;
   double min_growth = std::numeric_limits<double>::infinity();
   Frame2 last_recorded;
@@ -279,7 +280,7 @@ CarpenterResult carpenter_planar(const PlanarChain& input, const CarpenterOption
   bool monotone_failed = false;  // the closed-form straightening was tried and a check failed
   while (!finished(chain)) {
     if (result.steps >= options.max_steps) {
-      result.stop_reason = "stopped after " + std::to_string(options.max_steps) + " steps";
+      result.status = {StatusCode::LimitReached, "stopped after " + std::to_string(options.max_steps) + " steps"};
       break;
     }
     if (!closed && !monotone_failed) {
@@ -338,12 +339,13 @@ CarpenterResult carpenter_planar(const PlanarChain& input, const CarpenterOption
     result.lp_solves += field.lp_solves;
     result.max_struts = std::max(result.max_struts, field.struts);
     if (!field.solved) {
-      result.stop_reason = "the expansive-motion LP failed at step " + std::to_string(result.steps) + " (" + field.status + ")";
+      result.status = {StatusCode::NoProgress,
+                       "the expansive-motion LP failed at step " + std::to_string(result.steps) + " (" + field.status + ")"};
       break;
     }
     if (!(field.t > 0.0)) {
-      result.stop_reason = "no strictly expansive motion found at step " + std::to_string(result.steps) +
-                           " (smallest weighted strut rate " + std::to_string(field.t) + ")";
+      result.status = {StatusCode::NoProgress, "no strictly expansive motion found at step " + std::to_string(result.steps) +
+                                                   " (smallest weighted strut rate " + std::to_string(field.t) + ")"};
       break;
     }
     carried.clear();
@@ -436,7 +438,7 @@ CarpenterResult carpenter_planar(const PlanarChain& input, const CarpenterOption
     const int halvings = std::max(0, attempts - 1 - free_halvings);
     turn_budget = halvings == 0 ? std::min(turn_budget * 1.5, options.max_turn) : turn_budget * std::pow(0.5, halvings);
     if (!accepted) {
-      result.stop_reason = "no step keeps every distance growing at step " + std::to_string(result.steps);
+      result.status = {StatusCode::NoProgress, "no step keeps every distance growing at step " + std::to_string(result.steps)};
       break;
     }
     chain.set_q(next);
@@ -454,7 +456,7 @@ CarpenterResult carpenter_planar(const PlanarChain& input, const CarpenterOption
     record_step();
   }
   if (!pending.empty()) record(pending);
-  result.done = finished(chain);
+  if (finished(chain)) result.status = {StatusCode::Success, closed ? "convex" : "straight"};
   result.min_distance_growth = std::isinf(min_growth) ? 0.0 : min_growth;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

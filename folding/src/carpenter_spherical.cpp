@@ -16,6 +16,7 @@ namespace foldkit::folding {
 
 using Eigen::Vector3d;
 using geometry::FoldState;
+using geometry::StatusCode;
 namespace sp = detail::spherical;
 
 namespace {
@@ -112,8 +113,8 @@ std::vector<Vector3d> crease_directions(const geometry::CreasePattern& pattern, 
   return u;
 }
 
-FlattenResult flatten_single_vertex(const geometry::CreasePattern& pattern, const FoldState& folded,
-                                    const SphericalOptions& options) {
+CarpenterSphericalResult flatten_single_vertex(const geometry::CreasePattern& pattern, const FoldState& folded,
+                                    const CarpenterSphericalOptions& options) {
   if (!(options.step > 0) || !(options.frame_step > 0) || !(options.flat_tolerance > 0) ||
       !(options.straight_tolerance > 0) || options.max_steps < 1 || !(options.velocity > 0))
     throw std::invalid_argument("spherical Carpenter's rule: step, frame_step, tolerances, max_steps and velocity must be positive");
@@ -141,7 +142,7 @@ FlattenResult flatten_single_vertex(const geometry::CreasePattern& pattern, cons
                                 " pass through each other): Carpenter's rule starts from a non-crossing state");
   }
 
-  FlattenResult result;
+  CarpenterSphericalResult result;
   result.joints = v.joints;
   FrameLog log(result.frames, options.frame_step);
   log.add(folded);
@@ -164,10 +165,9 @@ FlattenResult flatten_single_vertex(const geometry::CreasePattern& pattern, cons
   };
   record(folds);
 
-  const auto finish = [&](bool flat, std::string message) {
+  const auto finish = [&](StatusCode code, std::string message) {
     log.finish();
-    result.flat = flat;
-    result.message = std::move(message);
+    result.status = {code, std::move(message)};
     if (!std::isfinite(result.min_distance_growth)) result.min_distance_growth = 0.0;
     if (!std::isfinite(result.min_rate)) result.min_rate = 0.0;
     std::vector<FoldState> waypoints(result.frames.rbegin(), result.frames.rend());
@@ -190,12 +190,12 @@ FlattenResult flatten_single_vertex(const geometry::CreasePattern& pattern, cons
       record(zero);
       std::ostringstream m;
       m << "flat after " << step << " steps";
-      return finish(true, m.str());
+      return finish(StatusCode::Success, m.str());
     }
     if (step >= options.max_steps) {
       std::ostringstream m;
       m << "stopped after " << step << " steps (max_steps), largest fold angle still " << largest << " rad";
-      return finish(false, m.str());
+      return finish(StatusCode::LimitReached, m.str());
     }
     const sp::Velocity vel = poly.expansive_velocity();
     if (vel.status != sp::Velocity::Status::Ok || !(vel.rate > options.min_rate)) {
@@ -222,14 +222,14 @@ FlattenResult flatten_single_vertex(const geometry::CreasePattern& pattern, cons
             << " is folded flat (180 degrees), where opening it grows no distance to first order: start a little off 180 degrees";
           break;
         }
-      return finish(false, m.str());
+      return finish(StatusCode::NoProgress, m.str());
     }
     result.min_rate = std::min(result.min_rate, vel.rate);
     const sp::StepOutcome out = poly.advance(vel, options.step, options.frame_step, folds, options.straight_tolerance);
     if (!out.ok) {
       std::ostringstream m;
       m << "step " << step << " failed: " << out.message;
-      return finish(false, m.str());
+      return finish(StatusCode::NoProgress, m.str());
     }
     ++result.steps;
     result.min_distance_growth = std::min(result.min_distance_growth, out.min_growth);

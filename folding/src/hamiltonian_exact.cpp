@@ -8,6 +8,8 @@
 #include "hamiltonian_graph.hpp"
 
 namespace foldkit::folding::detail {
+
+using geometry::StatusCode;
 namespace {
 
 int colour(const Cell& c) {
@@ -175,8 +177,7 @@ class Search {
 
 HamiltonianResult none(std::string reason) {
   HamiltonianResult r;
-  r.verdict = Verdict::None;
-  r.reason = std::move(reason);
+  r.status = {StatusCode::NoSolution, std::move(reason)};
   return r;
 }
 
@@ -188,8 +189,8 @@ HamiltonianResult exact_search(const CellGraph& g, const ExactOptions& o) {
   if (n == 0) return none("the shape is empty");
   if (n > kMaxExactCells) {
     HamiltonianResult r;
-    r.verdict = Verdict::Unknown;
-    r.reason = "too large for the exact search (" + std::to_string(n) + " cells > " + std::to_string(kMaxExactCells) +
+    r.status.code = StatusCode::LimitReached;
+    r.status.message = "too large for the exact search (" + std::to_string(n) + " cells > " + std::to_string(kMaxExactCells) +
                "); use the refinement";
     return r;
   }
@@ -253,19 +254,18 @@ HamiltonianResult exact_search(const CellGraph& g, const ExactOptions& o) {
     const bool found = search.run(s);
     r.nodes = search.nodes();
     if (found) {
-      r.verdict = Verdict::Found;
+      r.status = {StatusCode::Success, std::string("Hamiltonian ") + (o.cycle ? "cycle" : "path") + " found"};
       r.cycle = o.cycle;
       for (const std::int32_t v : search.path()) r.path.push_back(g.cells[static_cast<std::size_t>(v)]);
       return r;
     }
     if (search.out_of_budget()) {
-      r.verdict = Verdict::Unknown;
-      r.reason = "node budget of " + std::to_string(o.node_budget) + " exhausted";
+      r.status = {StatusCode::LimitReached, "node budget of " + std::to_string(o.node_budget) + " exhausted"};
       return r;
     }
   }
-  r.verdict = Verdict::None;
-  r.reason = "exhausted search (" + std::to_string(r.nodes) + " nodes): no Hamiltonian " + (o.cycle ? "cycle" : "path");
+  r.status = {StatusCode::NoSolution,
+              "exhausted search (" + std::to_string(r.nodes) + " nodes): no Hamiltonian " + (o.cycle ? "cycle" : "path")};
   return r;
 }
 

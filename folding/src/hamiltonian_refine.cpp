@@ -131,7 +131,7 @@ class Refinement {
 
 HamiltonianResult refine_cycle(const CellGraph& g, const SpanningTree& tree, int dimension) {
   HamiltonianResult r;
-  r.verdict = Verdict::Found;
+  r.status = {geometry::StatusCode::Success, "Hamiltonian cycle of the refined shape found"};
   r.cycle = true;
   r.path = Refinement(g, tree.parent, dimension).build();
   return r;
@@ -147,18 +147,18 @@ HamiltonianResult refined(const std::vector<std::uint8_t>& cells, int nx, int ny
   std::size_t n = 0;
   for (const std::uint8_t c : cells) n += c != 0;
   if (n == 0) {
-    r.reason = "the shape is empty";
+    r.status = {geometry::StatusCode::NoSolution, "the shape is empty"};
     return r;
   }
   if (n > kMaxRefineCells) {
-    r.verdict = Verdict::Unknown;
-    r.reason = "too large to refine (" + std::to_string(n) + " cells > " + std::to_string(kMaxRefineCells) + ")";
+    r.status.code = geometry::StatusCode::LimitReached;
+    r.status.message = "too large to refine (" + std::to_string(n) + " cells > " + std::to_string(kMaxRefineCells) + ")";
     return r;
   }
   const detail::CellGraph g = detail::make_graph(cells, nx, ny, nz);
   const detail::SpanningTree tree = detail::spanning_tree(g);
   if (tree.components > 1) {
-    r.reason = "the shape is not connected (" + std::to_string(tree.components) + " components)";
+    r.status = {geometry::StatusCode::NoSolution, "the shape is not connected (" + std::to_string(tree.components) + " components)"};
     return r;
   }
   return detail::refine_cycle(g, tree, dimension);

@@ -263,16 +263,4 @@ VoxelShape refine(const VoxelShape& s) {
   return r;
 }
 
-const char* to_string(Verdict v) {
-  switch (v) {
-    case Verdict::Found:
-      return "found";
-    case Verdict::None:
-      return "none";
-    case Verdict::Unknown:
-      return "unknown";
-  }
-  return "unknown";
-}
-
 }  // namespace foldkit::folding

@@ -16,18 +16,7 @@
 namespace foldkit::folding {
 
 using geometry::FoldState;
-
-const char* to_string(FoldStop stop) {
-  switch (stop) {
-    case FoldStop::Reached: return "reached";
-    case FoldStop::Collision: return "collision";
-    case FoldStop::Singular: return "singular";
-    case FoldStop::NotRigidlyFoldable: return "not-rigidly-foldable";
-    case FoldStop::NoProgress: return "no-progress";
-    case FoldStop::StepLimit: return "step-limit";
-  }
-  return "unknown";
-}
+using geometry::StatusCode;
 
 Eigen::VectorXd assignment_velocity(const geometry::CreasePattern& pattern) {
   Eigen::VectorXd w = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(pattern.joints().size()));
@@ -129,7 +118,7 @@ class Folder {
     }
     const geometry::ProjectionResult p = geometry::project(system_, guess, po_);
     result_.newton_iterations += p.iterations;
-    return {p.state, p.converged && p.error <= opt_.closure_tolerance, p.iterations, p.error};
+    return {p.state, p.status.ok() && p.error <= opt_.closure_tolerance, p.iterations, p.error};
   }
 
   void run(const Eigen::VectorXd& desired) {
@@ -141,7 +130,7 @@ class Folder {
     if (checker_) checker_->crossing(states[0], states[0]);
 
     if (!lead_in(w)) return;
-    if (fraction_of(states.back()) >= target - 1e-12) return finish(FoldStop::Reached, "target reached");
+    if (fraction_of(states.back()) >= target - 1e-12) return finish(StatusCode::Success, "target reached");
 
     int reference_rank = -1;
     while (true) {
@@ -161,21 +150,21 @@ class Folder {
       std::ostringstream at;
       at << " at largest fold angle " << fraction_of(x) * 180.0 << " deg (step " << result_.steps << ")";
       if (reference_rank >= 0 && decision_.rank < reference_rank)
-        return finish(FoldStop::Singular, "the closure Jacobian drops rank from " + std::to_string(reference_rank) + " to " +
+        return finish(StatusCode::Singular, "the closure Jacobian drops rank from " + std::to_string(reference_rank) + " to " +
                                               std::to_string(decision_.rank) + at.str() + " (" + evidence() + "): a bifurcation");
       reference_rank = std::max(reference_rank, decision_.rank);
       if (suspect && decision_.smallest_kept < opt_.singular_ratio * decision_.sigma_max) {
         std::ostringstream out;
         out << "the closure Jacobian is nearly singular (smallest kept singular value " << decision_.smallest_kept / decision_.sigma_max
             << " of the largest)" << at.str();
-        return finish(FoldStop::Singular, out.str());
+        return finish(StatusCode::Singular, out.str());
       }
       const double vnorm = t.velocity.norm();
       const double cosine = vnorm > 0.0 ? t.velocity.dot(w) / (vnorm * w.norm()) : 0.0;
       if (!(cosine > 1e-6))
-        return finish(FoldStop::NoProgress, "the desired velocity has no component along the motions closure allows" + at.str());
+        return finish(StatusCode::NoProgress, "the desired velocity has no component along the motions closure allows" + at.str());
       if (result_.steps >= opt_.max_steps)
-        return finish(FoldStop::StepLimit, "stopped after " + std::to_string(opt_.max_steps) + " steps" + at.str());
+        return finish(StatusCode::LimitReached, "stopped after " + std::to_string(opt_.max_steps) + " steps" + at.str());
       const Eigen::VectorXd v = t.velocity / t.velocity.cwiseAbs().maxCoeff();
 
       double h = opt_.max_step;
@@ -186,7 +175,7 @@ class Folder {
         why = check_step(x, FoldState{x.angles + h * v}, next, h);
         if (why.empty()) break;
         h *= 0.5;
-        if (h < opt_.max_step / 64) return finish(FoldStop::Singular, why + at.str());
+        if (h < opt_.max_step / 64) return finish(StatusCode::Singular, why + at.str());
       }
       bool reached = false;
       if (fraction_of(next.state) >= target) {
@@ -194,7 +183,7 @@ class Folder {
         reached = true;
       }
       if (!accept(x, next)) return;
-      if (reached) return finish(FoldStop::Reached, "target reached");
+      if (reached) return finish(StatusCode::Success, "target reached");
     }
   }
 
@@ -219,11 +208,11 @@ class Folder {
             << " rad (signs kept) keeps " << kept * 100.0 << "% of that amplitude (at least 25% needed";
         if (!c.ok) out << "; the projection did not converge, error " << c.error << " rad";
         out << "), so the sheet does not fold rigidly this way";
-        finish(FoldStop::NotRigidlyFoldable, out.str());
+        finish(StatusCode::NotRigidlyFoldable, out.str());
         return false;
       }
       if ((c.state.angles - result_.states.back().angles).cwiseAbs().maxCoeff() > 2.0 * opt_.max_step) {
-        finish(FoldStop::Singular, "the way out of the flat state jumps between branches at amplitude " + std::to_string(s) + " rad");
+        finish(StatusCode::Singular, "the way out of the flat state jumps between branches at amplitude " + std::to_string(s) + " rad");
         return false;
       }
       if (!accept(result_.states.back(), c)) return false;
@@ -272,7 +261,7 @@ class Folder {
     if (checker_) {
       const std::string what = checker_->crossing(x, next.state);
       if (!what.empty()) {
-        finish(FoldStop::Collision, "the next step collides: " + what);
+        finish(StatusCode::Collision, "the next step collides: " + what);
         return false;
       }
     }
@@ -303,10 +292,7 @@ class Folder {
     return out.str();
   }
 
-  void finish(FoldStop stop, const std::string& message) {
-    result_.stop = stop;
-    result_.message = message;
-  }
+  void finish(StatusCode code, const std::string& message) { result_.status = {code, message}; }
 
   const geometry::CreasePattern& pattern_;
   const ProjectedFoldingOptions& opt_;
@@ -357,9 +343,8 @@ ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, co
     so.collisions = options.collisions;
     so.progress = options.progress;
     result.replay = simulation::simulate(pattern, result.sequence, so);
-    if (!result.replay->ok)
-      result.message += "; the simulator rejects the CMML: " +
-                        (result.replay->problems.empty() ? std::string("invalid") : result.replay->problems.front());
+    // The fold's own status stands (it says how far the folding got); the message adds the replay's verdict.
+    if (!result.replay->status) result.status.message += "; the simulator rejects the CMML: " + result.replay->status.message;
   }
   return result;
 }

@@ -22,7 +22,7 @@ std::optional<std::vector<FoldState>> densify(const ClosureSystem& system, const
     for (int k = 1; k < parts; ++k) {
       const FoldState line{a.angles + (static_cast<double>(k) / parts) * (b.angles - a.angles)};
       const ProjectionResult p = project(system, line, po);
-      if (!p.converged || (p.state.angles - line.angles).cwiseAbs().maxCoeff() > 0.5 * max_step) return std::nullopt;
+      if (!p.status.ok() || (p.state.angles - line.angles).cwiseAbs().maxCoeff() > 0.5 * max_step) return std::nullopt;
       out.push_back(p.state);
     }
     out.push_back(b);
@@ -47,7 +47,7 @@ std::vector<FoldState> lead_in(const ClosureSystem& system, const FoldState& sta
     bool ok = true;
     for (int k = 1; k <= parts && ok; ++k) {
       const ProjectionResult p = project(system, FoldState{start.angles + (scale * k / parts) * dir}, po);
-      ok = p.converged;
+      ok = p.status.ok();
       pts.push_back(p.state);
     }
     if (!ok || mobility(system, pts.back()).rank < rank) continue;
@@ -80,8 +80,8 @@ std::optional<FoldState> goal_from_angles(const ClosureSystem& system, const std
     o.held[static_cast<std::size_t>(j)] = true;
   }
   const ProjectionResult r = project(system, rough, o);
-  if (!r.converged) {
-    why = r.message;
+  if (!r.status.ok()) {
+    why = r.status.message;
     return std::nullopt;
   }
   return r.state;

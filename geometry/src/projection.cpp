@@ -28,7 +28,7 @@ ProjectionResult project(const ClosureSystem& system, const FoldState& start, co
   Eigen::VectorXd& x = out.state.angles;
   for (Eigen::Index i = 0; i < x.size(); ++i)
     if (!std::isfinite(x[i])) {
-      out.message = "the start state has a non-finite angle";
+      out.status = {StatusCode::InvalidInput, "the start state has a non-finite angle"};
       out.error = std::numeric_limits<double>::infinity();
       return out;
     }
@@ -50,7 +50,7 @@ ProjectionResult project(const ClosureSystem& system, const FoldState& start, co
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
   while (out.error > options.tolerance) {
     if (out.iterations >= options.max_iterations) {
-      out.message = "no convergence in " + std::to_string(options.max_iterations) + " iterations";
+      out.status = {StatusCode::LimitReached, "no convergence in " + std::to_string(options.max_iterations) + " iterations"};
       return out;
     }
     ++out.iterations;
@@ -77,15 +77,14 @@ ProjectionResult project(const ClosureSystem& system, const FoldState& start, co
       }
     }
     if (!improved) {
-      out.message = "stuck: no step reduces the residual (a local minimum off the closure manifold)";
+      out.status = {StatusCode::NoProgress, "stuck: no step reduces the residual (a local minimum off the closure manifold)"};
       out.error = system.max_error(out.state);
       return out;
     }
     evaluate();
     out.error = system.max_error(out.state);
   }
-  out.converged = true;
-  out.message = "converged";
+  out.status = {StatusCode::Success, "converged"};
   return out;
 }
 

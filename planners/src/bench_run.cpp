@@ -67,7 +67,7 @@ PathMetrics measure_path(const BenchScene& scene, const std::vector<FoldState>& 
   so.collisions = true;
   const simulation::SimulationReport replay = simulation::simulate(p, seq, so);
   m.replay_collisions = replay.collision_count;
-  m.replay_ok = replay.ok;
+  m.replay_ok = replay.status.ok();
   return m;
 }
 

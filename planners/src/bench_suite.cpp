@@ -90,7 +90,7 @@ FoldState projected_goal(const PlanRequest& req, std::mt19937& rng, Guess guess,
     FoldState goal{g};
     if (system.rows() > 0) {
       const auto r = geometry::project(system, goal, po);
-      if (!r.converged) continue;
+      if (!r.status.ok()) continue;
       goal = r.state;
     }
     if (!bounds.contains(goal, 1e-9) || !validity.valid(goal)) continue;
@@ -208,7 +208,7 @@ BenchScene make_bench_scene(const std::string& name, unsigned int seed) {
     geometry::ProjectionOptions po;
     po.tolerance = 1e-12;
     const auto r = geometry::project(geometry::ClosureSystem(*s.pattern), FoldState{guess}, po);
-    if (!r.converged) throw std::runtime_error("bench: the corner-cube goal does not close: " + r.message);
+    if (!r.status.ok()) throw std::runtime_error("bench: the corner-cube goal does not close: " + r.status.message);
     s.request.goal = r.state;
     return s;
   }

@@ -117,11 +117,11 @@ const std::vector<Method>& methods() {
       // Carpenter's rule on the sphere (single vertices): the goal flattened, the frames reversed.
       {"SphericalCarpenter",
        [](const DeterministicProblem& p, const ob::PlannerTerminationCondition&) -> std::vector<FoldState> {
-         folding::SphericalOptions o;
+         folding::CarpenterSphericalOptions o;
          o.frame_step = p.step;
          try {
-           const folding::FlattenResult r = folding::flatten_single_vertex(*p.pattern, p.goal, o);
-           if (!r.flat) return {};
+           const folding::CarpenterSphericalResult r = folding::flatten_single_vertex(*p.pattern, p.goal, o);
+           if (!r.status.ok()) return {};
            return from_flat(p, std::vector<FoldState>(r.frames.rbegin(), r.frames.rend()));
          } catch (const std::invalid_argument&) {
            return {};

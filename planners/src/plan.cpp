@@ -242,7 +242,7 @@ PlanResult plan(const PlanRequest& req) {
   result.planner = req.planner;
   result.space = setup.space_name;
   if (!setup.blocked.empty()) {
-    result.message = setup.blocked;
+    result.status = {geometry::StatusCode::Collision, setup.blocked};
     return result;
   }
 
@@ -257,7 +257,7 @@ PlanResult plan(const PlanRequest& req) {
                                                  ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition())));
   result.time = elapsed(t0);
   if (status != ob::PlannerStatus::EXACT_SOLUTION) {
-    result.message = "no plan found within " + std::to_string(req.time) + " s";
+    result.status = {geometry::StatusCode::LimitReached, "no plan found within " + std::to_string(req.time) + " s"};
     return result;
   }
   og::PathGeometric path = ss.getSolutionPath();
@@ -266,8 +266,12 @@ PlanResult plan(const PlanRequest& req) {
     simplifier.reduceVertices(path);
     simplifier.shortcutPath(path);
   }
-  const auto dense = path_waypoints(setup, path, req, true, &result.message);
-  if (!dense) return result;
+  std::string why;
+  const auto dense = path_waypoints(setup, path, req, true, &why);
+  if (!dense) {
+    result.status = {geometry::StatusCode::ClosureViolated, why};
+    return result;
+  }
   // Every path is checked: closed everywhere, no jumps, from the start to the goal.
   result.waypoints = *dense;
   for (std::size_t i = 0; i < result.waypoints.size(); ++i) {
@@ -275,7 +279,8 @@ PlanResult plan(const PlanRequest& req) {
     if (i > 0) result.path_length += (result.waypoints[i].angles - result.waypoints[i - 1].angles).norm();
   }
   if (result.max_closure_error > 1e-6) {
-    result.message = "the planned path is not closed (error " + std::to_string(result.max_closure_error) + " rad)";
+    result.status = {geometry::StatusCode::ClosureViolated,
+                     "the planned path is not closed (error " + std::to_string(result.max_closure_error) + " rad)"};
     return result;
   }
 
@@ -286,14 +291,12 @@ PlanResult plan(const PlanRequest& req) {
     so.progress = req.progress;
     result.replay = simulation::simulate(pattern, result.sequence, so);
     result.max_closure_error = std::max(result.max_closure_error, result.replay->max_closure_error);
-    if (!result.replay->ok) {
-      result.message = "the simulator rejects the plan: " +
-                       (result.replay->problems.empty() ? std::string("invalid") : result.replay->problems.front());
+    if (!result.replay->status) {
+      result.status = {result.replay->status.code, "the simulator rejects the plan: " + result.replay->status.message};
       return result;
     }
   }
-  result.solved = true;
-  result.message = "solved";
+  result.status = {geometry::StatusCode::Success, "solved"};
   return result;
 }
 

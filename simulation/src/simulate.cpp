@@ -119,13 +119,13 @@ class Replay {
       current_->end = time_;
       if (!motion.reached()) {
         current_->reached = false;
-        problem("event " + std::to_string(event.number) + ": " + motion.failure());
+        problem(geometry::StatusCode::LimitReached, "event " + std::to_string(event.number) + ": " + motion.failure());
       }
       if (!options_.record_frames || report_.steps == steps_before) frame(state, event.number);
     }
     report_.duration = time_;
     report_.final_state = state;
-    report_.ok = report_.problems.empty();
+    if (report_.problems.empty()) report_.status = {geometry::StatusCode::Success, "valid"};
     return std::move(report_);
   }
 
@@ -174,7 +174,7 @@ class Replay {
       std::ostringstream s;
       s << "event " << event << ": closure error " << error << " rad at t = " << seconds(t) << " exceeds the tolerance "
         << options_.closure_tolerance << " rad";
-      problem(s.str());
+      problem(geometry::StatusCode::ClosureViolated, s.str());
     }
     if (!world_) return;
     const std::vector<Crossing> crossings = world_->check(poses, state);
@@ -190,7 +190,7 @@ class Replay {
           closed = geometry::project(closure_, state);
           closed_poses = geometry::facet_poses(pattern_, tree_, closed->state);
         }
-        if (closed->converged) {
+        if (closed->status) {
           const auto again = world_->mesh_crossing(c.actors[0], c.actors[1], closed_poses, closed->state);
           found.closed_depth = again ? again->depth : 0.0;
         }
@@ -209,7 +209,7 @@ class Replay {
           << to_string(c.kind);
         if (c.kind == CrossingKind::Mesh) s << ", depth " << c.depth << ", closure error " << error << " rad";
         s << ")";
-        problem(s.str());
+        problem(geometry::StatusCode::Collision, s.str());
       }
       if (report_.collisions.size() < options_.max_collisions) report_.collisions.push_back(std::move(found));
     }
@@ -219,7 +219,11 @@ class Replay {
   static constexpr double kClosedEnough = 1e-9;
 
   void frame(const geometry::FoldState& state, int event) { report_.frames.push_back({time_, event, state}); }
-  void problem(std::string what) { report_.problems.push_back(std::move(what)); }
+  // The first problem decides the status; every one is listed.
+  void problem(geometry::StatusCode code, std::string what) {
+    if (report_.problems.empty()) report_.status = {code, what};
+    report_.problems.push_back(std::move(what));
+  }
 
   const geometry::CreasePattern& pattern_;
   const SimulationOptions& options_;

@@ -37,7 +37,7 @@ Case make_case() {
   geo::ProjectionOptions po;
   po.tolerance = 1e-12;
   const auto r = geo::project(geo::ClosureSystem(p), geo::FoldState{guess}, po);
-  EXPECT_TRUE(r.converged);
+  EXPECT_TRUE(r.status.ok());
   c.goal = c.dir + "/goal.cmml";
   std::ofstream(c.goal) << foldkit::io::write_cmml(geo::sequence_to(p, r.state, 0.5));
   c.bad_goal = c.dir + "/open.cmml";

@@ -144,12 +144,12 @@ TEST(AtScale, RenumberedActorsGiveTheSameVerdicts) {
   folding::ProjectedFoldingOptions o;
   o.target_fraction = 0.95;
   const auto a = folding::fold_projected(p, o), b = folding::fold_projected(q, o);
-  EXPECT_EQ(a.stop, folding::FoldStop::Reached) << a.message;
-  EXPECT_EQ(b.stop, a.stop) << b.message;
+  EXPECT_EQ(a.status.code, geometry::StatusCode::Success) << a.status.message;
+  EXPECT_EQ(b.status.code, a.status.code) << b.status.message;
   EXPECT_EQ(a.steps, b.steps);
   ASSERT_TRUE(a.replay && b.replay);
-  EXPECT_TRUE(a.replay->ok);
-  EXPECT_EQ(b.replay->ok, a.replay->ok);
+  EXPECT_TRUE(a.replay->status.ok());
+  EXPECT_EQ(b.replay->status.ok(), a.replay->status.ok());
   EXPECT_EQ(b.replay->collision_count, a.replay->collision_count);
 }
 
@@ -162,13 +162,13 @@ void folds_to_095_and_replays_valid(int n) {
   folding::ProjectedFoldingOptions o;
   o.target_fraction = 0.95;
   const auto r = folding::fold_projected(p, o);
-  EXPECT_EQ(r.stop, folding::FoldStop::Reached) << n << ": " << r.message;
+  EXPECT_EQ(r.status.code, geometry::StatusCode::Success) << n << ": " << r.status.message;
   EXPECT_NEAR(r.fraction, 0.95, 1e-9);
   EXPECT_LE(r.max_closure_error, 1e-10);
   EXPECT_EQ(r.dof, 1) << n;
   EXPECT_GT(r.min_rank_gap, 1e3) << n;
   ASSERT_TRUE(r.replay);
-  EXPECT_TRUE(r.replay->ok) << n << ": " << (r.replay->problems.empty() ? "" : r.replay->problems.front());
+  EXPECT_TRUE(r.replay->status.ok()) << n << ": " << (r.replay->problems.empty() ? "" : r.replay->problems.front());
   EXPECT_EQ(r.replay->collision_count, 0u) << n;
 }
 
@@ -223,12 +223,12 @@ TEST(AtScale, Waterbomb20CurlsIntoATubeWhoseEndsMeet) {
   folding::ProjectedFoldingOptions o;
   o.target_fraction = 0.95;
   const auto r = folding::fold_projected(p, o);
-  ASSERT_EQ(r.stop, folding::FoldStop::Collision) << r.message;
+  ASSERT_EQ(r.status.code, geometry::StatusCode::Collision) << r.status.message;
   EXPECT_GT(r.fraction, 0.05);
   EXPECT_LT(r.fraction, 0.1);
   EXPECT_LE(r.max_closure_error, 1e-10);
   ASSERT_TRUE(r.replay);
-  EXPECT_TRUE(r.replay->ok) << (r.replay->problems.empty() ? "" : r.replay->problems.front());
+  EXPECT_TRUE(r.replay->status.ok()) << (r.replay->problems.empty() ? "" : r.replay->problems.front());
   EXPECT_EQ(r.replay->collision_count, 0u);
 
   // One more step of the same size, closed again.
@@ -237,7 +237,7 @@ TEST(AtScale, Waterbomb20CurlsIntoATubeWhoseEndsMeet) {
   const FoldState next{2.0 * last.angles - r.states[r.states.size() - 2].angles};
   const geometry::ClosureSystem sys(p);
   const geometry::ProjectionResult closed = geometry::project(sys, next);
-  ASSERT_TRUE(closed.converged) << closed.message;
+  ASSERT_TRUE(closed.status.ok()) << closed.status.message;
   simulation::CollisionWorld world(p);
   const auto found = world.check(geometry::facet_poses(p, geometry::make_tree(p), closed.state), closed.state);
   ASSERT_FALSE(found.empty());
@@ -263,17 +263,17 @@ TEST(AtScale, CubeSheet60FoldsIntoALineOfCubesAndReplaysValid) {
   const CreasePattern p = geometry::build_or_throw(gen::cube_sheet(cubes));
   const geometry::FoldSequence chain = folding::fold_cube_chain(p, cubes);
   const simulation::SimulationReport report = simulation::simulate(p, chain);
-  EXPECT_TRUE(report.ok) << (report.problems.empty() ? "" : report.problems.front());
+  EXPECT_TRUE(report.status.ok()) << (report.problems.empty() ? "" : report.problems.front());
   EXPECT_EQ(report.collision_count, 0u);
   EXPECT_EQ(report.events.size(), static_cast<std::size_t>(3 * cubes));
 
   folding::ProjectedFoldingOptions o;
   o.target_fraction = 0.95;
   const auto r = folding::fold_projected(p, o);
-  ASSERT_EQ(r.stop, folding::FoldStop::Collision) << r.message;
+  ASSERT_EQ(r.status.code, geometry::StatusCode::Collision) << r.status.message;
   EXPECT_LT(r.fraction, 0.05);
   ASSERT_TRUE(r.replay);
-  EXPECT_TRUE(r.replay->ok);
+  EXPECT_TRUE(r.replay->status.ok());
   const FoldState& last = r.states.back();
   const FoldState next{2.0 * last.angles - r.states[r.states.size() - 2].angles};
   simulation::CollisionWorld world(p);
@@ -306,12 +306,12 @@ TEST(AtScale, Miura60WithOneRowFoldedTheWrongWayIsInvalid) {
   }
   ASSERT_EQ(flipped, n - 1);
   const simulation::SimulationReport good = simulation::simulate(p, geometry::path_sequence(p, path, 1.0));
-  EXPECT_TRUE(good.ok) << (good.problems.empty() ? "" : good.problems.front());
+  EXPECT_TRUE(good.status.ok()) << (good.problems.empty() ? "" : good.problems.front());
   EXPECT_EQ(good.collision_count, 0u);
   EXPECT_LT(good.max_closure_error, 1e-3);
   path.push_back(wrong);
   const simulation::SimulationReport bad = simulation::simulate(p, geometry::path_sequence(p, path, 1.0));
-  EXPECT_FALSE(bad.ok);
+  EXPECT_FALSE(bad.status.ok());
   ASSERT_EQ(bad.events.size(), path.size());
   EXPECT_LT(bad.events[path.size() - 2].max_closure_error, 1e-3);
   EXPECT_GT(bad.events.back().max_closure_error, 0.1);

@@ -100,7 +100,7 @@ Frame2 random_polygon(int n, std::mt19937& rng) {
   return p;
 }
 
-void expect_valid_motion(const CarpenterResult& r, const Frame2& input, bool closed) {
+void expect_valid_motion(const CarpenterPlanarResult& r, const Frame2& input, bool closed) {
   ASSERT_GE(r.frames.size(), 1u);
   const std::size_t n = input.size(), bars = closed ? n : n - 1;
   double length_error = 0.0, growth = std::numeric_limits<double>::infinity();
@@ -128,8 +128,8 @@ TEST(CarpenterPlanar, RandomOpenChainsStraighten) {
     for (int trial = 0; trial < 3; ++trial) {
       const Frame2 input = random_chain(links, rng);
       SCOPED_TRACE("links " + std::to_string(links) + " trial " + std::to_string(trial));
-      const CarpenterResult r = carpenter_planar({input, false});
-      ASSERT_TRUE(r.done) << r.stop_reason;
+      const CarpenterPlanarResult r = carpenter_planar({input, false});
+      ASSERT_TRUE(r.status.ok()) << r.status.message;
       expect_valid_motion(r, input, false);
       for (double t : turning_angles(r.frames.back(), false)) EXPECT_NEAR(t, 0.0, 1e-9);
       EXPECT_TRUE(is_straight(r.frames.back()));
@@ -142,10 +142,10 @@ TEST(CarpenterPlanar, RandomOpenChainsStraighten) {
 TEST(CarpenterPlanar, TwoHundredLinkChainStraightens) {
   std::mt19937 rng(7);
   const Frame2 input = random_chain(200, rng);
-  CarpenterOptions options;
+  CarpenterPlanarOptions options;
   options.frame_stride = 8;  // keeps the frame-by-frame oracle affordable
-  const CarpenterResult r = carpenter_planar({input, false}, options);
-  ASSERT_TRUE(r.done) << r.stop_reason;
+  const CarpenterPlanarResult r = carpenter_planar({input, false}, options);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
   expect_valid_motion(r, input, false);
   EXPECT_TRUE(is_straight(r.frames.back()));
   // The end-to-end distance of a straight chain is its length.
@@ -161,8 +161,8 @@ TEST(CarpenterPlanar, TwoHundredLinkChainStraightens) {
 TEST(CarpenterPlanar, MonotoneChainsStraightenInClosedFormWithoutLps) {
   Frame2 zigzag;
   for (int i = 0; i <= 30; ++i) zigzag.emplace_back(i, (i % 2) * 0.8);  // turns ±2·atan(0.8) = ±1.35 rad
-  const CarpenterResult z = carpenter_planar({zigzag, false});
-  ASSERT_TRUE(z.done) << z.stop_reason;
+  const CarpenterPlanarResult z = carpenter_planar({zigzag, false});
+  ASSERT_TRUE(z.status.ok()) << z.status.message;
   expect_valid_motion(z, zigzag, false);
   EXPECT_TRUE(is_straight(z.frames.back()));
   EXPECT_EQ(z.lp_solves, 0u);
@@ -175,14 +175,14 @@ TEST(CarpenterPlanar, MonotoneChainsStraightenInClosedFormWithoutLps) {
     const double h = direction(rng);
     monotone.push_back(monotone.back() + length(rng) * Vec(std::cos(h), std::sin(h)));
   }
-  const CarpenterResult m = carpenter_planar({monotone, false});
-  ASSERT_TRUE(m.done) << m.stop_reason;
+  const CarpenterPlanarResult m = carpenter_planar({monotone, false});
+  ASSERT_TRUE(m.status.ok()) << m.status.message;
   expect_valid_motion(m, monotone, false);
   EXPECT_EQ(m.lp_solves, 0u);
 
   const Frame2 hook = {{0, 0}, {4, 0}, {4, 2}, {1, 2}, {1, 1.5}};  // directions 0, π/2, π, 3π/2
-  const CarpenterResult k = carpenter_planar({hook, false});
-  ASSERT_TRUE(k.done) << k.stop_reason;
+  const CarpenterPlanarResult k = carpenter_planar({hook, false});
+  ASSERT_TRUE(k.status.ok()) << k.status.message;
   expect_valid_motion(k, hook, false);
   EXPECT_GT(k.lp_solves, 0u);
 }
@@ -196,8 +196,8 @@ TEST(CarpenterPlanar, RandomSimplePolygonsConvexify) {
       SCOPED_TRACE("n " + std::to_string(n) + " trial " + std::to_string(trial));
       ASSERT_NO_THROW(check_simple_chain({input, true}));
       nonconvex += is_convex(input) ? 0 : 1;
-      const CarpenterResult r = carpenter_planar({input, true});
-      ASSERT_TRUE(r.done) << r.stop_reason;
+      const CarpenterPlanarResult r = carpenter_planar({input, true});
+      ASSERT_TRUE(r.status.ok()) << r.status.message;
       expect_valid_motion(r, input, true);
       // Convex by the turning angles recomputed here: all of one sign, summing to ±2π.
       double total = 0.0;
@@ -218,27 +218,27 @@ TEST(CarpenterPlanar, HandMadeCombPolygonConvexifies) {
   // A comb with three teeth: deep reflex vertices, far from star-shaped about its centre.
   const Frame2 input = {{0, 0}, {7, 0}, {7, 3}, {6, 3}, {6, 1}, {5, 1}, {5, 3}, {4, 3}, {4, 1}, {3, 1},
                         {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
-  const CarpenterResult r = carpenter_planar({input, true});
-  ASSERT_TRUE(r.done) << r.stop_reason;
+  const CarpenterPlanarResult r = carpenter_planar({input, true});
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
   expect_valid_motion(r, input, true);
   EXPECT_TRUE(is_convex(r.frames.back()));
 }
 
 TEST(CarpenterPlanar, StraightAndConvexInputsNeedNoStep) {
-  const CarpenterResult line = carpenter_planar({{{0, 0}, {1, 0}, {3, 0}, {4, 0}}, false});
-  EXPECT_TRUE(line.done);
+  const CarpenterPlanarResult line = carpenter_planar({{{0, 0}, {1, 0}, {3, 0}, {4, 0}}, false});
+  EXPECT_TRUE(line.status.ok());
   EXPECT_EQ(line.steps, 0u);
   EXPECT_EQ(line.frames.size(), 1u);
-  const CarpenterResult square = carpenter_planar({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, true});
-  EXPECT_TRUE(square.done);
+  const CarpenterPlanarResult square = carpenter_planar({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, true});
+  EXPECT_TRUE(square.status.ok());
   EXPECT_EQ(square.steps, 0u);
 }
 
 TEST(CarpenterPlanar, CollinearRunsOfALatticePathAreMergedNotMoved) {
   // An L-shaped staircase on the unit lattice: many joints exactly straight.
   const Frame2 input = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 3}, {0, 4}, {1, 4}, {2, 4}, {3, 4}};
-  const CarpenterResult r = carpenter_planar({input, false});
-  ASSERT_TRUE(r.done) << r.stop_reason;
+  const CarpenterPlanarResult r = carpenter_planar({input, false});
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
   expect_valid_motion(r, input, false);
   // Merged runs stay straight in every frame.
   for (const Frame2& p : r.frames) {
@@ -252,12 +252,12 @@ TEST(CarpenterPlanar, ConstraintGenerationNeedsFewerStrutsThanAllPairs) {
   // start: both straighten with valid motions, the first with fewer strut rows.
   std::mt19937 rng(5);
   const Frame2 input = random_chain(20, rng);
-  CarpenterOptions all;
+  CarpenterPlanarOptions all;
   all.all_struts = true;
-  const CarpenterResult a = carpenter_planar({input, false}, all);
-  const CarpenterResult g = carpenter_planar({input, false});
-  ASSERT_TRUE(a.done) << a.stop_reason;
-  ASSERT_TRUE(g.done) << g.stop_reason;
+  const CarpenterPlanarResult a = carpenter_planar({input, false}, all);
+  const CarpenterPlanarResult g = carpenter_planar({input, false});
+  ASSERT_TRUE(a.status.ok()) << a.status.message;
+  ASSERT_TRUE(g.status.ok()) << g.status.message;
   expect_valid_motion(a, input, false);
   expect_valid_motion(g, input, false);
   EXPECT_LT(g.max_struts, a.max_struts);
@@ -267,8 +267,8 @@ TEST(CarpenterPlanar, ConstraintGenerationNeedsFewerStrutsThanAllPairs) {
 TEST(CarpenterPlanar, ReversedFramesFoldFromStraight) {
   std::mt19937 rng(3);
   const Frame2 input = random_chain(12, rng);
-  const CarpenterResult r = carpenter_planar({input, false});
-  ASSERT_TRUE(r.done);
+  const CarpenterPlanarResult r = carpenter_planar({input, false});
+  ASSERT_TRUE(r.status.ok());
   const std::vector<Frame2> fold = reversed(r.frames);
   ASSERT_EQ(fold.size(), r.frames.size());
   EXPECT_TRUE(is_straight(fold.front()));

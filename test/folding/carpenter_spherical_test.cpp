@@ -24,9 +24,9 @@ using foldkit::geometry::build_or_throw;
 using foldkit::geometry::ClosureSystem;
 using foldkit::geometry::CreasePattern;
 using foldkit::geometry::FoldState;
-using foldkit::folding::FlattenResult;
+using foldkit::folding::CarpenterSphericalResult;
 using foldkit::folding::flatten_single_vertex;
-using foldkit::folding::SphericalOptions;
+using foldkit::folding::CarpenterSphericalOptions;
 
 // Unit direction of each crease (counter-clockwise) from the facet poses: the crease's far end
 // carried by one of its facets.
@@ -46,8 +46,8 @@ std::vector<Eigen::Vector3d> directions(const CreasePattern& p, const FoldState&
 
 double arc(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
 
-void expect_valid_flattening(const CreasePattern& p, const FoldState& folded, const FlattenResult& r) {
-  ASSERT_TRUE(r.flat) << r.message;
+void expect_valid_flattening(const CreasePattern& p, const FoldState& folded, const CarpenterSphericalResult& r) {
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_GE(r.frames.size(), 2u);
   EXPECT_LT((r.frames.front().angles - folded.angles).cwiseAbs().maxCoeff(), 1e-15);
   EXPECT_EQ(r.frames.back().angles.cwiseAbs().maxCoeff(), 0.0);
@@ -76,7 +76,7 @@ void expect_valid_flattening(const CreasePattern& p, const FoldState& folded, co
   EXPECT_LT(r.max_sector_error, 1e-9);
   // Folding = the frames reversed; the simulator replays it from flat without a crossing.
   const auto report = foldkit::simulation::simulate(p, r.folding);
-  EXPECT_TRUE(report.ok) << (report.problems.empty() ? std::string() : report.problems.front());
+  EXPECT_TRUE(report.status.ok()) << (report.problems.empty() ? std::string() : report.problems.front());
   EXPECT_TRUE(report.collisions.empty());
   EXPECT_LT((report.final_state.angles - folded.angles).cwiseAbs().maxCoeff(), 1e-9);
 }
@@ -109,7 +109,7 @@ TEST(CarpenterSpherical, RandomVerticesOfDegree4To12FlattenExpansively) {
       SCOPED_TRACE("degree " + std::to_string(n) + " sample " + std::to_string(k));
       const FoldState folded = random_folded(p, static_cast<unsigned>(1000 * n + k));
       ASSERT_LT(ClosureSystem(p).max_error(folded), 1e-9);
-      const FlattenResult r = flatten_single_vertex(p, folded);
+      const CarpenterSphericalResult r = flatten_single_vertex(p, folded);
       expect_valid_flattening(p, folded, r);
     }
   }
@@ -124,8 +124,8 @@ TEST(CarpenterSpherical, CornerCubeUnfoldsAndItsReverseFoldsTheCorner) {
   foldkit::geometry::ProjectionOptions po;
   po.tolerance = 1e-12;
   const auto goal = foldkit::geometry::project(ClosureSystem(p), FoldState{guess}, po);
-  ASSERT_TRUE(goal.converged);
-  const FlattenResult r = flatten_single_vertex(p, goal.state);
+  ASSERT_TRUE(goal.status.ok());
+  const CarpenterSphericalResult r = flatten_single_vertex(p, goal.state);
   expect_valid_flattening(p, goal.state, r);
   EXPECT_GT(r.steps, 0);
 }
@@ -165,9 +165,9 @@ TEST(CarpenterSpherical, RefusesWhatItCannotFlatten) {
   Eigen::VectorXd half(4);
   half << M_PI, 0.0, M_PI, 0.0;
   ASSERT_LT(ClosureSystem(miura_vertex).max_error(FoldState{half}), 1e-12);
-  const FlattenResult stacked = flatten_single_vertex(miura_vertex, FoldState{half});
-  EXPECT_FALSE(stacked.flat);
-  EXPECT_NE(stacked.message.find("folded flat"), std::string::npos) << stacked.message;
+  const CarpenterSphericalResult stacked = flatten_single_vertex(miura_vertex, FoldState{half});
+  EXPECT_FALSE(stacked.status.ok());
+  EXPECT_NE(stacked.status.message.find("folded flat"), std::string::npos) << stacked.status.message;
   // A state whose sectors cross (rejected by the FCL world too) is refused.
   const CreasePattern v5 = build_or_throw(gen::single_vertex({1.0, 1.2, 1.4, 1.3, 2 * M_PI - 4.9}));
   const foldkit::statespaces::SingleVertexChain chain(v5);
@@ -193,11 +193,11 @@ TEST(CarpenterSpherical, RefusesWhatItCannotFlatten) {
   // The step limit stops the method with a message (no endless loop).
   std::mt19937 rng(7);
   const CreasePattern v6 = build_or_throw(gen::single_vertex(foldkit::test::random_sectors(6, rng, 0.3)));
-  SphericalOptions one;
+  CarpenterSphericalOptions one;
   one.max_steps = 1;
-  const FlattenResult r = flatten_single_vertex(v6, random_folded(v6, 5), one);
-  EXPECT_FALSE(r.flat);
-  EXPECT_NE(r.message.find("max_steps"), std::string::npos) << r.message;
+  const CarpenterSphericalResult r = flatten_single_vertex(v6, random_folded(v6, 5), one);
+  EXPECT_FALSE(r.status.ok());
+  EXPECT_NE(r.status.message.find("max_steps"), std::string::npos) << r.status.message;
   EXPECT_EQ(r.steps, 1);
 }
 
@@ -205,8 +205,8 @@ TEST(CarpenterSpherical, RefusesWhatItCannotFlatten) {
 TEST(CarpenterSpherical, FlatInputIsAlreadyFlat) {
   std::mt19937 rng(3);
   const CreasePattern p = build_or_throw(gen::single_vertex(foldkit::test::random_sectors(7, rng, 0.3)));
-  const FlattenResult r = flatten_single_vertex(p, FoldState::flat(p));
-  EXPECT_TRUE(r.flat);
+  const CarpenterSphericalResult r = flatten_single_vertex(p, FoldState::flat(p));
+  EXPECT_TRUE(r.status.ok());
   EXPECT_EQ(r.steps, 0);
   EXPECT_EQ(r.frames.back().angles.cwiseAbs().maxCoeff(), 0.0);
 }

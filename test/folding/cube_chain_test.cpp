@@ -35,7 +35,7 @@ void expect_chain_of_cubes(int cubes) {
   const CreasePattern sheet = build_or_throw(foldkit::geometry::generators::cube_sheet(cubes));
   const auto sequence = fold_cube_chain(sheet, cubes);
   const auto report = foldkit::simulation::simulate(sheet, sequence);
-  EXPECT_TRUE(report.ok) << (report.problems.empty() ? std::string() : report.problems.front());
+  EXPECT_TRUE(report.status.ok()) << (report.problems.empty() ? std::string() : report.problems.front());
   EXPECT_EQ(report.collision_count, 0u);
   const auto poses = foldkit::geometry::facet_poses(sheet, foldkit::geometry::make_tree(sheet), report.final_state);
   std::vector<Eigen::Vector3d> centres;

@@ -19,6 +19,7 @@ namespace {
 
 using foldkit::io::ParseError;
 using namespace foldkit::folding;
+using foldkit::geometry::StatusCode;
 
 using Key = std::tuple<int, int, int>;
 
@@ -138,13 +139,13 @@ TEST(HamiltonianExact, RectangleHasCycleIffBothSidesAtLeastTwoAndAreaEven) {
       o.cycle = true;
       const HamiltonianResult c = exact_hamiltonian(s, o);
       const bool expected = w >= 2 && h >= 2 && (w * h) % 2 == 0;
-      ASSERT_NE(c.verdict, Verdict::Unknown) << w << "x" << h;
-      EXPECT_EQ(c.verdict == Verdict::Found, expected) << w << "x" << h << ": " << c.reason;
+      ASSERT_NE(c.status.code, StatusCode::LimitReached) << w << "x" << h;
+      EXPECT_EQ(c.status.code == StatusCode::Success, expected) << w << "x" << h << ": " << c.status.message;
       if (expected) {
         EXPECT_EQ(check_path(cells_of(s), c.path, true), "") << w << "x" << h;
       }
       const HamiltonianResult p = exact_hamiltonian(s);
-      ASSERT_EQ(p.verdict, Verdict::Found) << w << "x" << h << ": " << p.reason;
+      ASSERT_EQ(p.status.code, StatusCode::Success) << w << "x" << h << ": " << p.status.message;
       EXPECT_EQ(check_path(cells_of(s), p.path, false), "") << w << "x" << h;
     }
 }
@@ -152,7 +153,7 @@ TEST(HamiltonianExact, RectangleHasCycleIffBothSidesAtLeastTwoAndAreaEven) {
 TEST(HamiltonianExact, ThreeByThreeStartsOnlyOnTheCornerAndCentreColour) {
   const PixelShape s = rectangle(3, 3);
   const HamiltonianResult any = exact_hamiltonian(s);
-  ASSERT_EQ(any.verdict, Verdict::Found);
+  ASSERT_EQ(any.status.code, StatusCode::Success);
   EXPECT_EQ((any.path.front().x + any.path.front().y) % 2, 0);
   EXPECT_EQ((any.path.back().x + any.path.back().y) % 2, 0);
   for (int y = 0; y < 3; ++y)
@@ -161,12 +162,12 @@ TEST(HamiltonianExact, ThreeByThreeStartsOnlyOnTheCornerAndCentreColour) {
       o.start = Cell{x, y, 0};
       const HamiltonianResult r = exact_hamiltonian(s, o);
       if ((x + y) % 2 == 0) {
-        ASSERT_EQ(r.verdict, Verdict::Found) << x << "," << y;
+        ASSERT_EQ(r.status.code, StatusCode::Success) << x << "," << y;
         EXPECT_EQ(r.path.front(), (Cell{x, y, 0}));
         EXPECT_EQ(check_path(cells_of(s), r.path, false), "");
       } else {
-        EXPECT_EQ(r.verdict, Verdict::None);
-        EXPECT_NE(r.reason.find("parity"), std::string::npos) << r.reason;
+        EXPECT_EQ(r.status.code, StatusCode::NoSolution);
+        EXPECT_NE(r.status.message.find("parity"), std::string::npos) << r.status.message;
       }
     }
 }
@@ -174,16 +175,16 @@ TEST(HamiltonianExact, ThreeByThreeStartsOnlyOnTheCornerAndCentreColour) {
 TEST(HamiltonianExact, PlusPentominoHasNoPathForItsFourLeaves) {
   const PixelShape plus = parse_pixel_grid(".#.\n###\n.#.\n", "plus.txt");
   const HamiltonianResult r = exact_hamiltonian(plus);
-  EXPECT_EQ(r.verdict, Verdict::None);
-  EXPECT_NE(r.reason.find("4 cells of degree 1"), std::string::npos) << r.reason;
+  EXPECT_EQ(r.status.code, StatusCode::NoSolution);
+  EXPECT_NE(r.status.message.find("4 cells of degree 1"), std::string::npos) << r.status.message;
 }
 
 TEST(HamiltonianExact, ColourImbalanceIsReported) {
   // A comb of 8 cells: 5 even and 3 odd.
   const PixelShape s = parse_pixel_grid("#.#.#\n#####\n", "comb.txt");
   const HamiltonianResult r = exact_hamiltonian(s);
-  EXPECT_EQ(r.verdict, Verdict::None);
-  EXPECT_NE(r.reason.find("parity: 5 even and 3 odd"), std::string::npos) << r.reason;
+  EXPECT_EQ(r.status.code, StatusCode::NoSolution);
+  EXPECT_NE(r.status.message.find("parity: 5 even and 3 odd"), std::string::npos) << r.status.message;
 }
 
 TEST(HamiltonianExact, AgreesWithBruteForceOnTinyShapes) {
@@ -198,9 +199,9 @@ TEST(HamiltonianExact, AgreesWithBruteForceOnTinyShapes) {
       o.cycle = cycle;
       const HamiltonianResult r =
           dims == 2 ? exact_hamiltonian(from_cells(cells), o) : exact_hamiltonian(voxels_from_cells(cells), o);
-      ASSERT_NE(r.verdict, Verdict::Unknown) << r.reason;
+      ASSERT_NE(r.status.code, StatusCode::LimitReached) << r.status.message;
       const bool expected = brute_force(cells, cycle);
-      ASSERT_EQ(r.verdict == Verdict::Found, expected) << "trial " << trial << " cycle " << cycle << ": " << r.reason;
+      ASSERT_EQ(r.status.code == StatusCode::Success, expected) << "trial " << trial << " cycle " << cycle << ": " << r.status.message;
       if (expected) {
         // Positions are relative to the bounding box; the checker runs in the same frame.
         const std::set<Key> framed = dims == 2 ? cells_of(from_cells(cells)) : cells_of(voxels_from_cells(cells));
@@ -216,20 +217,20 @@ TEST(HamiltonianExact, AgreesWithBruteForceOnTinyShapes) {
 TEST(HamiltonianExact, BudgetAndSizeLimitsGiveUnknown) {
   ExactOptions o;
   o.node_budget = 3;
-  EXPECT_EQ(exact_hamiltonian(rectangle(5, 5), o).verdict, Verdict::Unknown);
+  EXPECT_EQ(exact_hamiltonian(rectangle(5, 5), o).status.code, StatusCode::LimitReached);
   const HamiltonianResult big = exact_hamiltonian(rectangle(40, 40));
-  EXPECT_EQ(big.verdict, Verdict::Unknown);
-  EXPECT_NE(big.reason.find("too large"), std::string::npos);
+  EXPECT_EQ(big.status.code, StatusCode::LimitReached);
+  EXPECT_NE(big.status.message.find("too large"), std::string::npos);
 }
 
 TEST(HamiltonianExact, DisconnectedShapeIsNotConnected) {
   const PixelShape s = parse_pixel_grid("##.#\n", "two.txt");
   const HamiltonianResult r = exact_hamiltonian(s);
-  EXPECT_EQ(r.verdict, Verdict::None);
-  EXPECT_NE(r.reason.find("not connected (2 components)"), std::string::npos) << r.reason;
+  EXPECT_EQ(r.status.code, StatusCode::NoSolution);
+  EXPECT_NE(r.status.message.find("not connected (2 components)"), std::string::npos) << r.status.message;
   const HamiltonianResult f = refined_hamiltonian_cycle(s);
-  EXPECT_EQ(f.verdict, Verdict::None);
-  EXPECT_NE(f.reason.find("not connected"), std::string::npos) << f.reason;
+  EXPECT_EQ(f.status.code, StatusCode::NoSolution);
+  EXPECT_NE(f.status.message.find("not connected"), std::string::npos) << f.status.message;
 }
 
 TEST(HamiltonianRefine, RandomPolyominoesRefinedAlwaysHaveACycle) {
@@ -237,7 +238,7 @@ TEST(HamiltonianRefine, RandomPolyominoesRefinedAlwaysHaveACycle) {
   for (int trial = 0; trial < 60; ++trial) {
     const PixelShape s = from_cells(random_animal(rng, 1 + rng() % 300, 2));
     const HamiltonianResult r = refined_hamiltonian_cycle(s);
-    ASSERT_EQ(r.verdict, Verdict::Found) << r.reason;
+    ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
     EXPECT_TRUE(r.cycle);
     ASSERT_EQ(check_path(cells_of(refine(s)), r.path, true), "") << "trial " << trial;
   }
@@ -248,7 +249,7 @@ TEST(HamiltonianRefine, RandomPolycubesRefinedAlwaysHaveACycle) {
   for (int trial = 0; trial < 40; ++trial) {
     const VoxelShape s = voxels_from_cells(random_animal(rng, 1 + rng() % 200, 3));
     const HamiltonianResult r = refined_hamiltonian_cycle(s);
-    ASSERT_EQ(r.verdict, Verdict::Found) << r.reason;
+    ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
     ASSERT_EQ(check_path(cells_of(refine(s)), r.path, true), "") << "trial " << trial;
   }
   const VoxelShape block = voxels_from_cells(random_animal(rng, 1, 3));
@@ -332,7 +333,7 @@ TEST(HamiltonianShapes, VoxelLayers) {
   EXPECT_EQ(parse_line([] { parse_voxel_layers("##\n\n###\n", "v.vox"); }), 3);
   EXPECT_EQ(parse_line([] { parse_voxel_layers("VOX \x96", "v.vox"); }), 1);
   const HamiltonianResult r = exact_hamiltonian(v);
-  ASSERT_EQ(r.verdict, Verdict::Found);
+  ASSERT_EQ(r.status.code, StatusCode::Success);
   EXPECT_EQ(check_path(cells_of(v), r.path, false), "");
 }
 

@@ -20,7 +20,7 @@ namespace {
 
 namespace geo = foldkit::geometry;
 namespace gen = foldkit::geometry::generators;
-using foldkit::folding::FoldStop;
+using foldkit::geometry::StatusCode;
 using foldkit::folding::fold_projected;
 using foldkit::folding::ProjectedFoldingOptions;
 using foldkit::folding::ProjectedFoldingResult;
@@ -44,7 +44,7 @@ void expect_valid_path(const geo::CreasePattern& p, const ProjectedFoldingResult
   }
   EXPECT_LE(r.max_closure_error, 1e-10);
   ASSERT_TRUE(r.replay.has_value());
-  EXPECT_TRUE(r.replay->ok) << (r.replay->problems.empty() ? "" : r.replay->problems.front());
+  EXPECT_TRUE(r.replay->status.ok()) << (r.replay->problems.empty() ? "" : r.replay->problems.front());
   EXPECT_EQ(geo::end_state(p, r.sequence).angles, r.states.back().angles);
 }
 
@@ -61,7 +61,7 @@ TEST(ProjectedFolding, MiuraFollowsTheClosedFormToTheTarget) {
   ProjectedFoldingOptions o;
   o.target_fraction = 0.9;
   const ProjectedFoldingResult r = fold_projected(p, o);
-  ASSERT_EQ(r.stop, FoldStop::Reached) << r.message;
+  ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
   EXPECT_NEAR(r.fraction, 0.9, 1e-9);
   EXPECT_NEAR(r.states.back().angles.cwiseAbs().maxCoeff(), 0.9 * kPi, 1e-9);
   expect_valid_path(p, r, o.max_step);
@@ -86,7 +86,7 @@ TEST(ProjectedFolding, MiuraFollowsTheClosedFormToTheTarget) {
 TEST(ProjectedFolding, WaterbombFoldsAlongItsAssignment) {
   const geo::CreasePattern p = geo::build_or_throw(gen::waterbomb(2, 2));
   const ProjectedFoldingResult r = fold_projected(p, {});
-  ASSERT_EQ(r.stop, FoldStop::Reached) << r.message;
+  ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
   expect_valid_path(p, r, ProjectedFoldingOptions{}.max_step);
   expect_assignment_kept(p, r);
   EXPECT_NEAR(r.fraction, 0.9, 1e-9);
@@ -100,7 +100,7 @@ TEST(ProjectedFolding, BoatFoldsWithAGivenVelocityAndEndsWithOneDof) {
   o.velocity << 1, -1, -1, 1, -1, -1, -1, -1, -1, -1;
   o.target_fraction = 0.5;
   const ProjectedFoldingResult r = fold_projected(p, o);
-  ASSERT_EQ(r.stop, FoldStop::Reached) << r.message;
+  ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
   expect_valid_path(p, r, o.max_step);
   const geo::ClosureSystem system(p);
   EXPECT_EQ(geo::mobility(system, r.states.back()).dof, 1);  // NOTES.md: the folded boat has 1 DOF
@@ -130,10 +130,10 @@ TEST(ProjectedFolding, SquareTwistIsReportedNotRigidlyFoldable) {
   for (double twist : {kPi / 3, kPi / 4, kPi / 6}) {
     const geo::CreasePattern p = geo::build_or_throw(gen::square_twist(1.0, twist, 1.0));
     const ProjectedFoldingResult r = fold_projected(p, {});
-    EXPECT_EQ(r.stop, FoldStop::NotRigidlyFoldable) << twist << ": " << r.message;
+    EXPECT_EQ(r.status.code, StatusCode::NotRigidlyFoldable) << twist << ": " << r.status.message;
     EXPECT_EQ(r.states.size(), 1u);  // only the flat sheet: no garbage states
     EXPECT_EQ(r.fraction, 0.0);
-    EXPECT_NE(r.message.find("does not fold rigidly"), std::string::npos) << r.message;
+    EXPECT_NE(r.status.message.find("does not fold rigidly"), std::string::npos) << r.status.message;
     EXPECT_TRUE(r.sequence.events.empty());
   }
 }
@@ -233,14 +233,14 @@ TEST(ProjectedFolding, StripStopsAtTheCollision) {
   ProjectedFoldingOptions o;
   o.velocity = Eigen::VectorXd::Ones(2);
   const ProjectedFoldingResult r = fold_projected(p, o);
-  ASSERT_EQ(r.stop, FoldStop::Collision) << r.message;
+  ASSERT_EQ(r.status.code, StatusCode::Collision) << r.status.message;
   EXPECT_GT(r.fraction, 119.0 / 180.0);
   EXPECT_LE(r.fraction, 120.5 / 180.0);
   ASSERT_TRUE(r.replay.has_value());
-  EXPECT_TRUE(r.replay->ok);  // the path up to the stop is collision-free
+  EXPECT_TRUE(r.replay->status.ok());  // the path up to the stop is collision-free
   // Without collision checks the same motion goes on to the target.
   o.collisions = false;
-  EXPECT_EQ(fold_projected(p, o).stop, FoldStop::Reached);
+  EXPECT_EQ(fold_projected(p, o).status.code, StatusCode::Success);
 }
 
 TEST(ProjectedFolding, SameInputSameOutput) {
@@ -263,7 +263,7 @@ TEST(ProjectedFolding, MiuraFoldsAllTheWayFlat) {
   ProjectedFoldingOptions o;
   o.target_fraction = 1.0;
   const ProjectedFoldingResult r = fold_projected(p, o);
-  ASSERT_EQ(r.stop, FoldStop::Reached) << r.message;
+  ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
   EXPECT_NEAR(r.fraction, 1.0, 1e-9);
   expect_valid_path(p, r, o.max_step);
   // Flat-folded: every crease at ±π.
@@ -279,11 +279,11 @@ TEST(ProjectedFolding, SingularStopKeepsAClosedPathAndSaysWhere) {
   o.target_fraction = 1.0;
   o.replay = false;
   const ProjectedFoldingResult free_run = fold_projected(p, o);
-  ASSERT_EQ(free_run.stop, FoldStop::Reached);
+  ASSERT_EQ(free_run.status.code, StatusCode::Success);
   o.singular_ratio = 2.0 * free_run.min_pivot_ratio;
   const ProjectedFoldingResult r = fold_projected(p, o);
-  ASSERT_EQ(r.stop, FoldStop::Singular) << r.message;
-  EXPECT_NE(r.message.find("nearly singular"), std::string::npos) << r.message;
+  ASSERT_EQ(r.status.code, StatusCode::Singular) << r.status.message;
+  EXPECT_NE(r.status.message.find("nearly singular"), std::string::npos) << r.status.message;
   EXPECT_LT(r.fraction, 1.0);
   EXPECT_GT(r.fraction, 0.0);
   const geo::ClosureSystem system(p);

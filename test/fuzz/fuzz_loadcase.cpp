@@ -34,11 +34,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   analysis::SolveOptions o;
   o.linear = true;
   const analysis::SolveResult r = analysis::solve(problem, o);
-  if (r.converged) {
+  if (r.status.ok()) {
     if (!std::isfinite(r.max_displacement) || !std::isfinite(r.residual_norm)) std::abort();
     for (const auto& m : r.modules)
       if (!m.displacement.allFinite() || !m.rotation.allFinite()) std::abort();
-  } else if (r.message.empty()) {
+  } else if (r.status.message.empty()) {
     std::abort();
   }
   return 0;

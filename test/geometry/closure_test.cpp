@@ -108,7 +108,7 @@ TEST(Mobility, SingleVertexFlatAndFolded) {
     EXPECT_EQ(flat.dof, n - 2) << n;
     // A folded closed state: project a random non-flat state.
     const ProjectionResult folded = project(sys, random_state(p, rng, 0.6), {1e-12, 200, false, {}});
-    ASSERT_TRUE(folded.converged) << n << ": " << folded.message;
+    ASSERT_TRUE(folded.status.ok()) << n << ": " << folded.status.message;
     const Mobility m = mobility(sys, folded.state);
     EXPECT_EQ(m.rank, 3) << n;
     EXPECT_EQ(m.dof, n - 3) << n;
@@ -121,7 +121,7 @@ TEST(Mobility, PaperFigure2DegreeEight) {
   EXPECT_EQ(mobility(sys, FoldState::flat(p)).dof, 6);
   std::mt19937 rng(8);
   const ProjectionResult folded = project(sys, random_state(p, rng, 0.7), {1e-12, 200, false, {}});
-  ASSERT_TRUE(folded.converged) << folded.message;
+  ASSERT_TRUE(folded.status.ok()) << folded.status.message;
   EXPECT_EQ(mobility(sys, folded.state).dof, 5);
 }
 
@@ -134,7 +134,7 @@ FoldState fold_along_assignment(const ClosureSystem& sys, const CreasePattern& p
     s.angles[static_cast<Eigen::Index>(j)] = a == Assignment::Mountain ? magnitude : a == Assignment::Valley ? -magnitude : 0.0;
   }
   const ProjectionResult r = project(sys, s, {1e-12, 500, true, {}});
-  EXPECT_TRUE(r.converged) << r.message;
+  EXPECT_TRUE(r.status.ok()) << r.status.message;
   return r.state;
 }
 
@@ -231,7 +231,7 @@ TEST(Mobility, BoatFoldsWithOneDof) {
     // 9–10 stern diagonals.
     s.angles << t, -t, -t, t, -t, -t, 0, 0, -t, -t;
     const ProjectionResult r = project(sys, s, {1e-12, 300, false, {}});
-    ASSERT_TRUE(r.converged) << r.message;
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
     const Mobility m = mobility(sys, r.state);
     EXPECT_EQ(m.dof, 1) << t;
     const auto& a = r.state.angles;

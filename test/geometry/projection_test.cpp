@@ -24,7 +24,7 @@ TEST(Projection, ThousandRandomPerturbations) {
   FoldState start = FoldState::flat(p);
   start.angles << 0.6, -0.5, 0.7, -0.4, 0.5, -0.6;
   const ProjectionResult base = project(sys, start, {1e-12, 200, false, {}});
-  ASSERT_TRUE(base.converged) << base.message;
+  ASSERT_TRUE(base.status.ok()) << base.status.message;
   std::uniform_real_distribution<double> u(-0.2, 0.2);
   int ok = 0;
   double worst = 0;
@@ -32,8 +32,8 @@ TEST(Projection, ThousandRandomPerturbations) {
     FoldState s = base.state;
     for (Eigen::Index i = 0; i < s.angles.size(); ++i) s.angles[i] += u(rng);
     const ProjectionResult r = project(sys, s, {1e-10, 100, false, {}});
-    ok += r.converged;
-    if (r.converged) worst = std::max(worst, r.error);
+    ok += r.status.ok();
+    if (r.status.ok()) worst = std::max(worst, r.error);
     EXPECT_TRUE(r.state.angles.allFinite());
   }
   EXPECT_GE(ok, 995) << "success rate " << ok / 10.0 << "%";
@@ -52,7 +52,7 @@ TEST(Projection, MultiVertexPerturbations) {
       const double sign = p.joints()[j].assignment == Assignment::Mountain ? 1.0 : -1.0;
       s.angles[static_cast<Eigen::Index>(j)] = sign * 0.6 + u(rng);
     }
-    ok += project(sys, s).converged;
+    ok += project(sys, s).status.ok();
   }
   EXPECT_GE(ok, 198);
 }
@@ -66,7 +66,7 @@ TEST(Projection, NearFlatKeepsTheAssignedSigns) {
   for (std::size_t j = 0; j < p.joints().size(); ++j)
     s.angles[static_cast<Eigen::Index>(j)] = (p.joints()[j].assignment == Assignment::Mountain ? 1 : -1) * 1e-3;
   const ProjectionResult r = project(sys, s);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
   for (Eigen::Index j = 0; j < s.angles.size(); ++j) EXPECT_GT(r.state.angles[j] * s.angles[j], 0.0) << j;
 }
 
@@ -82,7 +82,7 @@ TEST(Projection, HeldCreasesStayPut) {
     FoldState start = FoldState::flat(p);
     start.angles = rough;
     const ProjectionResult r = project(sys, start, o);
-    ASSERT_TRUE(r.converged) << r.message;
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
     EXPECT_EQ(r.state.angles[0], t);
     EXPECT_LT(sys.max_error(r.state), 1e-10);
     const double r1 = 2 * std::atan(-std::cos((alpha + beta) / 2) / std::cos((alpha - beta) / 2) * std::tan(t / 2));
@@ -101,13 +101,13 @@ TEST(Projection, ReportsFailure) {
   FoldState s = FoldState::flat(p);
   s.angles << 2.5, 2.5, 2.5, 2.5;
   const ProjectionResult r = project(sys, s, {1e-10, 3, true, {}});
-  EXPECT_FALSE(r.converged);
-  EXPECT_FALSE(r.message.empty());
+  EXPECT_FALSE(r.status.ok());
+  EXPECT_FALSE(r.status.message.empty());
   EXPECT_GT(r.error, 1e-10);
   s.angles[1] = std::nan("");
   const ProjectionResult bad = project(sys, s);
-  EXPECT_FALSE(bad.converged);
-  EXPECT_NE(bad.message.find("non-finite"), std::string::npos);
+  EXPECT_FALSE(bad.status.ok());
+  EXPECT_NE(bad.status.message.find("non-finite"), std::string::npos);
 }
 
 TEST(NumericalExtremes, SliverSectorsHighDegreeAndNearPi) {
@@ -133,7 +133,7 @@ TEST(NumericalExtremes, SliverSectorsHighDegreeAndNearPi) {
     const ProjectionResult pr = project(sys, s, {1e-10, 300, false, {}});
     EXPECT_TRUE(pr.state.angles.allFinite());
     EXPECT_TRUE(std::isfinite(pr.error));
-    EXPECT_TRUE(pr.converged) << sectors.size() << ": " << pr.message;
+    EXPECT_TRUE(pr.status.ok()) << sectors.size() << ": " << pr.status.message;
   }
   // Fold angles at and near ±180°: a degree-4 vertex folded flat.
   const CreasePattern p = build_or_throw(gen::single_vertex({M_PI / 2, M_PI / 2, M_PI / 2, M_PI / 2}));

@@ -60,9 +60,9 @@ FoldState random_goal(const CreasePattern& p, unsigned seed, bool collision_free
 }
 
 void expect_valid_plan(const CreasePattern& p, const PlanRequest& req, const PlanResult& r) {
-  ASSERT_TRUE(r.solved) << r.message;
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_TRUE(r.replay.has_value());
-  EXPECT_TRUE(r.replay->ok);
+  EXPECT_TRUE(r.replay->status.ok());
   EXPECT_LT(r.replay->max_closure_error, 1e-3);
   EXPECT_TRUE(r.replay->collisions.empty());
   const ClosureSystem sys(p);
@@ -119,7 +119,7 @@ FoldState projected_goal(const CreasePattern& p, const Eigen::VectorXd& guess) {
   foldkit::geometry::ProjectionOptions po;
   po.tolerance = 1e-12;
   const auto r = foldkit::geometry::project(ClosureSystem(p), FoldState{guess}, po);
-  EXPECT_TRUE(r.converged);
+  EXPECT_TRUE(r.status.ok());
   return r.state;
 }
 

@@ -168,7 +168,7 @@ TEST(CollisionWorld, MiuraFoldsWithoutCrossing) {
     for (std::size_t j = 0; j < miura.joints().size(); ++j)
       rough.angles[static_cast<Eigen::Index>(j)] = miura.joints()[j].assignment == geometry::Assignment::Mountain ? m : -m;
     const auto r = geometry::project(sys, rough);
-    ASSERT_TRUE(r.converged) << m;
+    ASSERT_TRUE(r.status.ok()) << m;
     s = r.state;
     const auto found = world.check(geometry::facet_poses(miura, tree, s), s);
     EXPECT_TRUE(found.empty()) << "fold " << m << ": actors " << (found.empty() ? 0 : found[0].actors[0]) << ","

@@ -35,7 +35,7 @@ TEST(Simulate, ZigZagStripAt170IsValid) {
   const CreasePattern strip = build_or_throw(gen::strip(3));
   for (const FoldSequence& seq : {one_event({{1, 170}, {2, -170}}), in_turn({{1, 170}, {2, -170}})}) {
     const SimulationReport r = simulate(strip, seq);
-    EXPECT_TRUE(r.ok) << (r.problems.empty() ? "" : r.problems.front());
+    EXPECT_TRUE(r.status.ok()) << (r.problems.empty() ? "" : r.problems.front());
     EXPECT_TRUE(r.collisions.empty());
     EXPECT_LT(r.max_closure_error, 1e-12);  // a strip has no loops
     EXPECT_NEAR(r.final_state.angles[0], 170 * kDeg, 1e-15);
@@ -47,7 +47,7 @@ TEST(Simulate, RollingStripAt170CollidesEndPanels) {
   const CreasePattern strip = build_or_throw(gen::strip(3));
   for (const FoldSequence& seq : {one_event({{1, 170}, {2, 170}}), in_turn({{1, 170}, {2, 170}})}) {
     const SimulationReport r = simulate(strip, seq);
-    EXPECT_FALSE(r.ok);
+    EXPECT_FALSE(r.status.ok());
     ASSERT_EQ(r.collisions.size(), 1u);
     const CollisionEvent& c = r.collisions.front();
     EXPECT_EQ(c.actors, (std::array<int, 2>{1, 3}));
@@ -74,24 +74,24 @@ TEST(Simulate, FlatFoldTo180IsTouchingNotCrossing) {
   const CreasePattern strip = build_or_throw(gen::strip(2));
   for (double deg : {180.0, -180.0}) {
     const SimulationReport r = simulate(strip, one_event({{1, deg}}));
-    EXPECT_TRUE(r.ok) << deg;
+    EXPECT_TRUE(r.status.ok()) << deg;
     EXPECT_TRUE(r.collisions.empty()) << deg;
   }
   // Three panels zig-zag flat: all three stacked, still valid.
   const CreasePattern three = build_or_throw(gen::strip(3));
-  EXPECT_TRUE(simulate(three, in_turn({{1, 180}, {2, -180}})).ok);
+  EXPECT_TRUE(simulate(three, in_turn({{1, 180}, {2, -180}})).status.ok());
   // Rolled flat one crease after the other: the third panel wraps round the first one's free
   // edge (where the second crease now lies) and lands on top of it: a valid roll.
-  EXPECT_TRUE(simulate(three, in_turn({{1, 180}, {2, 180}})).ok);
+  EXPECT_TRUE(simulate(three, in_turn({{1, 180}, {2, 180}})).status.ok());
   // Rolled flat both at once: the end panels meet half-way and cross.
-  EXPECT_FALSE(simulate(three, one_event({{1, 180}, {2, 180}})).ok);
+  EXPECT_FALSE(simulate(three, one_event({{1, 180}, {2, 180}})).status.ok());
 }
 
 TEST(Simulate, MountainFoldsThePanelBelowTheSheet) {
   const CreasePattern strip = build_or_throw(gen::strip(2));
   for (double deg : {90.0, -90.0}) {
     const SimulationReport r = simulate(strip, one_event({{1, deg}}));
-    ASSERT_TRUE(r.ok);
+    ASSERT_TRUE(r.status.ok());
     const auto poses = geometry::facet_poses(strip, geometry::make_tree(strip), r.final_state);
     // Panel 2's centre (1.5, 0.5) turns about the crease x = 1 by 90°: to (1, 0.5, ∓0.5).
     const Eigen::Vector3d centre = poses[1] * Eigen::Vector3d(1.5, 0.5, 0.0);
@@ -117,13 +117,13 @@ TEST(Simulate, DegreeFourAlongItsModeIsValidOneCreaseAloneIsNot) {
   SimulationOptions sync;
   sync.model = Actuation::Synchronised;
   const SimulationReport along = simulate(p, mode, sync);
-  EXPECT_TRUE(along.ok) << (along.problems.empty() ? "" : along.problems.front());
+  EXPECT_TRUE(along.status.ok()) << (along.problems.empty() ? "" : along.problems.front());
   EXPECT_LT(along.max_closure_error, 1e-3);
   EXPECT_GT(along.max_closure_error, 0.0);  // between waypoints the straight line leaves the mode
   EXPECT_EQ(along.events.size(), static_cast<std::size_t>(waypoints));
 
   const SimulationReport lone = simulate(p, one_event({{1, 60}}));
-  EXPECT_FALSE(lone.ok);
+  EXPECT_FALSE(lone.status.ok());
   EXPECT_GT(lone.max_closure_error, 1e-3);
   ASSERT_FALSE(lone.problems.empty());
   EXPECT_NE(lone.problems.front().find("closure error"), std::string::npos);
@@ -138,7 +138,7 @@ TEST(Simulate, MotorAndSynchronisedTiming) {
   for (Actuation model : {Actuation::Motor, Actuation::Synchronised}) {
     o.model = model;
     const SimulationReport r = simulate(strip, seq, o);
-    ASSERT_TRUE(r.ok);
+    ASSERT_TRUE(r.status.ok());
     EXPECT_DOUBLE_EQ(r.duration, 1.0);
     ASSERT_EQ(r.frames.size(), 5u);  // flat, then 0.25, 0.5, 0.75, 1
     const auto& half = r.frames[2];
@@ -154,7 +154,7 @@ TEST(Simulate, SpringSettlesOnTarget) {
   SimulationOptions o;
   o.model = Actuation::Spring;
   const SimulationReport r = simulate(strip, one_event({{1, 90}}), o);
-  ASSERT_TRUE(r.ok) << r.problems.front();
+  ASSERT_TRUE(r.status.ok()) << r.problems.front();
   EXPECT_EQ(r.final_state.angles[0], 90 * kDeg);
   // θ(t) − θ* = −θ*(1 + 2t)e^{−2t} for ω = 2: 1e-5 rad and 1e-4 rad/s are reached near t ≈ 7.5–9 s.
   EXPECT_GT(r.duration, 5.0);
@@ -166,7 +166,7 @@ TEST(Simulate, UnderdampedSpringOvershootsPast180) {
   SimulationOptions o;
   o.model = Actuation::Spring;
   const SimulationReport r = simulate(strip, one_event({{1, 180}}), o);
-  EXPECT_FALSE(r.ok);
+  EXPECT_FALSE(r.status.ok());
   ASSERT_FALSE(r.collisions.empty());
   EXPECT_EQ(r.collisions.front().kind, CrossingKind::Crease);
   EXPECT_EQ(r.collisions.front().actors, (std::array<int, 2>{1, 2}));
@@ -177,7 +177,7 @@ TEST(Simulate, SpringWithoutStiffnessCannotMove) {
   SimulationOptions o;
   o.model = Actuation::Spring;
   const SimulationReport r = simulate(strip, one_event({{1, 30}}), o);
-  EXPECT_FALSE(r.ok);
+  EXPECT_FALSE(r.status.ok());
   EXPECT_FALSE(r.events.front().reached);
   EXPECT_NE(r.problems.front().find("spring constant 0"), std::string::npos);
 }

@@ -28,7 +28,7 @@ geometry::FoldState closed_miura(const geometry::CreasePattern& p, double m_end)
       s.angles[i] = (p.joints()[j].assignment == geometry::Assignment::Mountain ? 1 : -1) * std::max(m, std::abs(s.angles[i]));
     }
     const auto r = geometry::project(sys, s);
-    EXPECT_TRUE(r.converged) << r.message;
+    EXPECT_TRUE(r.status.ok()) << r.status.message;
     s = r.state;
   }
   return s;

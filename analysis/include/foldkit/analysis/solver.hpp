@@ -6,6 +6,7 @@
 
 #include "foldkit/analysis/equilibrium.hpp"
 #include "foldkit/geometry/progress.hpp"
+#include "foldkit/geometry/status.hpp"
 
 namespace foldkit::analysis {
 
@@ -27,7 +28,9 @@ struct ModuleResult {
 };
 
 struct SolveResult {
-  bool converged = false;
+  // Success, Singular (linear: the system is singular or ill-conditioned), NoProgress (the
+  // load step fell below min_load_step) or LimitReached (max_total_iterations).
+  geometry::Status status;
   int iterations = 0;   // Newton iterations (linear mode: 1)
   int load_steps = 0;
   double residual_norm = 0.0;      // achieved scaled residual (∞-norm)
@@ -35,7 +38,6 @@ struct SolveResult {
   double condition_estimate = 0.0; // of the Jacobi-scaled tangent at the solution (1-norm estimate)
   double max_displacement = 0.0;   // largest centroid displacement, length units
   std::vector<ModuleResult> modules;
-  std::string message;
 };
 
 // Newton with analytic tangent, SparseLU on the Jacobi-scaled system, backtracking line search on

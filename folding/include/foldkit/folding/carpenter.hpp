@@ -11,6 +11,7 @@
 
 #include "foldkit/geometry/fold_sequence.hpp"
 #include "foldkit/geometry/progress.hpp"
+#include "foldkit/geometry/status.hpp"
 
 namespace foldkit::folding {
 
@@ -22,7 +23,7 @@ struct PlanarChain {
   bool closed = false;
 };
 
-struct CarpenterOptions {
+struct CarpenterPlanarOptions {
   std::size_t max_steps = 200'000;
   // Largest turn of any joint in one step (radians); a step is halved until no vertex distance
   // shrinks, and ends early where a joint becomes straight.
@@ -39,11 +40,13 @@ struct CarpenterOptions {
   geometry::ProgressFn progress;  // per step
 };
 
-struct CarpenterResult {
+struct CarpenterPlanarResult {
   std::vector<Frame2> frames;  // frames[0] is the input
   bool closed = false;
-  bool done = false;      // straight (open) or convex (closed)
-  std::string stop_reason;  // why it stopped when not done
+  // Success: straight (open) or convex (closed). Otherwise LimitReached (max_steps) or
+  // NoProgress (an LP failed, no strictly expansive motion, or no step keeps every distance
+  // growing), with the step in the message.
+  geometry::Status status;
   std::size_t steps = 0;
   std::size_t lp_solves = 0;
   std::size_t max_struts = 0;  // most strut rows any LP held
@@ -60,7 +63,7 @@ struct CarpenterResult {
 void check_simple_chain(const PlanarChain& chain);
 
 // Straightens an open chain or convexifies a closed one (check_simple_chain() first).
-CarpenterResult carpenter_planar(const PlanarChain& chain, const CarpenterOptions& options = {});
+CarpenterPlanarResult carpenter_planar(const PlanarChain& chain, const CarpenterPlanarOptions& options = {});
 
 // The frames in reverse order: the folding motion from straight (or convex) to the input.
 std::vector<Frame2> reversed(const std::vector<Frame2>& frames);

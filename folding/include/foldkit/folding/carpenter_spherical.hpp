@@ -11,10 +11,11 @@
 #include "foldkit/geometry/crease_pattern.hpp"
 #include "foldkit/geometry/fold_sequence.hpp"
 #include "foldkit/geometry/fold_state.hpp"
+#include "foldkit/geometry/status.hpp"
 
 namespace foldkit::folding {
 
-struct SphericalOptions {
+struct CarpenterSphericalOptions {
   // Largest move of any crease direction in one step (radians of arc, before restoring).
   double step = 0.02;
   // Largest change of any fold angle between two frames: steps are merged up to it (radians).
@@ -36,9 +37,11 @@ struct SphericalOptions {
   double velocity = 0.5;
 };
 
-struct FlattenResult {
-  bool flat = false;                        // the last frame is the flat state
-  std::string message;                      // why not, when not flat; a summary otherwise
+struct CarpenterSphericalResult {
+  // Success: the last frame is the flat state (the message says after how many steps).
+  // Otherwise LimitReached (max_steps) or NoProgress (no strictly expansive motion, or a step
+  // failed), with the reason in the message.
+  geometry::Status status;
   std::vector<geometry::FoldState> frames;  // folded (the input) … flat
   int steps = 0;                            // LP steps taken
   double max_sector_error = 0.0;            // largest |arc between neighbouring creases − sector angle|
@@ -51,13 +54,13 @@ struct FlattenResult {
 
 // Flattens the single interior vertex of `pattern` from `folded`. Throws std::invalid_argument
 // when the pattern is not one interior vertex (every joint on it, sectors below π), `folded`
-// has the wrong size or does not close, or its sectors cross; returns flat = false with a
+// has the wrong size or does not close, or its sectors cross; returns a status other than Success with a
 // message when the method stops (no strictly expansive motion, step limit).
-FlattenResult flatten_single_vertex(const geometry::CreasePattern& pattern, const geometry::FoldState& folded,
-                                    const SphericalOptions& options = {});
+CarpenterSphericalResult flatten_single_vertex(const geometry::CreasePattern& pattern, const geometry::FoldState& folded,
+                                    const CarpenterSphericalOptions& options = {});
 
 // The unit direction of each crease of the single vertex (counter-clockwise, as
-// FlattenResult::joints) in the pose where the facet of pattern.actors()[0] is fixed.
+// CarpenterSphericalResult::joints) in the pose where the facet of pattern.actors()[0] is fixed.
 std::vector<Eigen::Vector3d> crease_directions(const geometry::CreasePattern& pattern, const geometry::FoldState& state);
 
 }  // namespace foldkit::folding

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/geometry/status.hpp"
+
 namespace foldkit::folding {
 
 // Largest grid (filled or not) the readers accept, and the largest coarse shapes the exact search
@@ -54,16 +56,15 @@ VoxelShape read_voxel_shape(const std::string& path);
 PixelShape refine(const PixelShape& shape);
 VoxelShape refine(const VoxelShape& shape);
 
-enum class Verdict { Found, None, Unknown };
-const char* to_string(Verdict v);  // "found", "none", "unknown"
-
 struct HamiltonianResult {
-  Verdict verdict = Verdict::None;
+  // Success (a path or cycle was found), NoSolution (the shape is empty or not connected, fails
+  // a necessary condition, or the exhausted search found none: proven), LimitReached (the node
+  // budget ran out or the shape is too large: undecided); the message says why.
+  geometry::Status status;
   // Cells in visiting order, each a unit step from the last; for a cycle the last cell is also
   // a unit step from the first (the first is not repeated).
   std::vector<Cell> path;
   bool cycle = false;
-  std::string reason;       // why none / unknown
   std::uint64_t nodes = 0;  // search nodes expanded (exact search)
 };
 
@@ -73,14 +74,14 @@ struct ExactOptions {
   std::optional<Cell> start;  // the path must start here (path mode only)
 };
 
-// Backtracking with parity, degree and connectivity pruning. None when the shape is empty, not
-// connected, fails a necessary condition or the search is exhausted; Unknown when the budget
+// Backtracking with parity, degree and connectivity pruning. NoSolution when the shape is empty, not
+// connected, fails a necessary condition or the search is exhausted; LimitReached when the budget
 // runs out or the shape has more than kMaxExactCells cells.
 HamiltonianResult exact_hamiltonian(const PixelShape& shape, const ExactOptions& options = {});
 HamiltonianResult exact_hamiltonian(const VoxelShape& shape, const ExactOptions& options = {});
 
 // The Hamiltonian cycle of refine(shape), in refined coordinates, built in linear time along a
-// spanning tree of the coarse cells. None when the shape is empty or not connected; Unknown
+// spanning tree of the coarse cells. NoSolution when the shape is empty or not connected; LimitReached
 // beyond kMaxRefineCells coarse cells.
 HamiltonianResult refined_hamiltonian_cycle(const PixelShape& shape);
 HamiltonianResult refined_hamiltonian_cycle(const VoxelShape& shape);

@@ -10,20 +10,10 @@
 #include "foldkit/geometry/fold_sequence.hpp"
 #include "foldkit/geometry/fold_state.hpp"
 #include "foldkit/geometry/progress.hpp"
+#include "foldkit/geometry/status.hpp"
 #include "foldkit/simulation/simulate.hpp"
 
 namespace foldkit::folding {
-
-// Why projected-velocity folding stopped (docs/PROJECTED_FOLDING.md).
-enum class FoldStop {
-  Reached,             // the largest fold angle reached target_fraction·π
-  Collision,           // the next step makes facets cross; the path ends before it
-  Singular,            // the closure Jacobian lost rank, or its pivots collapsed, or a crease returned to flat
-  NotRigidlyFoldable,  // no closed state near flat follows the desired velocity (the square twist)
-  NoProgress,          // the desired velocity has no component along the motions closure allows
-  StepLimit,           // max_steps predictor–corrector steps were not enough
-};
-const char* to_string(FoldStop stop);
 
 struct ProjectedFoldingOptions {
   // Desired velocity, one entry per joint (only its direction matters). Empty: the assignment's
@@ -51,7 +41,14 @@ struct ProjectedFoldingOptions {
 };
 
 struct ProjectedFoldingResult {
-  FoldStop stop = FoldStop::NoProgress;
+  // Why projected-velocity folding stopped (docs/PROJECTED_FOLDING.md): Success (the largest fold
+  // angle reached target_fraction·π), Collision (the next step makes facets cross; the path ends
+  // before it), Singular (the closure Jacobian lost rank, its pivots collapsed, or a crease
+  // returned to flat), NotRigidlyFoldable (no closed state near flat follows the desired
+  // velocity: the square twist), NoProgress (the desired velocity has no component along the
+  // motions closure allows), LimitReached (max_steps). A replay the simulator rejects keeps the
+  // code and adds its reason to the message (see `replay`).
+  geometry::Status status;
   std::vector<geometry::FoldState> states;  // the flat sheet first, then one state per step
   double fraction = 0.0;             // largest |fold angle| / π at the last state
   double max_closure_error = 0.0;    // largest loop error over the states
@@ -65,7 +62,6 @@ struct ProjectedFoldingResult {
   double min_rank_gap = std::numeric_limits<double>::infinity();  // smallest gap over the decisions
   std::string rank_method;           // "dense-svd" or "inverse-subspace"
   double time = 0.0;                 // seconds, folding only (no replay)
-  std::string message;
   geometry::FoldSequence sequence;   // CMML: flat → states (geometry::path_sequence)
   std::optional<simulation::SimulationReport> replay;
 };

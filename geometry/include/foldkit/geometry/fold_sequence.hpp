@@ -1,4 +1,6 @@
 #pragma once
+/// @file
+/// Fold sequences (CMML, paper Table 2): timed events that drive joints to target angles.
 #include <string>
 #include <vector>
 
@@ -8,46 +10,65 @@
 
 namespace foldkit::geometry {
 
-// A CMML fold (Table 2): drive joint `joint_id` to `angle` at `velocity` (both in radians).
+/// A CMML fold (Table 2): drive joint `joint_id` to `angle` at `velocity`. CMML files hold
+/// degrees; here both are radians.
 struct FoldCommand {
-  int joint_id = 0;
-  double angle = 0.0;
-  double velocity = 0.0;
-  int line = 0;
+  int joint_id = 0;       ///< the joint's ID (not its index)
+  double angle = 0.0;     ///< target fold angle, radians
+  double velocity = 0.0;  ///< speed towards it, radians per second (> 0)
+  int line = 0;           ///< source line; 0 when not read from a file
 };
 
-// Folds that share an EventNumber run together.
+/// Folds that share an EventNumber: they run together.
 struct FoldEvent {
-  int number = 0;
-  std::vector<FoldCommand> folds;
+  int number = 0;                  ///< the CMML EventNumber
+  std::vector<FoldCommand> folds;  ///< in file order
 };
 
-// Events in increasing EventNumber; every sequence starts from the flat state.
+/// Events in increasing EventNumber; every sequence starts from the flat state.
 struct FoldSequence {
-  std::string title;
-  std::vector<FoldEvent> events;
+  std::string title;              ///< free text
+  std::vector<FoldEvent> events;  ///< in increasing number
 };
 
-// Groups folds into events by number (stable within an event).
+/// Groups folds into events by number, events in increasing number and folds in their given
+/// order within an event.
+/// @param title          the sequence's title
+/// @param numbered_folds pairs (EventNumber, fold)
 FoldSequence make_sequence(std::string title, std::vector<std::pair<int, FoldCommand>> numbered_folds);
 
-// Checks a sequence against its pattern: unknown joint IDs, a joint twice in one event.
+/// Checks a sequence against its pattern: joint IDs the pattern lacks, a joint folded twice in
+/// one event. Every finding is an error, located at the fold's line.
 Diagnostics check_sequence(const CreasePattern& pattern, const FoldSequence& sequence);
 
-// The state after each event, angles carried through from the flat state (size = events + 1,
-// element 0 flat). Unknown joints are skipped; run check_sequence() first.
+/// The state after each event, angles carried through from the flat state: size = events + 1,
+/// element 0 flat. Folds of unknown joints are skipped; run check_sequence() first.
 std::vector<FoldState> event_states(const CreasePattern& pattern, const FoldSequence& sequence);
 
+/// The state after the last event (the flat state for a sequence without events).
 FoldState end_state(const CreasePattern& pattern, const FoldSequence& sequence);
 
-// A one-event sequence that takes the flat sheet to `state` (joints at 0 left out).
+/// A one-event sequence (event 1) that takes the flat sheet to `state`, every fold at
+/// `velocity` (radians per second); joints at 0 are left out, so a flat state gives no event.
+/// @param pattern   the pattern `state` belongs to
+/// @param state     one angle per joint, radians
+/// @param velocity  speed of every fold, radians per second
+/// @param title     the sequence's title
 FoldSequence sequence_to(const CreasePattern& pattern, const FoldState& state, double velocity,
                          std::string title = {});
 
-// One event per waypoint (flat → waypoints[0] → waypoints[1] → …), naming the joints that move.
-// Within an event the fastest joint turns at `max_velocity` and every other one at the speed
-// that makes it arrive at the same moment, so motor replay follows the straight line between
-// waypoints in angle space: close waypoints on the closure manifold then keep loops closed.
+/// One event per waypoint (flat → waypoints[0] → waypoints[1] → …, events numbered from 1),
+/// naming the joints that move; a waypoint equal to the one before adds no event. Within an
+/// event the fastest joint turns at `max_velocity` and every other one at the speed that makes
+/// it arrive at the same moment (at least 1e-9 rad/s), so motor replay follows the straight line
+/// between waypoints in angle space: close waypoints on the closure manifold then keep loops
+/// closed.
+/// @param pattern       the pattern the waypoints belong to
+/// @param waypoints     states with one angle per joint, radians
+/// @param max_velocity  speed of the fastest joint in each event, radians per second
+/// @param title         the sequence's title
+/// @throws std::invalid_argument when `max_velocity` is not positive and finite, or a waypoint
+///         does not hold one angle per joint
 FoldSequence path_sequence(const CreasePattern& pattern, const std::vector<FoldState>& waypoints, double max_velocity,
                            std::string title = {});
 

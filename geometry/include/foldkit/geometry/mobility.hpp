@@ -1,4 +1,6 @@
 #pragma once
+/// @file
+/// Instantaneous degrees of freedom of a folded state.
 #include <string>
 
 #include "foldkit/geometry/closure.hpp"
@@ -6,19 +8,26 @@
 
 namespace foldkit::geometry {
 
-// Instantaneous degrees of freedom at a state: creases − numerical rank of the closure Jacobian.
+/// Instantaneous degrees of freedom at a state: creases − numerical rank of the closure Jacobian.
 struct Mobility {
-  int dof = 0;
-  int rank = 0;
-  int creases = 0;
-  double tolerance = 0.0;  // absolute: singular values at or below it count as zero
-  std::string method;      // "dense-svd", "inverse-subspace" (LeastNormSolver::decide_rank) or "none" (no loop)
-  RankDecision decision;   // the singular values behind the count, with their gap
+  int dof = 0;             ///< creases − rank
+  int rank = 0;            ///< numerical rank of the closure Jacobian
+  int creases = 0;         ///< number of joints (columns of the Jacobian)
+  double tolerance = 0.0;  ///< absolute: singular values at or below it count as zero
+  std::string method;      ///< "dense-svd", "inverse-subspace" (LeastNormSolver::decide_rank) or "none" (no loop)
+  RankDecision decision;   ///< the singular values behind the count, with their gap
 };
 
-// The rank is decided by singular values (LeastNormSolver::decide_rank): relative_tolerance scales
-// with the largest singular value, floored at 1; a dense SVD up to dense_limit creases, inverse subspace
-// iteration on the sparse Jacobian above.
+/// The mobility of `system` at `state`. The rank is decided by singular values
+/// (LeastNormSolver::decide_rank): singular values above relative_tolerance · max(σ_max, 1)
+/// count (σ_max is floored at 1, the size of a closure Jacobian's entries, so that a Jacobian
+/// zero to rounding has rank 0); a dense SVD up to `dense_limit` creases, inverse subspace
+/// iteration on the sparse Jacobian above.
+/// @param system              the closure equations of the pattern
+/// @param state               one angle per joint, radians
+/// @param relative_tolerance  relative threshold on the singular values
+/// @param dense_limit         largest number of creases decided by a dense SVD
+/// @throws std::runtime_error when the sparse factorisation of the subspace iteration fails
 Mobility mobility(const ClosureSystem& system, const FoldState& state, double relative_tolerance = 1e-8,
                   Eigen::Index dense_limit = 400);
 

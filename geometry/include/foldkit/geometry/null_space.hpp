@@ -1,8 +1,9 @@
 #pragma once
-// Sparse null-space projection and least-norm Gauss–Newton steps for closure Jacobians: used by
-// projected-velocity folding (folding::fold_projected) and by the constrained planning space's
-// projection (statespaces::ClosureConstraint), neither of which may factor a dense Jacobian on
-// patterns with hundreds of creases.
+/// @file
+/// Sparse null-space projection and least-norm Gauss–Newton steps for closure Jacobians: used by
+/// projected-velocity folding (folding::fold_projected) and by the constrained planning space's
+/// projection (statespaces::ClosureConstraint), neither of which may factor a dense Jacobian on
+/// patterns with hundreds of creases.
 #include <limits>
 #include <string>
 #include <vector>
@@ -13,61 +14,81 @@
 
 namespace foldkit::geometry {
 
+/// A velocity projected onto the null space of a Jacobian J, with the rank estimate of the same
+/// factorisation (LeastNormSolver::project_onto_null_space).
 struct NullSpaceVelocity {
-  Eigen::VectorXd velocity;  // the desired velocity's orthogonal projection onto null(J)
-  int rank = 0;              // numerical rank of J
-  double pivot_ratio = 1.0;  // √(smallest / largest kept pivot of JᵀJ): ≈ σ_min / σ_max of J
+  Eigen::VectorXd velocity;  ///< the desired velocity's orthogonal projection onto null(J); one entry per column
+  int rank = 0;              ///< numerical rank of J (an estimate from LDLᵀ pivots)
+  double pivot_ratio = 1.0;  ///< √(smallest / largest kept pivot of JᵀJ): ≈ σ_min / σ_max of J
 };
 
-// A rank decision on J's smallest singular values, with the numbers behind it.
+/// A rank decision on J's smallest singular values, with the numbers behind it.
 struct RankDecision {
-  int rank = 0;
-  int nullity = 0;            // columns − rank: the instantaneous degrees of freedom of a closure Jacobian
-  double sigma_max = 0.0;     // largest singular value of J
-  double tolerance = 0.0;     // absolute: singular values at or below it count as zero
-  double largest_zero = 0.0;  // largest singular value counted as zero (0 when none is)
-  double smallest_kept = std::numeric_limits<double>::infinity();  // smallest counted as non-zero
-  std::string method;         // "dense-svd" or "inverse-subspace"
-  // smallest_kept / largest_zero (largest_zero floored at 1e-16·σ_max): how far the decision is
-  // from the tolerance on both sides; a decision with a gap near 1 is a guess.
+  int rank = 0;               ///< columns − nullity
+  int nullity = 0;            ///< columns − rank: the instantaneous degrees of freedom of a closure Jacobian
+  double sigma_max = 0.0;     ///< largest singular value of J
+  double tolerance = 0.0;     ///< absolute: singular values at or below it count as zero
+  double largest_zero = 0.0;  ///< largest singular value counted as zero (0 when none is)
+  double smallest_kept = std::numeric_limits<double>::infinity();  ///< smallest counted as non-zero (∞ when none is)
+  std::string method;         ///< "dense-svd", "inverse-subspace", or "none" for a Jacobian without rows or entries
+  /// smallest_kept / largest_zero (largest_zero floored at 1e-16·σ_max): how far the decision is
+  /// from the tolerance on both sides; a decision with a gap near 1 is a guess.
   double gap() const;
 };
 
-// Both operations factor JᵀJ + εI, ε = 1e-4 · rank_tolerance · max diag(JᵀJ), by a sparse LDLᵀ
-// (AMD ordering) with one step of iterative refinement (the matrix is deliberately
-// ill-conditioned, 1/ε); no dense SVD. The ordering and symbolic analysis are kept between calls
-// and redone only when the Jacobian's sparsity pattern changes — a closure Jacobian keeps its
-// pattern, and the ordering was a fifth of a constrained planner's time when redone each step.
+/// Least-norm linear algebra on a sparse Jacobian J (rows × creases). Both operations factor
+/// JᵀJ + εI, ε = 1e-4 · rank_tolerance · max diag(JᵀJ) (that maximum floored at 1), by a
+/// sparse LDLᵀ (AMD ordering) with one step of iterative refinement (the matrix is
+/// deliberately ill-conditioned, 1/ε); no dense SVD. The ordering and symbolic analysis are kept
+/// between calls and redone only when the Jacobian's sparsity pattern changes — a closure
+/// Jacobian keeps its pattern, and the ordering was a fifth of a constrained planner's time when
+/// redone each step. Not thread-safe: one solver per thread.
 class LeastNormSolver {
  public:
+  /// A solver whose pivots below `rank_tolerance` × the largest count as zero (singular values
+  /// below √rank_tolerance · σ_max); `rank_tolerance` also scales ε.
   explicit LeastNormSolver(double rank_tolerance = 1e-8) : rank_tolerance_(rank_tolerance) {}
 
-  // v = ε·(JᵀJ + εI)⁻¹·w, the limit of which as ε → 0 is w's orthogonal projection onto null(J):
-  // components of w along right singular vectors of J with singular value σ are scaled by
-  // ε / (σ² + ε), so the range part vanishes (a corrector removes what is left) and the null part
-  // is kept, with no rank decision. The rank is counted from the pivots of the same
-  // factorisation: every Schur complement of JᵀJ + εI is at least ε, a null direction leaves a
-  // pivot near ε, so pivots below rank_tolerance × the largest count as zero (σ below
-  // √rank_tolerance·σ_max). An estimate: LDLᵀ pivots are not rank revealing, and on random sparse
-  // matrices the count ran 1–3 above the SVD rank (test/geometry/null_space_test.cpp).
+  /// v = ε·(JᵀJ + εI)⁻¹·w, the limit of which as ε → 0 is w's orthogonal projection onto null(J):
+  /// components of w along right singular vectors of J with singular value σ are scaled by
+  /// ε / (σ² + ε), so the range part vanishes (a corrector removes what is left) and the null part
+  /// is kept, with no rank decision. The rank is counted from the pivots of the same
+  /// factorisation: every Schur complement of JᵀJ + εI is at least ε, a null direction leaves a
+  /// pivot near ε, so pivots below rank_tolerance × the largest count as zero (σ below
+  /// √rank_tolerance·σ_max). An estimate: LDLᵀ pivots are not rank revealing, and on random sparse
+  /// matrices the count ran 1–3 above the SVD rank (test/geometry/null_space_test.cpp).
+  /// @param jacobian  J, rows × n
+  /// @param desired   w, size n
+  /// @return the projection; `desired` itself (rank 0) when J has no rows or no entries, and a
+  ///         zero velocity with rank n and pivot_ratio 0 when the factorisation fails
   NullSpaceVelocity project_onto_null_space(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& desired);
 
-  // The Gauss–Newton step toward the closure manifold of least norm, Δ = −J⁺r, computed as
-  // −(JᵀJ + εI)⁻¹Jᵀr. False when the factorisation fails or the step is not finite.
+  /// The Gauss–Newton step toward the closure manifold of least norm, Δ = −J⁺r, computed as
+  /// −(JᵀJ + εI)⁻¹Jᵀr.
+  /// @param jacobian  J, rows × n
+  /// @param residual  r, size rows
+  /// @param step      set to Δ, size n
+  /// @return false when the factorisation fails or the step is not finite
   bool min_norm_step(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& residual, Eigen::VectorXd& step);
 
-  // J's numerical rank: singular values above relative_tolerance·max(σ_max, scale_floor) count
-  // (scale_floor: the size of an entry of J that is not rounding, so that a J zero to rounding
-  // has rank 0; 0 leaves the tolerance purely relative). Up to
-  // dense_limit columns, a dense SVD; above, subspace iteration with (JᵀJ + εI)⁻¹ through this
-  // solver's factorisation, a block that starts at the LDLᵀ estimate's nullity + 4 columns and
-  // doubles until some of its Ritz values are kept, then the SVD of J times that block: its
-  // singular values bound J's smallest ones from above and converge to them. A block method,
-  // not Lanczos, because the decision counts a multiple singular value. Deterministic.
+  /// J's numerical rank: singular values above relative_tolerance·max(σ_max, scale_floor) count
+  /// (scale_floor: the size of an entry of J that is not rounding, so that a J zero to rounding
+  /// has rank 0; 0 leaves the tolerance purely relative). Up to
+  /// dense_limit columns, a dense SVD; above, subspace iteration with (JᵀJ + εI)⁻¹ through this
+  /// solver's factorisation, a block that starts at the LDLᵀ estimate's nullity + 4 columns and
+  /// doubles until some of its Ritz values are kept, then the SVD of J times that block: its
+  /// singular values bound J's smallest ones from above and converge to them. A block method,
+  /// not Lanczos, because the decision counts a multiple singular value. Deterministic.
+  /// @param jacobian            J, rows × n
+  /// @param relative_tolerance  threshold relative to max(σ_max, scale_floor)
+  /// @param dense_limit         most columns decided by a dense SVD
+  /// @param scale_floor         floor of the scale the tolerance is relative to
+  /// @return the decision; rank 0 and method "none" when J has no rows or no entries
+  /// @throws std::runtime_error when the sparse factorisation of the subspace iteration fails
   RankDecision decide_rank(const Eigen::SparseMatrix<double>& jacobian, double relative_tolerance = 1e-8,
                            Eigen::Index dense_limit = 400, double scale_floor = 0.0);
 
-  // How many times the ordering and symbolic analysis were computed (for tests).
+  /// How many times the ordering and symbolic analysis were computed (for tests).
   int analyses() const { return analyses_; }
 
  private:
@@ -86,9 +107,10 @@ class LeastNormSolver {
   int analyses_ = 0;
 };
 
-// One-off forms of the above (a fresh analysis each call).
+/// One-off form of LeastNormSolver::project_onto_null_space (a fresh analysis each call).
 NullSpaceVelocity project_onto_null_space(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& desired,
                                           double rank_tolerance);
+/// One-off form of LeastNormSolver::min_norm_step (a fresh analysis each call).
 bool min_norm_step(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& residual, double rank_tolerance,
                    Eigen::VectorXd& step);
 

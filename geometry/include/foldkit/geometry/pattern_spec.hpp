@@ -1,4 +1,6 @@
 #pragma once
+/// @file
+/// A crease pattern as written in a file, before any check (PMML, paper Table 1).
 #include <array>
 #include <string>
 #include <vector>
@@ -7,33 +9,36 @@
 
 namespace foldkit::geometry {
 
-// A crease pattern as written (PMML Table 1): coordinates per triangle, IDs as given.
-// Nothing is merged or checked here; build_pattern() turns a spec into a CreasePattern.
+/// One triangle of an actor as written (PMML `<Triangle>`). Nothing is merged or checked here;
+/// build_pattern() turns a PatternSpec into a CreasePattern.
 struct TriangleSpec {
-  std::array<Vec2, 3> corners;
-  int line = 0;
+  std::array<Vec2, 3> corners;  ///< corner coordinates, pattern units, either orientation
+  int line = 0;                 ///< source line; 0 when not read from a file
 };
 
+/// An actor (rigid facet) as written (PMML `<Actor>`): an ID and its triangles.
 struct ActorSpec {
-  int id = 0;
-  std::vector<TriangleSpec> triangles;
-  int line = 0;
+  int id = 0;                           ///< the actor's ID, as given (unique in a valid pattern)
+  std::vector<TriangleSpec> triangles;  ///< its triangles, which must share edges
+  int line = 0;                         ///< source line; 0 when not read from a file
 };
 
+/// A joint (crease) as written (PMML `<Joint>`): a segment between two actors.
 struct JointSpec {
-  int id = 0;
-  std::array<Vec2, 2> coords;
-  std::array<int, 2> actor_ids{};
-  double spring = 0.0;
-  double damping = 0.0;
-  Assignment assignment = Assignment::Unassigned;  // extension: <Assignment>
-  int line = 0;
+  int id = 0;                       ///< the joint's ID, as given (unique in a valid pattern)
+  std::array<Vec2, 2> coords;       ///< the crease's two ends, pattern units
+  std::array<int, 2> actor_ids{};   ///< IDs (not indices) of the two actors it joins
+  double spring = 0.0;              ///< PMML SpringConst (finite, ≥ 0)
+  double damping = 0.0;             ///< PMML DampConst (finite, ≥ 0)
+  Assignment assignment = Assignment::Unassigned;  ///< foldkit's PMML extension `<Assignment>`
+  int line = 0;                     ///< source line; 0 when not read from a file
 };
 
+/// A whole crease pattern as written: coordinates per triangle, IDs as given.
 struct PatternSpec {
-  std::string title;
-  std::vector<ActorSpec> actors;
-  std::vector<JointSpec> joints;
+  std::string title;               ///< free text
+  std::vector<ActorSpec> actors;   ///< in file order
+  std::vector<JointSpec> joints;   ///< in file order
 };
 
 }  // namespace foldkit::geometry

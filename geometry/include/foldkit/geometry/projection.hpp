@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "foldkit/geometry/closure.hpp"
+#include "foldkit/geometry/status.hpp"
 
 namespace foldkit::geometry {
 
@@ -19,10 +20,12 @@ struct ProjectionOptions {
 
 struct ProjectionResult {
   FoldState state;
-  bool converged = false;
+  // Success (closed within the tolerance), InvalidInput (a non-finite start angle),
+  // LimitReached (max_iterations) or NoProgress (no step reduces the residual); the message
+  // says which.
+  Status status;
   int iterations = 0;
   double error = 0.0;   // largest loop error at `state`
-  std::string message;  // why it stopped
 };
 
 // Levenberg–Marquardt with minimum-norm steps Δ = −Jᵀ(JJᵀ + λI)⁻¹ r (sparse LDLᵀ), damping

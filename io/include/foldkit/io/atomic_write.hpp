@@ -1,21 +1,30 @@
 #pragma once
+/// @file
+/// Whole-file reads, and writes that never leave a partial file behind.
 #include <stdexcept>
 #include <string>
 
+/// Reading and writing foldkit's file formats: PMML patterns, CMML fold sequences, FOLD 1.2
+/// import and export, SVG drawings, and the number formatting they share.
 namespace foldkit::io {
 
-// A file could not be written; what() is "PATH: cannot write: reason".
+/// A file could not be written; what() is "PATH: cannot write: reason".
 class WriteError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
-// Writes to a temporary file beside `path`, then renames it over `path`: readers never see a
-// partial file, and a failure leaves any old file untouched. A symbolic link is followed (its
-// target is replaced), and an existing file keeps its permissions. Throws WriteError.
+/// Writes to a temporary file beside `path`, then renames it over `path`: readers never see a
+/// partial file, and a failure leaves any old file untouched. A symbolic link is followed (its
+/// target is replaced); an existing file keeps its permissions, a new one gets those the umask
+/// allows. The data is synced to disk before the rename.
+/// @param path     the file to write
+/// @param content  its bytes
+/// @throws WriteError when any step fails (the temporary file is removed)
 void write_file_atomic(const std::string& path, const std::string& content);
 
-// Whole file as bytes; throws ParseError(path, 0, …) when it cannot be read.
+/// Whole file as bytes.
+/// @throws ParseError (path, line 0) when it cannot be opened or read, or is a directory
 std::string read_file(const std::string& path);
 
 }  // namespace foldkit::io

@@ -1,21 +1,30 @@
 #pragma once
+/// @file
+/// CMML fold sequences (paper Table 2): reading and writing.
 #include <string>
 
 #include "foldkit/geometry/fold_sequence.hpp"
 
 namespace foldkit::io {
 
-// CMML (paper Table 2): FoldAngle in degrees within [−180, 180], Velocity in degrees per
-// second, positive (also once converted to radians: 5e-324 is rejected as too small);
-// EventNumber a non-negative integer. The text must be UTF-8. Throws ParseError.
+/// Parses CMML text (paper Table 2): FoldAngle in degrees within [−180, 180], Velocity in
+/// degrees per second, positive (also once converted to radians: 5e-324 is rejected as too
+/// small); EventNumber a non-negative integer. The text must be UTF-8. Angles and velocities are
+/// returned in radians, folds grouped into events by number (geometry::make_sequence).
+/// @param text  the file's content
+/// @param name  the file name used in error messages
+/// @throws ParseError for anything that is not CMML, at the offending line
 geometry::FoldSequence parse_cmml(const std::string& text, const std::string& name);
+/// Reads and parses the CMML file at `path`.
+/// @throws ParseError when the file cannot be read or is not CMML
 geometry::FoldSequence read_cmml(const std::string& path);
 
-// Angles are clamped to [−π, π] and written in degrees; angles within rounding of ±180° are
-// written as ±180, so every written angle reads back. Throws std::invalid_argument for a
-// non-finite angle or velocity, a velocity ≤ 0, or one whose degrees overflow or are too small
-// to read back as positive. The title is written with escape rules that keep the file valid
-// XML (see detail::escape_xml: forbidden characters become U+FFFD).
+/// The CMML text of `sequence`. Angles are clamped to [−π, π] and written in degrees; angles
+/// within rounding of ±180° are written as ±180, so every written angle reads back. Velocities
+/// are written in degrees per second. The title is written with escape rules that keep the file
+/// valid XML (characters XML forbids become U+FFFD).
+/// @throws std::invalid_argument for a non-finite angle or velocity, a velocity ≤ 0, or one
+///         whose degrees overflow or are too small to read back as positive
 std::string write_cmml(const geometry::FoldSequence& sequence);
 
 }  // namespace foldkit::io

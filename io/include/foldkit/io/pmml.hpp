@@ -1,4 +1,6 @@
 #pragma once
+/// @file
+/// PMML crease patterns (paper Table 1): reading and writing.
 #include <string>
 
 #include "foldkit/geometry/crease_pattern.hpp"
@@ -6,21 +8,30 @@
 
 namespace foldkit::io {
 
-// PMML (paper Table 1). `name` is used in error messages. Throws ParseError for anything that
-// is not PMML: unknown elements, missing or repeated fields, non-integer IDs, non-finite numbers,
-// text that is not UTF-8. The title keeps its inner whitespace; leading and trailing whitespace
-// is trimmed.
+/// Parses PMML text (paper Table 1) into a spec, unchecked geometrically (build_pattern() does
+/// that). The title keeps its inner whitespace; leading and trailing whitespace is trimmed.
+/// @param text  the file's content
+/// @param name  the file name used in error messages
+/// @throws ParseError for anything that is not PMML: unknown elements, missing or repeated
+///         fields, non-integer IDs, non-finite numbers, no actor, text that is not UTF-8
 geometry::PatternSpec parse_pmml(const std::string& text, const std::string& name);
+/// Reads and parses the PMML file at `path`.
+/// @throws ParseError when the file cannot be read or is not PMML
 geometry::PatternSpec read_pmml_spec(const std::string& path);
 
-// Reads and builds; geometric errors (build_pattern diagnostics) are thrown as one ParseError
-// carrying the first error, after every diagnostic is formatted into its message.
+/// Reads, parses and builds the PMML file at `path`.
+/// @param path     the file
+/// @param options  tolerances and repairs of build_pattern()
+/// @throws ParseError as read_pmml_spec(), and for a pattern build_pattern() rejects: one
+///         ParseError at the line of the first error, whose message says how many more there are
 geometry::CreasePattern read_pmml(const std::string& path, const geometry::BuildOptions& options = {});
 
-// Throws std::invalid_argument ("…: not a finite number") for a non-finite coordinate, spring
-// or damping constant: a written file never holds NaN or inf. The title is written so that the
-// file stays valid XML (characters XML forbids become U+FFFD).
+/// The PMML text of `spec`; an assignment is written only when it is not Unassigned. The title
+/// is written so that the file stays valid XML (characters XML forbids become U+FFFD).
+/// @throws std::invalid_argument ("…: not a finite number") for a non-finite coordinate, spring
+///         or damping constant: a written file never holds NaN or inf
 std::string write_pmml(const geometry::PatternSpec& spec);
+/// The PMML text of `pattern` (its CreasePattern::to_spec(): vertex coordinates after merging).
 std::string write_pmml(const geometry::CreasePattern& pattern);
 
 }  // namespace foldkit::io

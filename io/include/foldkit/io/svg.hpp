@@ -1,4 +1,6 @@
 #pragma once
+/// @file
+/// SVG drawings of flat crease patterns.
 #include <string>
 
 #include "foldkit/geometry/crease_pattern.hpp"
@@ -6,16 +8,20 @@
 
 namespace foldkit::io {
 
+/// How write_svg() draws a pattern.
 struct SvgOptions {
-  // 0: scale so that the longer side of the drawing is 800 px, whatever the pattern's units.
+  /// Scale, pixels per pattern unit; 0 scales so that the longer side of the drawing is 800 px,
+  /// whatever the pattern's units.
   double pixels_per_unit = 0.0;
-  bool joint_ids = false;
-  // With a state, a crease is drawn by the sign of its angle; without, by its assignment.
+  bool joint_ids = false;  ///< label each crease with its joint ID
+  /// With a state (one angle per joint, not owned), a crease is drawn by the sign of its angle;
+  /// without, by its assignment.
   const geometry::FoldState* state = nullptr;
 };
 
-// Mountain: red solid; valley: blue dashed; unassigned/flat: grey; boundary: black
-// (Origami Simulator's colours, so its SVG importer reads ours).
+/// The flat sheet as SVG, y pointing up as in the pattern, with a 20 px margin. Mountain: red
+/// solid; valley: blue dashed; unassigned/flat: grey; boundary: black (Origami Simulator's
+/// colours, so its SVG importer reads ours).
 std::string write_svg(const geometry::CreasePattern& pattern, const SvgOptions& options = {});
 
 }  // namespace foldkit::io

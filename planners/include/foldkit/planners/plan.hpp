@@ -5,6 +5,7 @@
 
 #include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/fold_sequence.hpp"
+#include "foldkit/geometry/status.hpp"
 #include "foldkit/simulation/simulate.hpp"
 
 namespace foldkit::planners {
@@ -49,8 +50,11 @@ struct PlanRequest {
 };
 
 struct PlanResult {
-  bool solved = false;          // a valid plan, replayed by the simulator when requested
-  std::string planner, space, message;
+  // Success: a valid plan, replayed by the simulator when requested. Otherwise LimitReached (no
+  // plan within the time), Collision (the way out of the start collides, or the replay found
+  // one), ClosureViolated (the path leaves the closure manifold, or the replay says so).
+  geometry::Status status;
+  std::string planner, space;
   double time = 0.0;            // seconds the planner ran
   double path_length = 0.0;     // Σ Euclidean joint-angle distance between waypoints, radians
   double max_closure_error = 0.0;  // largest loop error over the waypoints and the replay

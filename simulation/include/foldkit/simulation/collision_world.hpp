@@ -1,4 +1,6 @@
 #pragma once
+/// @file
+/// Collision detection between the facets of a folding sheet, through FCL.
 #include <array>
 #include <memory>
 #include <optional>
@@ -11,75 +13,93 @@
 
 namespace foldkit::simulation {
 
+/// How candidate pairs of facets are found before the exact test.
 enum class BroadPhase {
-  DynamicAabbTree,  // FCL's dynamic AABB tree manager (the default)
-  AllPairs,         // every pair through the narrow phase: the baseline benchmarks compare with
+  DynamicAabbTree,  ///< FCL's dynamic AABB tree manager (the default)
+  AllPairs,         ///< every pair through the narrow phase: the baseline benchmarks compare with
 };
 
+/// Tolerances and broad phase of a CollisionWorld.
 struct CollisionOptions {
-  // Distance (relative to the sheet's bounding-box diagonal) within which points count as
-  // touching: a facet must pass farther than this through another to cross it.
+  /// Distance (relative to the sheet's bounding-box diagonal) within which points count as
+  /// touching: a facet must pass farther than this through another to cross it. Finite, ≥ 0.
   double tolerance = 1e-6;
-  // Absolute distance by which every facet's bounding box grows, so that pairs that may meet
-  // before the next check are compared now (the simulator passes its largest sweep per check).
+  /// Absolute distance (pattern units; finite, ≥ 0) by which every facet's bounding box grows,
+  /// so that pairs that may meet before the next check are compared now (the simulator passes
+  /// its largest sweep per check).
   double margin = 0.0;
-  BroadPhase broad_phase = BroadPhase::DynamicAabbTree;
+  BroadPhase broad_phase = BroadPhase::DynamicAabbTree;  ///< how candidate pairs are found
 };
 
+/// How two facets were found to cross.
 enum class CrossingKind {
-  Mesh,     // the facets' triangles cut through each other
-  Stacked,  // facets lying flat on each other changed sides between two checks
-  Crease,   // a crease turned past ±180°: its two facets passed through each other
+  Mesh,     ///< the facets' triangles cut through each other
+  Stacked,  ///< facets lying flat on each other changed sides between two checks
+  Crease,   ///< a crease turned past ±180°: its two facets passed through each other
 };
+/// The kind's name: "mesh", "stacked" or "crease".
 const char* to_string(CrossingKind kind);
 
+/// Two facets that pass through each other.
 struct Crossing {
-  std::array<int, 2> actors{};  // actor indices, smaller first
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // world coordinates
-  CrossingKind kind = CrossingKind::Mesh;
-  // Mesh crossings: how far the deepest-crossing pair of triangles interpenetrates (sheet units;
-  // the smaller reach of either triangle through the other's plane). 0 for the other kinds.
+  std::array<int, 2> actors{};  ///< actor indices, smaller first
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< where, in world coordinates (the frame of the poses)
+  CrossingKind kind = CrossingKind::Mesh;  ///< how they cross
+  /// Mesh crossings: how far the deepest-crossing pair of triangles interpenetrates (sheet units;
+  /// the smaller reach of either triangle through the other's plane). 0 for the other kinds.
   double depth = 0.0;
 };
 
-// The sheet's facets as FCL triangle meshes. Pairs of facets that share a crease are left out of
-// the mesh test and judged by their fold angle instead; every other pair near enough for the
-// broad phase is judged by the rules of docs/SIMULATION.md: touching is allowed, crossing is not.
-//
-// A pair is judged in the frame of its first facet, with the second placed through the creases
-// of the shortest chain of facets between them (round their common vertex, for facets that share
-// one), not through the poses given: those come from one spanning tree, and a state that closes
-// only to round-off or to an interpolation's error (1e-5 rad) opens, along a tree 100 facets
-// deep, into gaps and overlaps of hundredths of the sheet's unit between facets that hang from
-// different branches. The given poses serve the broad phase (grown by their measured mismatch
-// across the creases outside the tree) and pairs in different components of the sheet.
+/// The sheet's facets as FCL triangle meshes. Pairs of facets that share a crease are left out of
+/// the mesh test and judged by their fold angle instead; every other pair near enough for the
+/// broad phase is judged by the rules of docs/SIMULATION.md: touching is allowed, crossing is not.
+///
+/// A pair is judged in the frame of its first facet, with the second placed through the creases
+/// of the shortest chain of facets between them (round their common vertex, for facets that share
+/// one), not through the poses given: those come from one spanning tree, and a state that closes
+/// only to round-off or to an interpolation's error (1e-5 rad) opens, along a tree 100 facets
+/// deep, into gaps and overlaps of hundredths of the sheet's unit between facets that hang from
+/// different branches. The given poses serve the broad phase (grown by their measured mismatch
+/// across the creases outside the tree) and pairs in different components of the sheet.
+///
+/// A world remembers the motion it checks, so one world serves one thread at a time.
 class CollisionWorld {
  public:
-  // Keeps a reference to `pattern`, which must outlive the world.
+  /// Builds the facet meshes of `pattern`. Keeps a reference to `pattern`, which must outlive
+  /// the world.
+  /// @throws std::invalid_argument when options.tolerance or options.margin is negative or not
+  ///         finite
   explicit CollisionWorld(const geometry::CreasePattern& pattern, const CollisionOptions& options = {});
+  /// Deleted: the world keeps a reference to its pattern, so a temporary one is refused.
   CollisionWorld(geometry::CreasePattern&&, const CollisionOptions& = {}) = delete;
-  ~CollisionWorld();
-  CollisionWorld(CollisionWorld&&) noexcept;
-  CollisionWorld& operator=(CollisionWorld&&) noexcept;
+  ~CollisionWorld();  ///< Frees the meshes.
+  CollisionWorld(CollisionWorld&&) noexcept;  ///< Takes over another world (left empty).
+  CollisionWorld& operator=(CollisionWorld&&) noexcept;  ///< Takes over another world (left empty).
 
-  // The crossings at `poses` (one per actor, as from geometry::facet_poses) and `state`. Each call
-  // remembers on which side of each other nearby stacked facets lie, so calls must follow the
-  // motion in order, close enough that no facet moves farther than `margin` between two.
+  /// The crossings at `poses` (one per actor, as from geometry::facet_poses) and `state` (one
+  /// angle per joint, radians). Each call remembers on which side of each other nearby stacked
+  /// facets lie, so calls must follow the motion in order, close enough that no facet moves
+  /// farther than `margin` between two.
+  /// @return every crossing found; empty when the state is free of collisions
+  /// @throws std::invalid_argument when `poses` or `state` has the wrong size
   std::vector<Crossing> check(const std::vector<Eigen::Isometry3d>& poses, const geometry::FoldState& state);
-  // Forgets that memory (a new motion starts).
+  /// Forgets that memory (a new motion starts).
   void reset();
 
-  // Whether facets `a` and `b` (actor indices, not hinged together) cut through each other at
-  // `state`, judged as check() judges a mesh crossing but without its broad phase or memory;
-  // `poses` place facets of different components. Used to test a crossing again at a nearby
-  // state (the simulator's closed-state recheck).
+  /// Whether facets `a` and `b` (actor indices, not hinged together) cut through each other at
+  /// `state`, judged as check() judges a mesh crossing but without its broad phase or memory;
+  /// `poses` place facets of different components. Used to test a crossing again at a nearby
+  /// state (the simulator's closed-state recheck).
+  /// @return the crossing, or nothing when they do not cross
+  /// @throws std::invalid_argument when `a` or `b` is out of range, a = b, or `poses` or `state`
+  ///         has the wrong size
   std::optional<Crossing> mesh_crossing(int a, int b, const std::vector<Eigen::Isometry3d>& poses,
                                         const geometry::FoldState& state);
 
-  double tolerance() const;                 // absolute
-  std::size_t checked_pairs() const;        // pairs the broad phase passed on the last check
-  std::size_t mesh_tests() const;           // pairs that went to FCL's narrow phase on the last check
-  std::size_t skipped_pairs() const;        // facet pairs that share a crease
+  double tolerance() const;                 ///< the touching distance, absolute (pattern units)
+  std::size_t checked_pairs() const;        ///< pairs the broad phase passed on the last check
+  std::size_t mesh_tests() const;           ///< pairs that went to FCL's narrow phase on the last check
+  std::size_t skipped_pairs() const;        ///< facet pairs that share a crease
 
  private:
   struct Impl;

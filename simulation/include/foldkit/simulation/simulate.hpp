@@ -10,6 +10,7 @@
 #include "foldkit/geometry/fold_sequence.hpp"
 #include "foldkit/geometry/fold_state.hpp"
 #include "foldkit/geometry/progress.hpp"
+#include "foldkit/geometry/status.hpp"
 #include "foldkit/simulation/collision_world.hpp"
 
 namespace foldkit::simulation {
@@ -74,7 +75,10 @@ struct Frame {
 };
 
 struct SimulationReport {
-  bool ok = true;
+  // Success (valid: closed within the tolerance, no collision, every event reached), else the
+  // code of the first problem: ClosureViolated, Collision or LimitReached (an event the spring
+  // model did not finish); its message is that problem. ok() is what exit code 3 reports.
+  geometry::Status status;
   Actuation model = Actuation::Motor;
   double time_step = 0.0;
   double duration = 0.0;

@@ -1,4 +1,7 @@
 #pragma once
+/// @file
+/// What a valid fold state and a valid motion are, for OMPL's planners: angle bounds, closed
+/// loops, and no crossing facets.
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -14,41 +17,53 @@
 
 namespace foldkit::statespaces {
 
-// Reads the fold angles of an OMPL state of some space; false when the state holds none (a
-// single-vertex state without a root).
+/// Reads the fold angles of an OMPL state of some space into its second argument; false when
+/// the state holds none (a single-vertex state without a root).
 using StateReader = std::function<bool(const ompl::base::State*, geometry::FoldState&)>;
+/// The reader of SingleVertexStateSpace states: false for a state that is not closed.
 StateReader single_vertex_reader(std::shared_ptr<const SingleVertexStateSpace> space);
+/// The reader of states of a constrained space (ompl::base::ConstrainedStateSpace); never false.
 StateReader constrained_reader();
 
-// What a valid state is: every angle within its bounds, every loop closed within
-// `closure_tolerance` (the simulator's, 1e-3 rad), and — when collisions are checked — no
-// crossing facets, judged by the simulator's own CollisionWorld (same pairs, same tolerance).
-//
-// Safe to use from several threads at once (OMPL's PRM and PRM* check states in parallel): a
-// collision world remembers the previous state of a motion, so each check or motion takes a world
-// of its own from a pool (one per thread at most, built on first need) and gives it back after.
+/// What a valid state is: finite angles, every angle within its bounds (to 1e-9 rad), every loop
+/// closed within `closure_tolerance` (the simulator's, 1e-3 rad), and — when collisions are
+/// checked — no crossing facets, judged by the simulator's own CollisionWorld (same pairs, same
+/// tolerance).
+///
+/// Safe to use from several threads at once (OMPL's PRM and PRM* check states in parallel): a
+/// collision world remembers the previous state of a motion, so each check or motion takes a world
+/// of its own from a pool (one per thread at most, built on first need) and gives it back after.
 class FoldValidity {
  public:
+  /// The validity of `pattern`'s states, which keeps a reference to `pattern`: the pattern must
+  /// outlive it. Collision worlds are built on first need, so invalid `collision` options throw
+  /// (std::invalid_argument) from the first check, not here.
+  /// @param pattern            the pattern
+  /// @param bounds             per-joint angle bounds
+  /// @param check_collisions   whether crossing facets make a state invalid
+  /// @param closure_tolerance  largest loop error accepted, radians (geometry::ClosureSystem::max_error)
+  /// @param collision          options of the collision worlds
   FoldValidity(const geometry::CreasePattern& pattern, AngleBounds bounds, bool check_collisions,
                double closure_tolerance = 1e-3, const simulation::CollisionOptions& collision = {});
-  ~FoldValidity();
-  FoldValidity(const FoldValidity&) = delete;
-  FoldValidity& operator=(const FoldValidity&) = delete;
+  ~FoldValidity();  ///< Frees the pooled collision worlds; no Motion may outlive it.
+  FoldValidity(const FoldValidity&) = delete;             ///< Not copyable.
+  FoldValidity& operator=(const FoldValidity&) = delete;  ///< Not copyable.
 
-  // An isolated state.
+  /// Whether an isolated state (one angle per joint, radians) is valid.
   bool valid(const geometry::FoldState& state) const;
 
-  // The states of one motion, checked in order by one thread: stacked facets are judged against
-  // the motion's previous state. Holds a collision world until it is destroyed.
+  /// The states of one motion, checked in order by one thread: stacked facets are judged against
+  /// the motion's previous state. Holds a collision world until it is destroyed.
   class Motion {
    public:
+    /// Takes a collision world from `validity`'s pool (none when collisions are not checked).
     explicit Motion(const FoldValidity& validity);
-    ~Motion();
-    Motion(const Motion&) = delete;
-    Motion& operator=(const Motion&) = delete;
-    // The motion's first state (its collision memory is cleared first).
+    ~Motion();  ///< Gives the collision world back to the pool.
+    Motion(const Motion&) = delete;             ///< Not copyable.
+    Motion& operator=(const Motion&) = delete;  ///< Not copyable.
+    /// Whether the motion's first state is valid (its collision memory is cleared first).
     bool valid_first(const geometry::FoldState& state);
-    // The next state along the motion.
+    /// Whether the next state along the motion is valid.
     bool valid_next(const geometry::FoldState& state);
 
    private:
@@ -56,11 +71,15 @@ class FoldValidity {
     std::unique_ptr<simulation::CollisionWorld> world_;  // null: collisions are not checked
   };
 
+  /// The pattern whose states are checked.
   const geometry::CreasePattern& pattern() const { return *pattern_; }
+  /// The per-joint angle bounds.
   const AngleBounds& bounds() const { return bounds_; }
+  /// Largest loop error accepted, radians.
   double closure_tolerance() const { return closure_tolerance_; }
+  /// Whether crossing facets make a state invalid.
   bool checks_collisions() const { return check_collisions_; }
-  // Collision worlds built so far (at most the number of threads that checked at once; tests).
+  /// Collision worlds built so far (at most the number of threads that checked at once; tests).
   std::size_t worlds_built() const;
 
  private:
@@ -80,10 +99,14 @@ class FoldValidity {
   mutable std::size_t built_ = 0;
 };
 
+/// OMPL's state validity checker on a FoldValidity: a state is valid when `reader` gets fold
+/// angles from it and they are valid.
 class FoldValidityChecker : public ompl::base::StateValidityChecker {
  public:
+  /// A checker for the states of `si`'s space, read by `reader`.
   FoldValidityChecker(const ompl::base::SpaceInformationPtr& si, std::shared_ptr<const FoldValidity> validity,
                       StateReader reader);
+  /// Whether `state` holds fold angles and they pass FoldValidity::valid.
   bool isValid(const ompl::base::State* state) const override;
 
  private:
@@ -91,19 +114,30 @@ class FoldValidityChecker : public ompl::base::StateValidityChecker {
   StateReader reader_;
 };
 
-// Checks a motion by the space's interpolation at `resolution` (radians of the largest joint
-// change per check). Between two checks no joint may move more than `max_jump`: a larger change
-// is bisected (up to 12 times) and, if it does not shrink, is a jump — a branch switch away from
-// where the roots meet, or a passive angle wrapping round ±π — and the motion is invalid. The
-// states of a motion are checked in order, the collision world remembering stacked facets.
+/// Checks a motion by the space's interpolation at `resolution` (radians of the largest joint
+/// change per check). Between two checks no joint may move more than `max_jump`: a larger change
+/// is bisected (up to 12 times) and, if it does not shrink, is a jump — a branch switch away from
+/// where the roots meet, or a passive angle wrapping round ±π — and the motion is invalid. The
+/// states of a motion are checked in order, the collision world remembering stacked facets.
 class FoldMotionValidator : public ompl::base::MotionValidator {
  public:
+  /// A validator for motions in `si`'s space, whose states `reader` reads.
+  /// @param si          the space information (its space interpolates)
+  /// @param validity    what a valid state is
+  /// @param reader      reads fold angles from a state of the space
+  /// @param resolution  largest joint change between two checked states, radians
+  /// @param max_jump    largest joint change allowed between two checked states before
+  ///                    bisection, radians
   FoldMotionValidator(const ompl::base::SpaceInformationPtr& si, std::shared_ptr<const FoldValidity> validity,
                       StateReader reader, double resolution = 0.02, double max_jump = 0.05);
+  /// Whether the motion from `s1` to `s2` is valid, `s1` included.
   bool checkMotion(const ompl::base::State* s1, const ompl::base::State* s2) const override;
+  /// As the other overload; on failure `lastValid` gets the fraction of the motion last found
+  /// valid and, when its state is not null, that state.
   bool checkMotion(const ompl::base::State* s1, const ompl::base::State* s2,
                    std::pair<ompl::base::State*, double>& lastValid) const override;
 
+  /// Largest joint change between two checked states, radians.
   double resolution() const { return resolution_; }
 
  private:
