@@ -14,7 +14,10 @@
 
 #include "cli_common.hpp"
 #include "foldkit/io/atomic_write.hpp"
-#include "foldkit/planners/bench_suite.hpp"
+#include "foldkit/bench/deterministic_planner.hpp"
+#include "foldkit/bench/log.hpp"
+#include "foldkit/bench/run.hpp"
+#include "foldkit/bench/scenes.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 
 namespace foldkit::apps {
@@ -58,7 +61,7 @@ std::pair<unsigned int, unsigned int> parse_shard(const std::string& text) {
 class Progress {
  public:
   Progress() : tty_(isatty(fileno(stderr)) != 0) {}
-  void operator()(const planners::BenchProgress& p) {
+  void operator()(const bench::BenchProgress& p) {
     if (tty_) {
       const int width = 30;
       const int filled = p.total ? static_cast<int>(width * p.done / p.total) : width;
@@ -79,17 +82,17 @@ class Progress {
 
 int list(bool json) {
   nlohmann::json suites = nlohmann::json::array();
-  for (const auto& s : planners::bench_suites())
+  for (const auto& s : bench::bench_suites())
     suites.push_back({{"name", s.name}, {"description", s.description}, {"scenes", s.scenes}, {"planners", s.planners}});
-  nlohmann::json sampling = planners::planner_names(), deterministic = planners::deterministic_planner_names();
+  nlohmann::json sampling = planners::planner_names(), deterministic = bench::deterministic_planner_names();
   if (json) {
     print_json({{"suites", suites},
-                {"scenes", planners::bench_scene_names()},
+                {"scenes", bench::bench_scene_names()},
                 {"planners", {{"sampling", sampling}, {"deterministic", deterministic}}}});
     return kOk;
   }
   std::cerr << "suites:\n";
-  for (const auto& s : planners::bench_suites()) {
+  for (const auto& s : bench::bench_suites()) {
     std::cerr << "  " << s.name << ": " << s.description << "\n    scenes:";
     for (const auto& x : s.scenes) std::cerr << ' ' << x;
     std::cerr << "\n    planners:";
@@ -97,11 +100,11 @@ int list(bool json) {
     std::cerr << '\n';
   }
   std::cerr << "scenes (--scenes):";
-  for (const auto& x : planners::bench_scene_names()) std::cerr << ' ' << x;
+  for (const auto& x : bench::bench_scene_names()) std::cerr << ' ' << x;
   std::cerr << "\nsampling planners (--planners):";
   for (const auto& x : planners::planner_names()) std::cerr << ' ' << x;
   std::cerr << "\ndeterministic planners (--planners):";
-  for (const auto& x : planners::deterministic_planner_names()) std::cerr << ' ' << x;
+  for (const auto& x : bench::deterministic_planner_names()) std::cerr << ' ' << x;
   std::cerr << '\n';
   return kOk;
 }
@@ -137,7 +140,7 @@ Command add_bench(CLI::App& root) {
             if (opt->list) return list(opt->json);
             if (opt->suite.empty()) throw UsageError("name a suite (quick, full; see --list)");
             if (opt->output.empty()) throw UsageError("-o DIR is required");
-            planners::BenchOptions o;
+            bench::BenchOptions o;
             o.suite = opt->suite;
             o.time = opt->time;
             o.runs = opt->runs;
@@ -148,14 +151,14 @@ Command add_bench(CLI::App& root) {
             if (!opt->scenes.empty()) o.scenes = split_list(opt->scenes, "--scenes");
             o.output_dir = opt->output;
             Progress progress;
-            o.progress = [&progress](const planners::BenchProgress& p) { progress(p); };
+            o.progress = [&progress](const bench::BenchProgress& p) { progress(p); };
             if (!opt->error_vs_time.empty()) {
               const std::vector<double> limits = parse_times(opt->error_vs_time);
               if (o.shards != 1) throw UsageError("--error-vs-time runs unsharded");
-              const auto rows = planners::run_error_vs_time(o, limits);
+              const auto rows = bench::run_error_vs_time(o, limits);
               std::filesystem::create_directories(o.output_dir);
               const std::string csv = (std::filesystem::path(o.output_dir) / "error_vs_time.csv").string();
-              io::write_file_atomic(csv, planners::error_vs_time_csv(rows));
+              io::write_file_atomic(csv, bench::error_vs_time_csv(rows));
               std::cerr << "wrote " << csv << " (" << rows.size() << " runs)\n";
               if (opt->json) {
                 std::size_t exact = 0;
@@ -164,7 +167,7 @@ Command add_bench(CLI::App& root) {
               }
               return kOk;
             }
-            const auto results = planners::run_bench(o);
+            const auto results = bench::run_bench(o);
             std::size_t runs = 0, solved = 0;
             nlohmann::json scenes = nlohmann::json::array(), logs = nlohmann::json::array();
             for (const auto& r : results) {
@@ -202,7 +205,7 @@ Command add_bench_merge(CLI::App& root) {
   app->add_option("-o,--output", opt->output, "Output folder")->required();
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
   return {app, [opt]() -> int {
-            std::map<std::string, std::vector<std::pair<std::string, planners::BenchLog>>> by_scene;
+            std::map<std::string, std::vector<std::pair<std::string, bench::BenchLog>>> by_scene;
             for (const std::string& dir : opt->inputs) {
               if (!std::filesystem::is_directory(dir)) throw UsageError(dir + " is not a folder");
               std::vector<std::string> files;
@@ -210,9 +213,9 @@ Command add_bench_merge(CLI::App& root) {
                 if (e.is_regular_file() && has_extension(e.path().string(), ".log")) files.push_back(e.path().string());
               std::sort(files.begin(), files.end());
               for (const auto& f : files) {
-                planners::BenchLog log;
+                bench::BenchLog log;
                 try {
-                  log = planners::parse_bench_log(io::read_file(f), f);
+                  log = bench::parse_bench_log(io::read_file(f), f);
                 } catch (const std::invalid_argument& e) {
                   std::cerr << e.what() << '\n';
                   return kInvalidInput;
@@ -225,15 +228,15 @@ Command add_bench_merge(CLI::App& root) {
             nlohmann::json scenes = nlohmann::json::array();
             std::vector<std::pair<std::string, std::string>> outputs;
             for (const auto& [scene, entries] : by_scene) {
-              std::vector<planners::BenchLog> logs;
+              std::vector<bench::BenchLog> logs;
               std::vector<std::string> files;
               for (const auto& [f, l] : entries) {
                 files.push_back(f);
                 logs.push_back(l);
               }
-              planners::BenchLog merged;
+              bench::BenchLog merged;
               try {
-                merged = planners::merge_bench_logs(logs, files);
+                merged = bench::merge_bench_logs(logs, files);
               } catch (const std::invalid_argument& e) {
                 std::cerr << "foldkit bench-merge: " << e.what() << '\n';
                 return kInvalidInput;
@@ -245,7 +248,7 @@ Command add_bench_merge(CLI::App& root) {
                 return kInvalidInput;
               }
               const std::string out = (std::filesystem::path(opt->output) / (scene + ".log")).string();
-              outputs.emplace_back(out, planners::write_bench_log(merged));
+              outputs.emplace_back(out, bench::write_bench_log(merged));
               std::size_t runs = 0;
               for (const auto& p : merged.planners) runs += p.runs.size();
               scenes.push_back({{"scene", scene}, {"log", out}, {"shards", files.size()}, {"runs", runs}});

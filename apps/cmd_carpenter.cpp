@@ -8,6 +8,7 @@
 #include "cli_common.hpp"
 #include "progress_line.hpp"
 #include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/chain_file.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
 #include "foldkit/folding/carpenter.hpp"
@@ -64,7 +65,7 @@ int run_planar(const Options& opt) {
   if (!opt.output.empty() && !has_extension(opt.output, ".cmml") && !has_extension(opt.output, ".json") &&
       !has_extension(opt.output, ".csv"))
     throw UsageError(opt.output + ": unknown output format (expected .cmml, .json or .csv)");
-  folding::PlanarChain chain{folding::parse_chain_points(io::read_file(opt.chain), opt.chain), opt.closed};
+  folding::PlanarChain chain{io::parse_chain_points(io::read_file(opt.chain), opt.chain), opt.closed};
   try {
     folding::check_simple_chain(chain);
   } catch (const std::invalid_argument& e) {
@@ -81,12 +82,12 @@ int run_planar(const Options& opt) {
     if (has_extension(opt.output, ".cmml"))
       text = io::write_cmml(folding::turning_angle_sequence(frames, opt.closed, opt.chain));
     else if (has_extension(opt.output, ".json"))
-      text = folding::frames_json(frames, opt.closed);
+      text = io::frames_json(frames, opt.closed);
     else
-      text = folding::frames_csv(frames);
+      text = io::frames_csv(frames);
     io::write_file_atomic(opt.output, text);
   }
-  if (!opt.frames_csv.empty()) io::write_file_atomic(opt.frames_csv, folding::frames_csv(frames));
+  if (!opt.frames_csv.empty()) io::write_file_atomic(opt.frames_csv, io::frames_csv(frames));
   const char* goal = opt.closed ? "convex" : "straight";
   if (r.status.ok())
     std::cerr << opt.chain << ": " << goal << " after " << r.steps << " steps, " << r.frames.size() << " frames ("

@@ -4,6 +4,7 @@
 
 #include "cli_common.hpp"
 #include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/shape_file.hpp"
 #include "foldkit/folding/hamiltonian.hpp"
 
 namespace foldkit::apps {
@@ -57,7 +58,7 @@ Command add_hamiltonian(CLI::App& root) {
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
   return {app, [opt] {
             const std::string& path = opt->shape;
-            const bool three_d = folding::is_voxel_path(path);
+            const bool three_d = io::is_voxel_path(path);
             if (!three_d && !has_extension(path, ".txt") && !has_extension(path, ".grid") && !has_extension(path, ".pbm"))
               throw UsageError(path + ": unknown shape format (expected .txt, .grid, .pbm or .vox)");
             if (opt->refine && opt->cycle) throw UsageError("--refine always builds a cycle; --cycle is for the exact search");
@@ -71,11 +72,11 @@ Command add_hamiltonian(CLI::App& root) {
             folding::HamiltonianResult r;
             std::size_t cells = 0;
             if (three_d) {
-              const folding::VoxelShape s = folding::read_voxel_shape(path);
+              const folding::VoxelShape s = io::read_voxel_shape(path);
               cells = s.count() * (opt->refine ? 8 : 1);
               r = opt->refine ? folding::refined_hamiltonian_cycle(s) : folding::exact_hamiltonian(s, exact);
             } else {
-              const folding::PixelShape s = folding::read_pixel_shape(path);
+              const folding::PixelShape s = io::read_pixel_shape(path);
               cells = s.count() * (opt->refine ? 4 : 1);
               r = opt->refine ? folding::refined_hamiltonian_cycle(s) : folding::exact_hamiltonian(s, exact);
             }

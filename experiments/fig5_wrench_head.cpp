@@ -16,6 +16,8 @@
 #include "experiment_io.hpp"
 #include "foldkit/folding/carpenter.hpp"
 #include "foldkit/folding/hamiltonian.hpp"
+#include "foldkit/io/chain_file.hpp"
+#include "foldkit/io/shape_file.hpp"
 
 namespace {
 
@@ -54,7 +56,7 @@ double overlap(const Square& a, const Square& b) {
 int main(int argc, char** argv) {
   const experiments::Args args = experiments::parse_args(
       argc, argv, "fig5-output", "usage: fig5_wrench_head [--out DIR] [--check]\n");
-  const PixelShape shape = read_pixel_shape(FOLDKIT_EXPERIMENTS_DATA "/wrench_head.txt");
+  const PixelShape shape = io::read_pixel_shape(FOLDKIT_EXPERIMENTS_DATA "/wrench_head.txt");
   const std::size_t pixels = shape.count();
 
   // The exact search settles small shapes; the linear-time 2× refinement is the fallback.
@@ -95,7 +97,7 @@ int main(int argc, char** argv) {
   double end_error = 0.0;
   for (std::size_t i = 0; i < chain.size(); ++i) end_error = std::max(end_error, (fold.back()[i] - chain[i]).norm());
 
-  experiments::write_output(args, "frames.csv", frames_csv(fold));
+  experiments::write_output(args, "frames.csv", io::frames_csv(fold));
   std::string md = "# Fig. 5b: straight chain of cubes to a wrench head\n\n";
   md += "| figure | value |\n|---|---|\n";
   md += "| pixels in the shape | " + std::to_string(pixels) + " |\n";

@@ -13,12 +13,15 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/io/chain_file.hpp"
 #include "foldkit/io/parse_error.hpp"
 
 namespace {
 
 using namespace foldkit::folding;
 using Vec = Eigen::Vector2d;
+using foldkit::io::frames_csv;
+using foldkit::io::frames_json;
 
 // Oracle: do closed segments ab and cd share a point? By the parametric solve, not by orientation
 // signs, so it shares nothing with check_simple_chain.
@@ -297,26 +300,6 @@ TEST(CarpenterPlanar, InvalidChainsAreRejected) {
   EXPECT_NE(message({{{0, 0}, {std::nan(""), 0}}, false}).find("not finite"), std::string::npos);
   EXPECT_THROW(carpenter_planar({{{0, 0}, {2, 0}, {2, 1}, {1, -1}}, false}), std::invalid_argument);
   EXPECT_EQ(message({{{0, 0}, {1, 0}, {1, 1}}, false}), "accepted");
-}
-
-TEST(CarpenterPlanar, ChainFilesParseWithLocatedErrors) {
-  const Frame2 p = parse_chain_points("# a chain\n0 0\n\n1 0.5  # trailing comment\n+2 -1e0\n", "c.txt");
-  ASSERT_EQ(p.size(), 3u);
-  EXPECT_EQ(p[1], Vec(1, 0.5));
-  EXPECT_EQ(p[2], Vec(2, -1));
-  auto error = [](const std::string& text) {
-    try {
-      parse_chain_points(text, "c.txt");
-    } catch (const foldkit::io::ParseError& e) {
-      return std::string(e.what());
-    }
-    return std::string("parsed");
-  };
-  EXPECT_EQ(error("0 0\n1 x\n").rfind("c.txt:2:", 0), 0u);
-  EXPECT_EQ(error("0 0\n1 2 3\n").rfind("c.txt:2: expected two numbers", 0), 0u);
-  EXPECT_EQ(error("0 0\n\n5\n").rfind("c.txt:3:", 0), 0u);
-  EXPECT_EQ(error("# nothing\n").rfind("c.txt:1: no points", 0), 0u);
-  EXPECT_EQ(error("0 nan\n").rfind("c.txt:1:", 0), 0u);
 }
 
 TEST(CarpenterPlanar, OutputsCarryEveryFrame) {

@@ -84,16 +84,10 @@ MotionCheck check_motion(const std::vector<Frame2>& frames, bool closed);
 bool is_straight(const Frame2& frame, double tolerance = 1e-9);
 bool is_convex(const Frame2& frame, double tolerance = 1e-9);
 
-// A chain file: one "x y" per line, '#' starts a comment, blank lines skipped. Throws
-// io::ParseError "FILE:LINE: what is wrong".
-Frame2 parse_chain_points(const std::string& text, const std::string& file);
-
-// Outputs. CSV: "frame,vertex,x,y" rows. JSON: {"closed", "frames": [[[x, y], …], …]}.
-// CMML: one event per frame (EventNumber = frame index) setting every joint to its turning
-// angle, joints numbered as in turning_angles() (vertex index), velocity from the largest
+// The planar chain's frames as CMML (chain files and the CSV/JSON frame writers are
+// io/chain_file.hpp): one event per frame (EventNumber = frame index) setting every joint to its
+// turning angle, joints numbered as in turning_angles() (vertex index), velocity from the largest
 // change between frames (docs/CARPENTER.md).
-std::string frames_csv(const std::vector<Frame2>& frames);
-std::string frames_json(const std::vector<Frame2>& frames, bool closed);
 geometry::FoldSequence turning_angle_sequence(const std::vector<Frame2>& frames, bool closed,
                                               std::string title = {});
 

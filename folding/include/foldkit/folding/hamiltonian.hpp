@@ -7,54 +7,21 @@
 #include <string>
 #include <vector>
 
+#include "foldkit/geometry/cell_shape.hpp"
 #include "foldkit/geometry/status.hpp"
 
 namespace foldkit::folding {
 
-// Largest grid (filled or not) the readers accept, and the largest coarse shapes the exact search
-// and the 2× refinement take: beyond them the answer would not fit in memory or time.
-constexpr std::size_t kMaxGridCells = 10'000'000;
+// The largest coarse shapes the exact search and the 2× refinement take: beyond them the answer
+// would not fit in memory or time.
 constexpr std::size_t kMaxExactCells = 1024;
 constexpr std::size_t kMaxRefineCells = 2'500'000;
 
-// A pixel or voxel; z is 0 in 2D. y grows downwards (row 0 is the file's top row).
-struct Cell {
-  int x = 0, y = 0, z = 0;
-  friend bool operator==(const Cell& a, const Cell& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-  friend bool operator!=(const Cell& a, const Cell& b) { return !(a == b); }
-};
-
-// Row-major, cells[y * width + x] != 0 when filled.
-struct PixelShape {
-  int width = 0, height = 0;
-  std::vector<std::uint8_t> cells;
-  bool filled(int x, int y) const;  // false outside the grid
-  std::size_t count() const;
-};
-
-// cells[(z * ny + y) * nx + x] != 0 when filled.
-struct VoxelShape {
-  int nx = 0, ny = 0, nz = 0;
-  std::vector<std::uint8_t> cells;
-  bool filled(int x, int y, int z) const;  // false outside the grid
-  std::size_t count() const;
-};
-
-// Readers throw foldkit::io::ParseError ("FILE:LINE: message"); `file` only names the source.
-// ASCII grid: '#' filled, '.' or ' ' empty, one row per line, all rows equally long.
-PixelShape parse_pixel_grid(const std::string& text, const std::string& file);
-// PBM, P1 (plain) or P4 (raw); 1 = filled.
-PixelShape parse_pbm(const std::string& bytes, const std::string& file);
-// Voxel text: ASCII-grid layers (z = 0 first) separated by blank lines, all of one size.
-VoxelShape parse_voxel_layers(const std::string& text, const std::string& file);
-
-bool is_voxel_path(const std::string& path);           // .vox
-PixelShape read_pixel_shape(const std::string& path);  // .pbm, else ASCII grid (.txt, .grid)
-VoxelShape read_voxel_shape(const std::string& path);
-
-// Each pixel → 2×2 pixels, each voxel → 2×2×2 voxels.
-PixelShape refine(const PixelShape& shape);
-VoxelShape refine(const VoxelShape& shape);
+// The shapes live in geometry (their files in io/shape_file.hpp); the names stay usable here.
+using geometry::Cell;
+using geometry::PixelShape;
+using geometry::VoxelShape;
+using geometry::refine;
 
 struct HamiltonianResult {
   // Success (a path or cycle was found), NoSolution (the shape is empty or not connected, fails

@@ -11,10 +11,13 @@
 #include "foldkit/folding/carpenter_spherical.hpp"
 #include "foldkit/folding/projected_folding.hpp"
 #include "foldkit/geometry/closure_path.hpp"
-#include "foldkit/planners/bench_suite.hpp"
+#include "foldkit/bench/deterministic_planner.hpp"
+#include "foldkit/bench/scenes.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 
-namespace foldkit::planners {
+namespace foldkit::bench {
+
+using planners::canonical_planner;
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
@@ -168,4 +171,4 @@ std::string canonical_bench_planner(const std::string& name) {
   }
 }
 
-}  // namespace foldkit::planners
+}  // namespace foldkit::bench

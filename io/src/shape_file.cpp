@@ -1,17 +1,21 @@
-// Pixel and voxel shapes: the ASCII-grid, PBM and voxel-layer readers, and 2× refinement.
+// Pixel and voxel shape files: the ASCII-grid, PBM and voxel-layer readers.
+#include "foldkit/io/shape_file.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/parse_error.hpp"
-#include "foldkit/folding/hamiltonian.hpp"
 
-namespace foldkit::folding {
+namespace foldkit::io {
 namespace {
 
-using io::ParseError;
+using geometry::kMaxGridCells;
+using geometry::PixelShape;
+using geometry::VoxelShape;
 
 std::string show(char c) {
   if (std::isprint(static_cast<unsigned char>(c)) != 0) return std::string("'") + c + "'";
@@ -113,24 +117,6 @@ class PbmReader {
 
 }  // namespace
 
-bool PixelShape::filled(int x, int y) const {
-  return x >= 0 && y >= 0 && x < width && y < height &&
-         cells[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] != 0;
-}
-std::size_t PixelShape::count() const {
-  return static_cast<std::size_t>(std::count_if(cells.begin(), cells.end(), [](std::uint8_t c) { return c != 0; }));
-}
-
-bool VoxelShape::filled(int x, int y, int z) const {
-  return x >= 0 && y >= 0 && z >= 0 && x < nx && y < ny && z < nz &&
-         cells[(static_cast<std::size_t>(z) * static_cast<std::size_t>(ny) + static_cast<std::size_t>(y)) *
-                   static_cast<std::size_t>(nx) +
-               static_cast<std::size_t>(x)] != 0;
-}
-std::size_t VoxelShape::count() const {
-  return static_cast<std::size_t>(std::count_if(cells.begin(), cells.end(), [](std::uint8_t c) { return c != 0; }));
-}
-
 PixelShape parse_pixel_grid(const std::string& text, const std::string& file) {
   const std::vector<Line> lines = split_lines(text);
   if (lines.empty()) throw ParseError(file, 1, "empty grid");
@@ -230,37 +216,13 @@ bool has_extension(const std::string& path, const char (&extension)[5]) {
 bool is_voxel_path(const std::string& path) { return has_extension(path, ".vox"); }
 
 PixelShape read_pixel_shape(const std::string& path) {
-  const std::string bytes = io::read_file(path);
+  const std::string bytes = read_file(path);
   const bool pbm = has_extension(path, ".pbm");
   return pbm ? parse_pbm(bytes, path) : parse_pixel_grid(bytes, path);
 }
 
 VoxelShape read_voxel_shape(const std::string& path) {
-  return parse_voxel_layers(io::read_file(path), path);
+  return parse_voxel_layers(read_file(path), path);
 }
 
-PixelShape refine(const PixelShape& s) {
-  PixelShape r;
-  r.width = 2 * s.width;
-  r.height = 2 * s.height;
-  r.cells.assign(static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height), 0);
-  for (int y = 0; y < r.height; ++y)
-    for (int x = 0; x < r.width; ++x)
-      r.cells[static_cast<std::size_t>(y) * static_cast<std::size_t>(r.width) + static_cast<std::size_t>(x)] =
-          s.filled(x / 2, y / 2) ? 1 : 0;
-  return r;
-}
-
-VoxelShape refine(const VoxelShape& s) {
-  VoxelShape r;
-  r.nx = 2 * s.nx;
-  r.ny = 2 * s.ny;
-  r.nz = 2 * s.nz;
-  r.cells.reserve(static_cast<std::size_t>(r.nx) * static_cast<std::size_t>(r.ny) * static_cast<std::size_t>(r.nz));
-  for (int z = 0; z < r.nz; ++z)
-    for (int y = 0; y < r.ny; ++y)
-      for (int x = 0; x < r.nx; ++x) r.cells.push_back(s.filled(x / 2, y / 2, z / 2) ? 1 : 0);
-  return r;
-}
-
-}  // namespace foldkit::folding
+}  // namespace foldkit::io

@@ -13,12 +13,15 @@
 #include "foldkit/geometry/closure_path.hpp"
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/geometry/projection.hpp"
-#include "foldkit/planners/bench_suite.hpp"
+#include "foldkit/bench/deterministic_planner.hpp"
+#include "foldkit/bench/scenes.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/statespaces/single_vertex_space.hpp"
 #include "foldkit/statespaces/validity.hpp"
 
-namespace foldkit::planners {
+namespace foldkit::bench {
+
+using planners::PlanRequest;
 
 namespace ob = ompl::base;
 namespace gen = geometry::generators;
@@ -239,4 +242,4 @@ const BenchSuite& bench_suite(const std::string& name) {
   throw std::invalid_argument("unknown suite '" + name + "' (known: " + known + ")");
 }
 
-}  // namespace foldkit::planners
+}  // namespace foldkit::bench

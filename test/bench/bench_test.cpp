@@ -15,14 +15,17 @@
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/io/atomic_write.hpp"
-#include "foldkit/planners/bench_suite.hpp"
+#include "foldkit/bench/deterministic_planner.hpp"
+#include "foldkit/bench/log.hpp"
+#include "foldkit/bench/run.hpp"
+#include "foldkit/bench/scenes.hpp"
 #include "foldkit/simulation/collision_world.hpp"
 #include "foldkit/statespaces/single_vertex_space.hpp"
 #include "test_paths.hpp"
 
 namespace {
 
-namespace fp = foldkit::planners;
+namespace fp = foldkit::bench;
 using foldkit::geometry::ClosureSystem;
 using foldkit::geometry::FoldState;
 

@@ -18,13 +18,20 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include "foldkit/io/atomic_write.hpp"
-#include "foldkit/planners/bench_suite.hpp"
+#include "foldkit/bench/deterministic_planner.hpp"
+#include "foldkit/bench/log.hpp"
+#include "foldkit/bench/run.hpp"
 #include "foldkit/planners/plan_setup.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/simulation/clearance.hpp"
 #include "foldkit/simulation/simulate.hpp"
 
-namespace foldkit::planners {
+namespace foldkit::bench {
+
+using planners::PlanSetup;
+using planners::make_plan_setup;
+using planners::make_planner;
+using planners::path_waypoints;
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
@@ -380,4 +387,4 @@ std::string error_vs_time_csv(const std::vector<ErrorVsTimeRow>& rows) {
   return out.str();
 }
 
-}  // namespace foldkit::planners
+}  // namespace foldkit::bench

@@ -9,9 +9,9 @@
 
 #include <ompl/config.h>
 
-#include "foldkit/planners/bench_suite.hpp"
+#include "foldkit/bench/log.hpp"
 
-namespace foldkit::planners {
+namespace foldkit::bench {
 
 namespace {
 
@@ -384,4 +384,4 @@ BenchLog merge_bench_logs(const std::vector<BenchLog>& shards, const std::vector
   return out;
 }
 
-}  // namespace foldkit::planners
+}  // namespace foldkit::bench
