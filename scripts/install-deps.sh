@@ -25,6 +25,7 @@ packages=(
 if [ "$demo" -eq 0 ]; then
   packages+=(
     libbenchmark-dev libgtest-dev
+    doxygen
     python3-matplotlib
     ompl-demos
   )

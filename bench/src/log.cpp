@@ -262,9 +262,27 @@ std::string param_or(const BenchLog& log, const std::string& key) {
 
 }  // namespace
 
-BenchLog merge_bench_logs(const std::vector<BenchLog>& shards, const std::vector<std::string>& files) {
-  if (shards.empty()) throw std::invalid_argument("merge: no logs");
-  auto file = [&](std::size_t i) { return i < files.size() ? files[i] : "log " + std::to_string(i + 1); };
+namespace {
+
+// The name of shard i in messages: its file, or "log N".
+std::string shard_name(const std::vector<std::string>& files, std::size_t i) {
+  return i < files.size() ? files[i] : "log " + std::to_string(i + 1);
+}
+
+// The planner names of the benchmark's "planners" parameter, in order (empty without it).
+std::vector<std::string> listed_planners(const BenchLog& log) {
+  std::vector<std::string> order;
+  if (const std::string* p = log.parameter("planners STRING")) {
+    std::istringstream in(*p);
+    for (std::string name; std::getline(in, name, ',');) order.push_back(name);
+  }
+  return order;
+}
+
+// Checks that the logs are shards of one experiment (std::invalid_argument naming the files
+// otherwise) and returns how many shards it was split into.
+long check_shards(const std::vector<BenchLog>& shards, const std::vector<std::string>& files) {
+  auto file = [&](std::size_t i) { return shard_name(files, i); };
   const BenchLog& first = shards.front();
   const long n = shard_of(first, file(0)).second;
   std::map<long, std::size_t> seen;
@@ -291,34 +309,22 @@ BenchLog merge_bench_logs(const std::vector<BenchLog>& shards, const std::vector
   }
   // A shard writes no log of a scene when none of that scene's runs fell to it (few runs, many
   // shards), so a missing shard is an error only when runs are missing.
-  std::size_t runs_found = 0, planner_count = 0;
+  std::size_t runs_found = 0;
   for (const auto& s : shards)
     for (const auto& p : s.planners) runs_found += p.runs.size();
-  if (const std::string* p = first.parameter("planners STRING")) {
-    std::istringstream in(*p);
-    for (std::string name; std::getline(in, name, ',');) ++planner_count;
-  }
+  const std::size_t planner_count = listed_planners(first).size();
   const bool all_runs = planner_count > 0 && first.run_count > 0 &&
                         runs_found >= planner_count * static_cast<std::size_t>(first.run_count);
   for (long k = 1; k <= n && !all_runs; ++k)
     if (!seen.count(k))
       throw std::invalid_argument("merge: shard " + std::to_string(k) + "/" + std::to_string(n) + " of " + first.experiment +
                                   " is missing");
+  return n;
+}
 
-  BenchLog out = first;
-  out.planners.clear();
-  out.total_duration = 0.0;
-  for (const auto& s : shards) out.total_duration += s.total_duration;
-  for (auto& [k, v] : out.parameters)
-    if (k == "shard STRING") v = "1/1";
-  if (n > 1) out.parameters.emplace_back("merged_shards INTEGER", std::to_string(n));
-
-  // Planners in the benchmark's order (the "planners" parameter), else in order of appearance.
-  std::vector<std::string> order;
-  if (const std::string* p = first.parameter("planners STRING")) {
-    std::istringstream in(*p);
-    for (std::string name; std::getline(in, name, ',');) order.push_back(name);
-  }
+// Planners in the benchmark's order (the "planners" parameter), else in order of appearance.
+std::vector<std::string> merged_planner_order(const std::vector<BenchLog>& shards) {
+  const std::vector<std::string> order = listed_planners(shards.front());
   std::map<std::string, std::size_t> rank;
   for (std::size_t i = 0; i < order.size(); ++i) rank["geometric_" + order[i]] = i;
   std::vector<std::string> names;
@@ -329,58 +335,82 @@ BenchLog merge_bench_logs(const std::vector<BenchLog>& shards, const std::vector
     const std::size_t ra = rank.count(a) ? rank[a] : order.size(), rb = rank.count(b) ? rank[b] : order.size();
     return ra < rb;
   });
+  return names;
+}
 
-  for (const std::string& name : names) {
-    BenchLog::Planner merged;
-    std::size_t from = 0;
-    bool have = false;
-    std::vector<std::string> progress_lines;
-    for (std::size_t i = 0; i < shards.size(); ++i)
-      for (const auto& p : shards[i].planners) {
-        if (p.name != name) continue;
-        if (!have) {
-          merged = p;
-          merged.runs.clear();
-          merged.progress_runs.clear();
-          from = i;
-          have = true;
-        } else if (p.properties != merged.properties) {
-          throw std::invalid_argument("merge: " + name + " records other run properties in " + file(i) + " than in " +
-                                      file(from) + " (logs of different foldkit or OMPL versions?)");
-        } else if (!same_settings(p.common, merged.common)) {
-          throw std::invalid_argument("merge: " + name + " is configured differently in " + file(i) + " and " + file(from));
-        } else if (p.progress_properties != merged.progress_properties) {
-          throw std::invalid_argument("merge: " + name + " records other progress properties in " + file(i) + " than in " +
-                                      file(from));
-        }
-        for (std::size_t r = 0; r < p.runs.size(); ++r) {
-          merged.runs.push_back(p.runs[r]);
-          progress_lines.push_back(r < p.progress_runs.size() ? p.progress_runs[r] : "");
-        }
-      }
-    // Runs in the order of the unsharded benchmark: by run index.
-    const auto idx = std::find(merged.properties.begin(), merged.properties.end(), "run index INTEGER");
-    std::vector<std::size_t> perm(merged.runs.size());
-    std::iota(perm.begin(), perm.end(), 0);
-    if (idx != merged.properties.end()) {
-      const auto col = static_cast<std::size_t>(idx - merged.properties.begin());
-      std::stable_sort(perm.begin(), perm.end(), [&](std::size_t a, std::size_t b) {
-        return std::atol(merged.runs[a][col].c_str()) < std::atol(merged.runs[b][col].c_str());
-      });
-      std::set<long> indices;
-      for (const auto& run : merged.runs)
-        if (!indices.insert(std::atol(run[col].c_str())).second)
-          throw std::invalid_argument("merge: run " + run[col] + " of " + name + " in " + first.experiment +
-                                      " appears in two shards");
-    }
-    std::vector<std::vector<std::string>> runs;
-    for (std::size_t i : perm) {
-      runs.push_back(merged.runs[i]);
-      if (!merged.progress_properties.empty()) merged.progress_runs.push_back(progress_lines[i]);
-    }
-    merged.runs = std::move(runs);
-    out.planners.push_back(std::move(merged));
+// Puts the runs in the order of the unsharded benchmark (by run index) and refuses a run that
+// two shards hold.
+void order_runs(BenchLog::Planner& merged, const std::vector<std::string>& progress_lines, const std::string& experiment) {
+  const auto idx = std::find(merged.properties.begin(), merged.properties.end(), "run index INTEGER");
+  std::vector<std::size_t> perm(merged.runs.size());
+  std::iota(perm.begin(), perm.end(), 0);
+  if (idx != merged.properties.end()) {
+    const auto col = static_cast<std::size_t>(idx - merged.properties.begin());
+    std::stable_sort(perm.begin(), perm.end(), [&](std::size_t a, std::size_t b) {
+      return std::atol(merged.runs[a][col].c_str()) < std::atol(merged.runs[b][col].c_str());
+    });
+    std::set<long> indices;
+    for (const auto& run : merged.runs)
+      if (!indices.insert(std::atol(run[col].c_str())).second)
+        throw std::invalid_argument("merge: run " + run[col] + " of " + merged.name + " in " + experiment +
+                                    " appears in two shards");
   }
+  std::vector<std::vector<std::string>> runs;
+  for (std::size_t i : perm) {
+    runs.push_back(merged.runs[i]);
+    if (!merged.progress_properties.empty()) merged.progress_runs.push_back(progress_lines[i]);
+  }
+  merged.runs = std::move(runs);
+}
+
+// One planner's runs from every shard, its header from the first shard that has it.
+BenchLog::Planner merge_planner(const std::string& name, const std::vector<BenchLog>& shards,
+                                const std::vector<std::string>& files) {
+  auto file = [&](std::size_t i) { return shard_name(files, i); };
+  BenchLog::Planner merged;
+  std::size_t from = 0;
+  bool have = false;
+  std::vector<std::string> progress_lines;
+  for (std::size_t i = 0; i < shards.size(); ++i)
+    for (const auto& p : shards[i].planners) {
+      if (p.name != name) continue;
+      if (!have) {
+        merged = p;
+        merged.runs.clear();
+        merged.progress_runs.clear();
+        from = i;
+        have = true;
+      } else if (p.properties != merged.properties) {
+        throw std::invalid_argument("merge: " + name + " records other run properties in " + file(i) + " than in " +
+                                    file(from) + " (logs of different foldkit or OMPL versions?)");
+      } else if (!same_settings(p.common, merged.common)) {
+        throw std::invalid_argument("merge: " + name + " is configured differently in " + file(i) + " and " + file(from));
+      } else if (p.progress_properties != merged.progress_properties) {
+        throw std::invalid_argument("merge: " + name + " records other progress properties in " + file(i) + " than in " +
+                                    file(from));
+      }
+      for (std::size_t r = 0; r < p.runs.size(); ++r) {
+        merged.runs.push_back(p.runs[r]);
+        progress_lines.push_back(r < p.progress_runs.size() ? p.progress_runs[r] : "");
+      }
+    }
+  order_runs(merged, progress_lines, shards.front().experiment);
+  return merged;
+}
+
+}  // namespace
+
+BenchLog merge_bench_logs(const std::vector<BenchLog>& shards, const std::vector<std::string>& files) {
+  if (shards.empty()) throw std::invalid_argument("merge: no logs");
+  const long n = check_shards(shards, files);
+  BenchLog out = shards.front();
+  out.planners.clear();
+  out.total_duration = 0.0;
+  for (const auto& s : shards) out.total_duration += s.total_duration;
+  for (auto& [k, v] : out.parameters)
+    if (k == "shard STRING") v = "1/1";
+  if (n > 1) out.parameters.emplace_back("merged_shards INTEGER", std::to_string(n));
+  for (const std::string& name : merged_planner_order(shards)) out.planners.push_back(merge_planner(name, shards, files));
   return out;
 }
 

@@ -197,6 +197,150 @@ double since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
+namespace {
+
+// Our per-run properties, added to the run's row after each run (OMPL's post-run event).
+void add_path_properties(const PlanSetup& setup, const BenchScene& scene, const ob::PlannerPtr& planner,
+                         ompl::tools::Benchmark::RunProperties& run) {
+  const auto states = solution_states(setup, scene, planner->getProblemDefinition());
+  if (planner->getProblemDefinition()->hasSolution()) run["path jumps BOOLEAN"] = states ? "0" : "1";
+  if (!states) return;
+  const PathMetrics m = measure_path(scene, *states);
+  run["final closure error REAL"] = num(m.final_closure_error);
+  run["max closure error REAL"] = num(m.max_closure_error);
+  run["min clearance REAL"] = num(m.min_clearance);
+  run["replay collisions INTEGER"] = std::to_string(m.replay_collisions);
+  run["replay valid BOOLEAN"] = m.replay_ok ? "1" : "0";
+  run["joint path length REAL"] = num(m.path_length);
+  run["cmml events INTEGER"] = std::to_string(m.cmml_events);
+  run["goal distance REAL"] = num(m.goal_distance);
+}
+
+// One scene of a benchmark shard: its planners' runs, grouped by run count into Benchmarks, and
+// its log.
+class SceneRun {
+ public:
+  SceneRun(const BenchOptions& o, const Resolved& res, const std::vector<BenchWorkItem>& work, std::size_t si,
+           std::chrono::steady_clock::time_point t0, std::size_t& done)
+      : o_(o), res_(res), work_(work), t0_(t0), done_(done), runs_of_(res.planners.size()) {
+    result_.scene = res.scenes[si];
+    for (const auto& w : work)
+      if (w.scene == si) runs_of_[w.planner].push_back(w.run);
+  }
+
+  BenchSceneResult run() {
+    if (std::all_of(runs_of_.begin(), runs_of_.end(), [](const auto& v) { return v.empty(); })) return result_;
+    scene_ = make_bench_scene(result_.scene, o_.seed);
+    setup_ = make_plan_setup(scene_.request, true);
+    if (!setup_.blocked.empty()) throw std::runtime_error("scene " + scene_.name + ": " + setup_.blocked);
+    // The planners, in the suite's order; those with as many runs in this shard share one
+    // Benchmark (each Benchmark estimates the space's properties for its log header: seconds).
+    for (const auto& name : res_.planners) {
+      objects_.push_back(bench_planner(name, scene_, setup_));
+      names_ += (names_.empty() ? "" : ",") + objects_.back()->getName();
+    }
+    std::map<std::size_t, std::vector<std::size_t>> groups;  // run count → planner indices
+    for (std::size_t pi = 0; pi < res_.planners.size(); ++pi)
+      if (!runs_of_[pi].empty()) groups[runs_of_[pi].size()].push_back(pi);
+    for (const auto& [count, members] : groups) add_part(run_group(count, members), members);
+    write_log();
+    return result_;
+  }
+
+ private:
+  BenchLog run_group(std::size_t count, const std::vector<std::size_t>& members) {
+    BenchSetup ss(setup_.si);
+    setup_.set_start_and_goal(ss, scene_.request.goal);
+    ompl::tools::Benchmark bench(ss, scene_.name);
+    bench.addExperimentParameter("suite", "STRING", clean(res_.suite->name));
+    bench.addExperimentParameter("scene", "STRING", clean(scene_.name));
+    bench.addExperimentParameter("description", "STRING", clean(scene_.description));
+    bench.addExperimentParameter("space", "STRING", setup_.space_name);
+    bench.addExperimentParameter("creases", "INTEGER", std::to_string(scene_.pattern->joints().size()));
+    bench.addExperimentParameter("scene_seed", "INTEGER", std::to_string(o_.seed));
+    bench.addExperimentParameter("shard", "STRING", std::to_string(o_.shard) + "/" + std::to_string(o_.shards));
+    bench.addExperimentParameter("planners", "STRING", names_);
+    bench.addExperimentParameter("simplify", "BOOLEAN", o_.simplify ? "1" : "0");
+    std::map<const ob::Planner*, std::size_t> index_of, next;
+    for (std::size_t pi : members) {
+      bench.addPlanner(objects_[pi]);
+      index_of[objects_[pi].get()] = pi;
+    }
+    bench.setPostRunEvent([&](const ob::PlannerPtr& planner, ompl::tools::Benchmark::RunProperties& run) {
+      const std::size_t pi = index_of.at(planner.get());
+      const auto& indices = runs_of_[pi];
+      const unsigned int index = indices[std::min(next[planner.get()]++, indices.size() - 1)];
+      run["run index INTEGER"] = std::to_string(index);
+      add_path_properties(setup_, scene_, planner, run);
+      ++done_;
+      if (o_.progress) o_.progress({done_, work_.size(), scene_.name, res_.planners[pi], since(t0_), false});
+    });
+    const ompl::tools::Benchmark::Request req(o_.time, 4096.0, static_cast<unsigned int>(count), 0.05, false, false,
+                                              o_.simplify);
+    bench.benchmark(req);
+    std::ostringstream text;
+    bench.saveResultsToStream(text);
+    return parse_bench_log(text.str(), scene_.name);
+  }
+
+  // Counts the part's runs and solutions, and adds its planners to the scene's log (the first
+  // part gives the header).
+  void add_part(BenchLog part, const std::vector<std::size_t>& members) {
+    for (std::size_t k = 0; k < part.planners.size(); ++k) {
+      auto& p = part.planners[k];
+      normalise_properties(p, o_.simplify);
+      const auto col = static_cast<std::size_t>(
+          std::find(p.properties.begin(), p.properties.end(), "solved BOOLEAN") - p.properties.begin());
+      std::size_t solved = 0;
+      for (const auto& run : p.runs) solved += col < run.size() && run[col] == "1";
+      result_.planners[res_.planners[members[k]]] = {p.runs.size(), solved};
+      result_.runs += p.runs.size();
+      result_.solved += solved;
+    }
+    if (!have_header_) {
+      auto planners = std::move(part.planners);
+      log_ = std::move(part);
+      log_.planners = std::move(planners);
+      log_.run_count = o_.runs;
+      have_header_ = true;
+    } else {
+      log_.total_duration += part.total_duration;
+      for (auto& p : part.planners) log_.planners.push_back(std::move(p));
+    }
+  }
+
+  void write_log() {
+    // Back into the suite's order.
+    std::vector<std::string> order;
+    for (const auto& obj : objects_) order.push_back("geometric_" + obj->getName());
+    std::stable_sort(log_.planners.begin(), log_.planners.end(), [&](const BenchLog::Planner& x, const BenchLog::Planner& y) {
+      return std::find(order.begin(), order.end(), x.name) < std::find(order.begin(), order.end(), y.name);
+    });
+    const std::string file =
+        o_.shards == 1 ? scene_.name + ".log"
+                       : scene_.name + ".shard-" + std::to_string(o_.shard) + "-of-" + std::to_string(o_.shards) + ".log";
+    result_.log = (std::filesystem::path(o_.output_dir) / file).string();
+    io::write_file_atomic(result_.log, write_bench_log(log_));
+    if (o_.progress) o_.progress({done_, work_.size(), scene_.name, "", since(t0_), true});
+  }
+
+  const BenchOptions& o_;
+  const Resolved& res_;
+  const std::vector<BenchWorkItem>& work_;
+  const std::chrono::steady_clock::time_point t0_;
+  std::size_t& done_;
+  std::vector<std::vector<unsigned int>> runs_of_;  // per planner: the run indices of this shard
+  BenchSceneResult result_;
+  BenchScene scene_;
+  PlanSetup setup_;
+  std::vector<ob::PlannerPtr> objects_;
+  std::string names_;
+  BenchLog log_;
+  bool have_header_ = false;
+};
+
+}  // namespace
+
 std::vector<BenchSceneResult> run_bench(const BenchOptions& o) {
   const Resolved res = resolve(o);
   const auto work = bench_work(res.scenes.size(), res.planners.size(), o.runs, o.shard, o.shards);
@@ -207,113 +351,7 @@ std::vector<BenchSceneResult> run_bench(const BenchOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   std::size_t done = 0;
   std::vector<BenchSceneResult> results;
-  for (std::size_t si = 0; si < res.scenes.size(); ++si) {
-    BenchSceneResult result;
-    result.scene = res.scenes[si];
-    std::vector<std::vector<unsigned int>> runs_of(res.planners.size());
-    for (const auto& w : work)
-      if (w.scene == si) runs_of[w.planner].push_back(w.run);
-    if (std::all_of(runs_of.begin(), runs_of.end(), [](const auto& v) { return v.empty(); })) {
-      results.push_back(result);
-      continue;
-    }
-    const BenchScene scene = make_bench_scene(res.scenes[si], o.seed);
-    const PlanSetup setup = make_plan_setup(scene.request, true);
-    if (!setup.blocked.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.blocked);
-    // The planners, in the suite's order; those with as many runs in this shard share one
-    // Benchmark (each Benchmark estimates the space's properties for its log header: seconds).
-    std::vector<ob::PlannerPtr> objects;
-    std::string names;
-    for (const auto& name : res.planners) {
-      objects.push_back(bench_planner(name, scene, setup));
-      names += (names.empty() ? "" : ",") + objects.back()->getName();
-    }
-    std::map<std::size_t, std::vector<std::size_t>> groups;  // run count → planner indices
-    for (std::size_t pi = 0; pi < res.planners.size(); ++pi)
-      if (!runs_of[pi].empty()) groups[runs_of[pi].size()].push_back(pi);
-    BenchLog log;
-    bool have_header = false;
-    for (const auto& [count, members] : groups) {
-      BenchSetup ss(setup.si);
-      setup.set_start_and_goal(ss, scene.request.goal);
-      ompl::tools::Benchmark bench(ss, scene.name);
-      bench.addExperimentParameter("suite", "STRING", clean(res.suite->name));
-      bench.addExperimentParameter("scene", "STRING", clean(scene.name));
-      bench.addExperimentParameter("description", "STRING", clean(scene.description));
-      bench.addExperimentParameter("space", "STRING", setup.space_name);
-      bench.addExperimentParameter("creases", "INTEGER", std::to_string(scene.pattern->joints().size()));
-      bench.addExperimentParameter("scene_seed", "INTEGER", std::to_string(o.seed));
-      bench.addExperimentParameter("shard", "STRING", std::to_string(o.shard) + "/" + std::to_string(o.shards));
-      bench.addExperimentParameter("planners", "STRING", names);
-      bench.addExperimentParameter("simplify", "BOOLEAN", o.simplify ? "1" : "0");
-      std::map<const ob::Planner*, std::size_t> index_of, next;
-      for (std::size_t pi : members) {
-        bench.addPlanner(objects[pi]);
-        index_of[objects[pi].get()] = pi;
-      }
-      bench.setPostRunEvent([&](const ob::PlannerPtr& planner, ompl::tools::Benchmark::RunProperties& run) {
-        const std::size_t pi = index_of.at(planner.get());
-        const auto& indices = runs_of[pi];
-        const unsigned int index = indices[std::min(next[planner.get()]++, indices.size() - 1)];
-        run["run index INTEGER"] = std::to_string(index);
-        const auto states = solution_states(setup, scene, planner->getProblemDefinition());
-        if (planner->getProblemDefinition()->hasSolution()) run["path jumps BOOLEAN"] = states ? "0" : "1";
-        if (states) {
-          const PathMetrics m = measure_path(scene, *states);
-          run["final closure error REAL"] = num(m.final_closure_error);
-          run["max closure error REAL"] = num(m.max_closure_error);
-          run["min clearance REAL"] = num(m.min_clearance);
-          run["replay collisions INTEGER"] = std::to_string(m.replay_collisions);
-          run["replay valid BOOLEAN"] = m.replay_ok ? "1" : "0";
-          run["joint path length REAL"] = num(m.path_length);
-          run["cmml events INTEGER"] = std::to_string(m.cmml_events);
-          run["goal distance REAL"] = num(m.goal_distance);
-        }
-        ++done;
-        if (o.progress) o.progress({done, work.size(), scene.name, res.planners[pi], since(t0), false});
-      });
-      const ompl::tools::Benchmark::Request req(o.time, 4096.0, static_cast<unsigned int>(count), 0.05, false, false,
-                                                o.simplify);
-      bench.benchmark(req);
-      std::ostringstream text;
-      bench.saveResultsToStream(text);
-      BenchLog part = parse_bench_log(text.str(), scene.name);
-      for (std::size_t k = 0; k < part.planners.size(); ++k) {
-        auto& p = part.planners[k];
-        normalise_properties(p, o.simplify);
-        const auto col = static_cast<std::size_t>(
-            std::find(p.properties.begin(), p.properties.end(), "solved BOOLEAN") - p.properties.begin());
-        std::size_t solved = 0;
-        for (const auto& run : p.runs) solved += col < run.size() && run[col] == "1";
-        result.planners[res.planners[members[k]]] = {p.runs.size(), solved};
-        result.runs += p.runs.size();
-        result.solved += solved;
-      }
-      if (!have_header) {
-        auto planners = std::move(part.planners);
-        log = std::move(part);
-        log.planners = std::move(planners);
-        log.run_count = o.runs;
-        have_header = true;
-      } else {
-        log.total_duration += part.total_duration;
-        for (auto& p : part.planners) log.planners.push_back(std::move(p));
-      }
-    }
-    // Back into the suite's order.
-    std::vector<std::string> order;
-    for (const auto& obj : objects) order.push_back("geometric_" + obj->getName());
-    std::stable_sort(log.planners.begin(), log.planners.end(), [&](const BenchLog::Planner& x, const BenchLog::Planner& y) {
-      return std::find(order.begin(), order.end(), x.name) < std::find(order.begin(), order.end(), y.name);
-    });
-    const std::string file =
-        o.shards == 1 ? scene.name + ".log"
-                      : scene.name + ".shard-" + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) + ".log";
-    result.log = (std::filesystem::path(o.output_dir) / file).string();
-    io::write_file_atomic(result.log, write_bench_log(log));
-    if (o.progress) o.progress({done, work.size(), scene.name, "", since(t0), true});
-    results.push_back(result);
-  }
+  for (std::size_t si = 0; si < res.scenes.size(); ++si) results.push_back(SceneRun(o, res, work, si, t0, done).run());
   return results;
 }
 

@@ -79,6 +79,86 @@ void PlanSetup::set_start_and_goal(og::SimpleSetup& ss, const FoldState& goal) c
   }
 }
 
+namespace {
+
+// The joint-angle box: a pattern without a closed loop, where every state is closed.
+void set_up_joint_space(PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) {
+  const auto n = static_cast<Eigen::Index>(req.pattern->joints().size());
+  auto box = std::make_shared<ob::RealVectorStateSpace>(static_cast<unsigned int>(n));
+  ob::RealVectorBounds b(static_cast<unsigned int>(n));
+  for (Eigen::Index j = 0; j < n; ++j) {
+    b.setLow(static_cast<unsigned int>(j), bounds.lower[j]);
+    b.setHigh(static_cast<unsigned int>(j), bounds.upper[j]);
+  }
+  box->setBounds(b);
+  setup.space = box;
+  setup.si = std::make_shared<ob::SpaceInformation>(box);
+  setup.reader = [n](const ob::State* s, FoldState& f) {
+    f.angles = Eigen::Map<const Eigen::VectorXd>(s->as<ob::RealVectorStateSpace::StateType>()->values, n);
+    return true;
+  };
+  setup.si->setMotionValidator(std::make_shared<statespaces::FoldMotionValidator>(setup.si, setup.validity, setup.reader,
+                                                                                   req.resolution, 2.5 * req.resolution));
+}
+
+// The exact single-vertex space (n − 3 active angles, the rest in closed form).
+void set_up_single_vertex_space(PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) {
+  auto chain = std::make_shared<statespaces::SingleVertexChain>(*req.pattern);
+  auto sv = std::make_shared<statespaces::SingleVertexStateSpace>(chain, bounds);
+  setup.single_vertex = sv;
+  setup.space = sv;
+  setup.si = std::make_shared<ob::SpaceInformation>(setup.space);
+  setup.reader = statespaces::single_vertex_reader(sv);
+  setup.si->setMotionValidator(std::make_shared<statespaces::FoldMotionValidator>(setup.si, setup.validity, setup.reader,
+                                                                                   req.resolution, 2.5 * req.resolution));
+  ob::ScopedState<> probe_state(setup.space);
+  if (!sv->from_fold_state(setup.start, probe_state.get())) {
+    // The start is singular for the closed form (e.g. a flat vertex whose passive axes line up):
+    // leave it along a short closed segment first.
+    setup.prefix = geometry::lead_in(*setup.system, setup.start, req.goal, 3, req.waypoint_step);
+    if (setup.prefix.empty() || !sv->from_fold_state(setup.prefix.back(), probe_state.get()))
+      throw std::invalid_argument("plan: no closed way out of the singular start state");
+  }
+}
+
+// OMPL's Projected, Atlas or TangentBundle space on the closure constraint.
+void set_up_constrained_space(PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) {
+  const FoldState& start = setup.start;
+  const auto ck = setup.kind == SpaceKind::Atlas           ? statespaces::ConstrainedKind::Atlas
+                  : setup.kind == SpaceKind::TangentBundle ? statespaces::ConstrainedKind::TangentBundle
+                                                           : statespaces::ConstrainedKind::Projected;
+  statespaces::AngleBounds box = bounds;
+  if (req.search_margin >= 0.0) {
+    box.lower = box.lower.array().max(start.angles.cwiseMin(req.goal.angles).array() - req.search_margin).matrix();
+    box.upper = box.upper.array().min(start.angles.cwiseMax(req.goal.angles).array() + req.search_margin).matrix();
+  }
+  setup.constrained = statespaces::make_constrained(*req.pattern, req.goal, ck, box, req.numerical_jacobian, 2.5 * req.resolution);
+  setup.space = setup.constrained.space;
+  setup.si = setup.constrained.si;
+  setup.reader = statespaces::constrained_reader();
+  const auto rank = static_cast<Eigen::Index>(setup.constrained.constraint->getCoDimension());
+  if (geometry::mobility(*setup.system, start).rank < rank) {
+    // Flat (or another singular state): the Jacobian loses rank, charts cannot be anchored
+    // and projections may flip branches; plan from a nearby regular state instead.
+    setup.prefix = geometry::lead_in(*setup.system, start, req.goal, rank, req.waypoint_step);
+    if (setup.prefix.empty()) throw std::invalid_argument("plan: no closed way out of the singular start state");
+  }
+}
+
+// The start and goal must close, keep the assignment and not cross (std::invalid_argument).
+void check_ends(const PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) {
+  const FoldState& start = setup.start;
+  const double start_error = setup.system->max_error(start), goal_error = setup.system->max_error(req.goal);
+  if (start_error > 1e-6) throw std::invalid_argument("plan: the start is not closed (error " + std::to_string(start_error) + " rad)");
+  if (goal_error > 1e-6) throw std::invalid_argument("plan: the goal is not closed (error " + std::to_string(goal_error) + " rad)");
+  if (!bounds.contains(start, 1e-9)) throw std::invalid_argument("plan: the start breaks the mountain/valley assignment");
+  if (!bounds.contains(req.goal, 1e-9)) throw std::invalid_argument("plan: the goal breaks the mountain/valley assignment");
+  if (!setup.validity->valid(start)) throw std::invalid_argument("plan: the start state is not valid (facets cross)");
+  if (!setup.validity->valid(req.goal)) throw std::invalid_argument("plan: the goal state is not valid (facets cross)");
+}
+
+}  // namespace
+
 PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
   if (!req.pattern) throw std::invalid_argument("plan: no pattern");
   const geometry::CreasePattern& pattern = *req.pattern;
@@ -86,8 +166,7 @@ PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
   if (req.goal.angles.size() != n) throw std::invalid_argument("plan: the goal does not hold one angle per joint");
   PlanSetup setup;
   setup.start = req.start ? *req.start : FoldState::flat(pattern);
-  const FoldState& start = setup.start;
-  if (start.angles.size() != n) throw std::invalid_argument("plan: the start does not hold one angle per joint");
+  if (setup.start.angles.size() != n) throw std::invalid_argument("plan: the start does not hold one angle per joint");
   if (!(req.resolution > 0.0) || !(req.waypoint_step > 0.0) || !(req.velocity > 0.0))
     throw std::invalid_argument("plan: resolution, waypoint step and velocity must be positive");
 
@@ -103,72 +182,18 @@ PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
   if (setup.joint_space) kind = SpaceKind::Auto;
   setup.kind = kind;
   setup.space_name = setup.joint_space ? "joint" : to_string(kind);
-  const double start_error = system->max_error(start), goal_error = system->max_error(req.goal);
-  if (start_error > 1e-6) throw std::invalid_argument("plan: the start is not closed (error " + std::to_string(start_error) + " rad)");
-  if (goal_error > 1e-6) throw std::invalid_argument("plan: the goal is not closed (error " + std::to_string(goal_error) + " rad)");
   const statespaces::AngleBounds bounds = statespaces::AngleBounds::of(pattern, req.use_assignment);
-  if (!bounds.contains(start, 1e-9)) throw std::invalid_argument("plan: the start breaks the mountain/valley assignment");
-  if (!bounds.contains(req.goal, 1e-9)) throw std::invalid_argument("plan: the goal breaks the mountain/valley assignment");
   auto validity = std::make_shared<statespaces::FoldValidity>(pattern, bounds, req.collisions);
   setup.validity = validity;
-  if (!validity->valid(start)) throw std::invalid_argument("plan: the start state is not valid (facets cross)");
-  if (!validity->valid(req.goal)) throw std::invalid_argument("plan: the goal state is not valid (facets cross)");
+  check_ends(setup, req, bounds);
 
-  setup.prefix = {start};
-  if (setup.joint_space) {
-    auto box = std::make_shared<ob::RealVectorStateSpace>(static_cast<unsigned int>(n));
-    ob::RealVectorBounds b(static_cast<unsigned int>(n));
-    for (Eigen::Index j = 0; j < n; ++j) {
-      b.setLow(static_cast<unsigned int>(j), bounds.lower[j]);
-      b.setHigh(static_cast<unsigned int>(j), bounds.upper[j]);
-    }
-    box->setBounds(b);
-    setup.space = box;
-    setup.si = std::make_shared<ob::SpaceInformation>(box);
-    setup.reader = [n](const ob::State* s, FoldState& f) {
-      f.angles = Eigen::Map<const Eigen::VectorXd>(s->as<ob::RealVectorStateSpace::StateType>()->values, n);
-      return true;
-    };
-    setup.si->setMotionValidator(std::make_shared<statespaces::FoldMotionValidator>(setup.si, validity, setup.reader,
-                                                                                     req.resolution, 2.5 * req.resolution));
-  } else if (kind == SpaceKind::SingleVertex) {
-    auto chain = std::make_shared<statespaces::SingleVertexChain>(pattern);
-    auto sv = std::make_shared<statespaces::SingleVertexStateSpace>(chain, bounds);
-    setup.single_vertex = sv;
-    setup.space = sv;
-    setup.si = std::make_shared<ob::SpaceInformation>(setup.space);
-    setup.reader = statespaces::single_vertex_reader(sv);
-    setup.si->setMotionValidator(std::make_shared<statespaces::FoldMotionValidator>(setup.si, validity, setup.reader,
-                                                                                     req.resolution, 2.5 * req.resolution));
-    ob::ScopedState<> probe_state(setup.space);
-    if (!sv->from_fold_state(start, probe_state.get())) {
-      // The start is singular for the closed form (e.g. a flat vertex whose passive axes line up):
-      // leave it along a short closed segment first.
-      setup.prefix = geometry::lead_in(*system, start, req.goal, 3, req.waypoint_step);
-      if (setup.prefix.empty() || !sv->from_fold_state(setup.prefix.back(), probe_state.get()))
-        throw std::invalid_argument("plan: no closed way out of the singular start state");
-    }
-  } else {
-    const auto ck = kind == SpaceKind::Atlas           ? statespaces::ConstrainedKind::Atlas
-                    : kind == SpaceKind::TangentBundle ? statespaces::ConstrainedKind::TangentBundle
-                                                       : statespaces::ConstrainedKind::Projected;
-    statespaces::AngleBounds box = bounds;
-    if (req.search_margin >= 0.0) {
-      box.lower = box.lower.array().max(start.angles.cwiseMin(req.goal.angles).array() - req.search_margin).matrix();
-      box.upper = box.upper.array().min(start.angles.cwiseMax(req.goal.angles).array() + req.search_margin).matrix();
-    }
-    setup.constrained = statespaces::make_constrained(pattern, req.goal, ck, box, req.numerical_jacobian, 2.5 * req.resolution);
-    setup.space = setup.constrained.space;
-    setup.si = setup.constrained.si;
-    setup.reader = statespaces::constrained_reader();
-    const auto rank = static_cast<Eigen::Index>(setup.constrained.constraint->getCoDimension());
-    if (geometry::mobility(*system, start).rank < rank) {
-      // Flat (or another singular state): the Jacobian loses rank, charts cannot be anchored
-      // and projections may flip branches; plan from a nearby regular state instead.
-      setup.prefix = geometry::lead_in(*system, start, req.goal, rank, req.waypoint_step);
-      if (setup.prefix.empty()) throw std::invalid_argument("plan: no closed way out of the singular start state");
-    }
-  }
+  setup.prefix = {setup.start};
+  if (setup.joint_space)
+    set_up_joint_space(setup, req, bounds);
+  else if (kind == SpaceKind::SingleVertex)
+    set_up_single_vertex_space(setup, req, bounds);
+  else
+    set_up_constrained_space(setup, req, bounds);
   setup.si->setStateValidityChecker(std::make_shared<statespaces::FoldValidityChecker>(setup.si, validity, setup.reader));
   for (std::size_t i = 1; i < setup.prefix.size() && setup.blocked.empty(); ++i)
     if (!validity->valid(setup.prefix[i])) setup.blocked = "the way out of the start state collides";

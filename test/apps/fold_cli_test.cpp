@@ -39,6 +39,7 @@ TEST(FoldCli, FoldsAMiuraAndTheSimulatorAcceptsTheFile) {
   for (const char* key : {"stop", "fraction", "steps", "max_closure_error", "time", "replay_ok", "message", "output"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["stop"], "reached");
+  EXPECT_EQ(j["status"], "success");
   EXPECT_NEAR(j["fraction"].get<double>(), 0.6, 1e-9);
   EXPECT_LE(j["max_closure_error"].get<double>(), 1e-10);
   EXPECT_TRUE(j["replay_ok"].get<bool>());
@@ -63,6 +64,7 @@ TEST(FoldCli, SquareTwistExitsFourAndWritesNothing) {
   EXPECT_EQ(r.exit, 4) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["stop"], "not-rigidly-foldable");
+  EXPECT_EQ(j["status"], "not-rigidly-foldable");
   EXPECT_EQ(j["fraction"].get<double>(), 0.0);
   EXPECT_TRUE(j["output"].is_null());
   EXPECT_NE(r.err.find("not-rigidly-foldable"), std::string::npos) << r.err;
@@ -77,6 +79,7 @@ TEST(FoldCli, CollisionExitsFourAndPartialWritesThePathSoFar) {
   auto r = foldkit({"fold", pattern, "--velocity", "1:1,2:1", "-o", out, "--json"});
   EXPECT_EQ(r.exit, 4) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["stop"], "collision");
+  EXPECT_EQ(nlohmann::json::parse(r.out)["status"], "collision");
   EXPECT_FALSE(std::filesystem::exists(out));
   r = foldkit({"fold", pattern, "--velocity", "1:1,2:1", "--partial", "-o", out});
   EXPECT_EQ(r.exit, 4) << r.err;

@@ -48,6 +48,9 @@ TEST(HamiltonianCli, PlusHasNoPathButItsRefinementHasACycle) {
   EXPECT_EQ(none.exit, 4);
   const auto j = nlohmann::json::parse(none.out);
   EXPECT_FALSE(j["found"].get<bool>());
+  EXPECT_EQ(j["verdict"], "none");
+  EXPECT_EQ(j["status"], "no-solution");
+  EXPECT_EQ(j["message"], j["reason"]);
   EXPECT_NE(j["reason"].get<std::string>().find("degree 1"), std::string::npos);
   EXPECT_NE(none.err.find("degree 1"), std::string::npos);
   const CliResult refined = foldkit({"hamiltonian", shape, "--refine"});

@@ -37,6 +37,7 @@ TEST(SimulateCli, ValidZigZagExitsZeroWithReport) {
   ASSERT_EQ(r.exit, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);  // exactly one object
   EXPECT_TRUE(j["ok"].get<bool>());
+  EXPECT_EQ(j["status"], "success");
   EXPECT_EQ(j["collisions"].size(), 0u);
   EXPECT_EQ(j["max_closure_error"].get<double>(), 0.0);
   ASSERT_EQ(j["events"].size(), 1u);
@@ -54,6 +55,8 @@ TEST(SimulateCli, RollingCollisionExitsThreeAndNamesTheActors) {
   ASSERT_EQ(r.exit, 3) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_FALSE(j["ok"].get<bool>());
+  EXPECT_EQ(j["status"], "collision");
+  EXPECT_EQ(j["message"], j["problems"][0]);
   ASSERT_EQ(j["collisions"].size(), 1u);
   const auto& hit = j["collisions"][0];
   EXPECT_EQ(hit["actors"], nlohmann::json({1, 3}));

@@ -1,6 +1,7 @@
 #pragma once
-// `foldkit bench` (docs/BENCHMARKING.md): the built-in scenes (a pattern, a closed start and
-// goal, how to plan on it) and the suites of scenes × planners.
+/// @file
+/// `foldkit bench` (docs/BENCHMARKING.md): the built-in scenes (a pattern, a closed start and
+/// goal, how to plan on it) and the suites of scenes × planners.
 #include <memory>
 #include <string>
 #include <vector>
@@ -8,31 +9,44 @@
 #include "foldkit/geometry/crease_pattern.hpp"
 #include "foldkit/planners/plan.hpp"
 
+/// The benchmark suite of `foldkit bench`: scenes, deterministic methods run as OMPL planners,
+/// runs, and OMPL benchmark logs.
 namespace foldkit::bench {
 
-// A pattern with a closed start and a closed goal, reachable from the start, and how to plan on
-// it (space, assignment bounds, search margin; `request.pattern` points into `pattern`).
+/// A pattern with a closed start and a closed goal, reachable from the start, and how to plan on
+/// it (space, assignment bounds, search margin; `request.pattern` points into `pattern`).
 struct BenchScene {
-  std::string name, description;
-  std::shared_ptr<const geometry::CreasePattern> pattern;
-  planners::PlanRequest request;  // pattern, goal, start (flat when empty), space, bounds, collisions, …
+  std::string name,         ///< the scene's name, as bench_scene_names() lists it
+      description;          ///< what the scene is, in words
+  std::shared_ptr<const geometry::CreasePattern> pattern;  ///< the pattern, shared with `request.pattern`
+  /// Pattern, goal, start (flat when empty), space, bounds, collisions (on), replay (off), …
+  planners::PlanRequest request;
 };
 
+/// A named set of scenes and planners run together.
 struct BenchSuite {
-  std::string name, description;
-  std::vector<std::string> scenes, planners;
+  std::string name,         ///< "quick" or "full"
+      description;          ///< what it is for, in words
+  std::vector<std::string> scenes,  ///< scene names (bench_scene_names())
+      planners;                     ///< planner names: OMPL planners and deterministic methods
 };
 
-// "quick" (a few small scenes, 2 planners: seconds) and "full" (every scene, sampling and
-// deterministic planners).
+/// The suites: "quick" (three small scenes, RRTConnect and ProjectedLine: seconds) and "full"
+/// (every scene, seven sampling planners and every deterministic method).
 const std::vector<BenchSuite>& bench_suites();
-// std::invalid_argument naming the known suites for any other name.
+/// The suite named `name`.
+/// @throws std::invalid_argument naming the known suites for any other name
 const BenchSuite& bench_suite(const std::string& name);
-// Every built-in scene: vertex4-random … vertex32-symmetric, boat, miura4x4, miura10x10,
-// waterbomb, cube-sheet, corner-cube.
+/// Every built-in scene: vertex4-random … vertex32-symmetric, boat, miura4x4, miura10x10,
+/// waterbomb, cube-sheet, corner-cube.
 std::vector<std::string> bench_scene_names();
-// The scene with its goal drawn from `seed` (std::mt19937: the same seed gives the same goal on
-// every machine). std::invalid_argument for an unknown name.
+/// The scene with its goal drawn from `seed` and the scene's name (std::mt19937, seeded by a
+/// hash that does not depend on the compiler; the distributions drawn from it are the standard
+/// library's, so the same seed gives the same goal wherever the same standard library is used).
+/// A goal is kept only when the straight way to it from the start is closed, within the bounds
+/// and free of crossing facets. corner-cube's goal does not depend on the seed.
+/// @throws std::invalid_argument for an unknown name
+/// @throws std::runtime_error when no reachable goal is found within the scene's tries
 BenchScene make_bench_scene(const std::string& name, unsigned int seed);
 
 }  // namespace foldkit::bench

@@ -1,4 +1,8 @@
 #pragma once
+/// @file
+/// Projected-velocity folding (Tachi's rigid-origami simulation): folding a crease pattern out of
+/// the flat sheet along a desired crease velocity, kept on the closure manifold
+/// (docs/PROJECTED_FOLDING.md).
 #include <limits>
 #include <optional>
 #include <string>
@@ -13,69 +17,94 @@
 #include "foldkit/geometry/status.hpp"
 #include "foldkit/simulation/simulate.hpp"
 
+/// Folding methods: projected-velocity folding, Carpenter's rule (planar chains and single
+/// vertices), Hamiltonian paths through pixel and voxel shapes, and chains of cubes.
 namespace foldkit::folding {
 
+/// Options of fold_projected(); the ranges given are checked.
 struct ProjectedFoldingOptions {
-  // Desired velocity, one entry per joint (only its direction matters). Empty: the assignment's
-  // signs, mountain +1, valley −1, unassigned and flat 0.
+  /// Desired velocity, one entry per joint, finite and not all zero (only its direction
+  /// matters). Empty: the assignment's signs, mountain +1, valley −1, unassigned and flat 0
+  /// (assignment_velocity()).
   Eigen::VectorXd velocity;
-  // Stop when the largest |fold angle| reaches target_fraction·π, in (0, 1].
+  /// Stop when the largest |fold angle| reaches target_fraction·π, in (0, 1].
   double target_fraction = 0.9;
-  double max_step = 0.01;            // largest change of any crease per step, radians
-  // Amplitude (radians, largest crease) of the first state, the closed state nearest to the
-  // desired direction at this amplitude: the way out of the singular flat sheet.
+  double max_step = 0.01;            ///< largest change of any crease per step, radians, in (0, 0.5]
+  /// Amplitude (radians, largest crease; in (0, 1], and at most half the target angle) of the
+  /// first state, the closed state nearest to the desired direction at this amplitude: the way
+  /// out of the singular flat sheet, reached in steps of at most max_step.
   double lead_in = 0.1;
-  double closure_tolerance = 1e-10;  // largest loop error (radians) accepted at every state
-  bool collisions = true;            // simulation::CollisionWorld between and at the states
-  int max_steps = 20000;
-  // Rank of the Jacobian: singular values above √rank_tolerance · σ_max count. The LDLᵀ pivots
-  // of JᵀJ + εI (above rank_tolerance × the largest) screen every step; when their count changes
-  // or they collapse, geometry::LeastNormSolver::decide_rank decides from singular values.
+  double closure_tolerance = 1e-10;  ///< largest loop error (radians) accepted at every state, in (0, 1e-3)
+  bool collisions = true;            ///< check simulation::CollisionWorld between and at the states (and in the replay)
+  int max_steps = 20000;             ///< most states after the flat one, at least 1 (then StatusCode::LimitReached)
+  /// Rank of the Jacobian: singular values above √rank_tolerance · σ_max count. The LDLᵀ pivots
+  /// of JᵀJ + εI (above rank_tolerance × the largest) screen every step; when their count changes
+  /// or they collapse, geometry::LeastNormSolver::decide_rank decides from singular values.
+  /// Positive.
   double rank_tolerance = 1e-8;
-  // A state is singular when its smallest kept singular value falls below this × σ_max (screened
-  // by √(smallest kept pivot / largest), confirmed by singular values).
+  /// A state is singular when its smallest kept singular value falls below this × σ_max (screened
+  /// by √(smallest kept pivot / largest), confirmed by singular values). At least 0.
   double singular_ratio = 1e-7;
-  bool replay = true;                // replay the CMML in the simulator (collisions as above)
-  double cmml_velocity = 1.0;        // fastest joint's speed in the CMML, rad/s
-  geometry::ProgressFn progress;     // per step (steps, closure error), then the replay's
+  /// Replay the CMML in the simulator (default simulation options, collisions as above) when the
+  /// path has more than the flat state.
+  bool replay = true;
+  double cmml_velocity = 1.0;        ///< fastest joint's speed in the CMML, rad/s, positive and finite
+  /// Called at every accepted state (steps so far, unit "steps", its loop error), then by the
+  /// replay (simulation::SimulationOptions::progress).
+  geometry::ProgressFn progress;
 };
 
+/// What fold_projected() found.
 struct ProjectedFoldingResult {
-  // Why projected-velocity folding stopped (docs/PROJECTED_FOLDING.md): Success (the largest fold
-  // angle reached target_fraction·π), Collision (the next step makes facets cross; the path ends
-  // before it), Singular (the closure Jacobian lost rank, its pivots collapsed, or a crease
-  // returned to flat), NotRigidlyFoldable (no closed state near flat follows the desired
-  // velocity: the square twist), NoProgress (the desired velocity has no component along the
-  // motions closure allows), LimitReached (max_steps). A replay the simulator rejects keeps the
-  // code and adds its reason to the message (see `replay`).
+  /// Why projected-velocity folding stopped (docs/PROJECTED_FOLDING.md): StatusCode::Success (the
+  /// largest fold angle reached target_fraction·π), StatusCode::Collision (the next step makes
+  /// facets cross; the path ends before it), StatusCode::Singular (the closure Jacobian lost
+  /// rank, its pivots collapsed, a crease returned to flat, the way out of flat jumped between
+  /// branches, or the correction failed even at max_step/64), StatusCode::NotRigidlyFoldable (no
+  /// closed state near flat follows the desired velocity: the square twist),
+  /// StatusCode::NoProgress (the desired velocity has no component along the motions closure
+  /// allows), StatusCode::LimitReached (max_steps). A replay the simulator rejects keeps the code
+  /// and adds its reason to the message (see `replay`).
   geometry::Status status;
-  std::vector<geometry::FoldState> states;  // the flat sheet first, then one state per step
-  double fraction = 0.0;             // largest |fold angle| / π at the last state
-  double max_closure_error = 0.0;    // largest loop error over the states
-  int steps = 0;                     // states after the flat one
-  int newton_iterations = 0;         // corrector iterations, all steps together
-  int rank = 0;                      // rank of the closure Jacobian at the last state
-  int dof = 0;                       // creases − rank there
-  double min_pivot_ratio = 1.0;      // smallest σ_min/σ_max estimate (see singular_ratio) along the path
-  int rank_decisions = 0;            // rank-revealing decisions made (the pivots' screen asked for them)
-  double rank_gap = 0.0;             // RankDecision::gap() of the last decision (rank, dof above)
-  double min_rank_gap = std::numeric_limits<double>::infinity();  // smallest gap over the decisions
-  std::string rank_method;           // "dense-svd" or "inverse-subspace"
-  double time = 0.0;                 // seconds, folding only (no replay)
-  geometry::FoldSequence sequence;   // CMML: flat → states (geometry::path_sequence)
+  /// The flat sheet first, then one state per step (one angle per joint, radians).
+  std::vector<geometry::FoldState> states;
+  double fraction = 0.0;             ///< largest |fold angle| / π at the last state
+  double max_closure_error = 0.0;    ///< largest loop error over the states, radians
+  int steps = 0;                     ///< states after the flat one
+  int newton_iterations = 0;         ///< corrector iterations, all steps together
+  /// Rank of the closure Jacobian at the last rank decision (0 when none was made: the fold
+  /// ended in the lead-in).
+  int rank = 0;
+  int dof = 0;                       ///< creases − rank there
+  /// Smallest σ_min/σ_max estimate (see singular_ratio) along the path; 1 when none was made.
+  double min_pivot_ratio = 1.0;
+  int rank_decisions = 0;            ///< rank-revealing decisions made (the pivots' screen asked for them)
+  double rank_gap = 0.0;             ///< geometry::RankDecision::gap() of the last decision (rank, dof above)
+  double min_rank_gap = std::numeric_limits<double>::infinity();  ///< smallest gap over the decisions
+  /// The last decision's method: "dense-svd", "inverse-subspace" or "none" (empty when no
+  /// decision was made).
+  std::string rank_method;
+  double time = 0.0;                 ///< seconds of wall-clock time, folding only (no replay)
+  geometry::FoldSequence sequence;   ///< CMML: flat → states (geometry::path_sequence, at cmml_velocity)
+  /// The simulator's report on `sequence`; empty when not replayed (replay off, or no step).
   std::optional<simulation::SimulationReport> replay;
 };
 
-// The assignment's signs: mountain +1, valley −1, others 0.
+/// The assignment's signs, one entry per joint: mountain +1, valley −1, others 0.
 Eigen::VectorXd assignment_velocity(const geometry::CreasePattern& pattern);
 
-// Tachi's rigid-origami simulation: from the flat sheet, step along the desired velocity
-// projected onto the null space of the closure Jacobian, then return to the closure manifold
-// (Newton, minimum-norm steps, signs kept) below closure_tolerance. The flat sheet is singular:
-// the first states are the closed states nearest to the desired direction at amplitudes growing
-// to lead_in; when they collapse back towards flat, the pattern does not fold rigidly along the
-// desired velocity (NotRigidlyFoldable). docs/PROJECTED_FOLDING.md. Throws std::invalid_argument
-// for options out of range, a desired velocity of the wrong size or zero (or no assignment).
+/// Tachi's rigid-origami simulation: from the flat sheet, step along the desired velocity
+/// projected onto the null space of the closure Jacobian, then return to the closure manifold
+/// (Newton, minimum-norm steps, signs kept) below closure_tolerance. The flat sheet is singular:
+/// the first states are the closed states nearest to the desired direction at amplitudes growing
+/// to lead_in; when they collapse back towards flat, the pattern does not fold rigidly along the
+/// desired velocity (StatusCode::NotRigidlyFoldable). docs/PROJECTED_FOLDING.md.
+/// @param pattern  the crease pattern, with at least one crease
+/// @param options  desired velocity, target, steps, tolerances, replay
+/// @return the path, how it ended, and the replay's report; stopping early is a status, not an
+///         exception
+/// @throws std::invalid_argument for a pattern without creases, options out of range, a desired
+///         velocity of the wrong size, not finite or zero (or, when none is given, no assignment)
 ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, const ProjectedFoldingOptions& options = {});
 
 }  // namespace foldkit::folding

@@ -1,4 +1,7 @@
 #pragma once
+/// @file
+/// Motion planning between two closed fold states with OMPL: the space, the planner, and the
+/// path turned into a CMML sequence the simulator replays (docs/PLANNING.md).
 #include <optional>
 #include <string>
 #include <vector>
@@ -8,64 +11,85 @@
 #include "foldkit/geometry/status.hpp"
 #include "foldkit/simulation/simulate.hpp"
 
+/// Planning with OMPL: the pipeline from a request to a checked, replayed CMML plan, and the
+/// planners by name.
 namespace foldkit::planners {
 
-// Which space the planner searches (docs/PLANNING.md).
+/// Which space the planner searches (docs/PLANNING.md).
 enum class SpaceKind {
-  Auto,           // single-vertex for a pattern with one interior vertex, else projected
-  SingleVertex,   // the exact (n − 3)-dimensional space of one vertex
-  Projected,      // OMPL ProjectedStateSpace on the closure constraint (analytic Jacobian)
-  Atlas,          // OMPL AtlasStateSpace
-  TangentBundle,  // OMPL TangentBundleStateSpace
+  Auto,           ///< single-vertex for a pattern with one interior vertex and no hole, else projected
+  SingleVertex,   ///< the exact (n − 3)-dimensional space of one vertex
+  Projected,      ///< OMPL ProjectedStateSpace on the closure constraint (analytic Jacobian)
+  Atlas,          ///< OMPL AtlasStateSpace
+  TangentBundle,  ///< OMPL TangentBundleStateSpace
 };
-// "auto", "single-vertex", "projected", "atlas", "tangent-bundle"; std::invalid_argument otherwise.
+/// The space named "auto", "single-vertex", "projected", "atlas" or "tangent-bundle".
+/// @throws std::invalid_argument for any other name
 SpaceKind parse_space(const std::string& name);
+/// The kind's name, as parse_space() reads it.
 const char* to_string(SpaceKind kind);
 
+/// A planning problem: from a closed start (flat by default) to a closed goal.
 struct PlanRequest {
-  const geometry::CreasePattern* pattern = nullptr;
-  // Where the plan starts, and the CMML that reaches it from the flat sheet (empty: flat start).
+  const geometry::CreasePattern* pattern = nullptr;  ///< the pattern (required; must outlive the call)
+  /// Where the plan starts (closed, one angle per joint, radians); empty: the flat sheet.
   std::optional<geometry::FoldState> start;
+  /// The CMML that reaches `start` from the flat sheet; empty for a flat start. When given, it
+  /// comes first in the plan's sequence, in place of its first event (flat → start) when the
+  /// start is not flat, and the events are renumbered from 1.
   geometry::FoldSequence start_sequence;
-  geometry::FoldState goal;  // closed, one angle per joint
-  SpaceKind space = SpaceKind::Auto;
-  std::string planner = "RRTConnect";
-  double time = 5.0;          // seconds for the planner
-  unsigned int seed = 1;
-  bool collisions = true;
-  bool use_assignment = true;  // mountain/valley assignments of the pattern become angle bounds
-  bool numerical_jacobian = false;  // constrained spaces: OMPL's finite differences (a baseline)
-  bool simplify = true;
-  // Constrained spaces: when ≥ 0, the ambient box the sampler draws from (and the plan stays in)
-  // is narrowed to [min(start, goal) − margin, max(start, goal) + margin] per crease (within the
-  // bounds). On patterns whose closure variety has many branches through flat (Miura) uniform
-  // ambient samples project onto those other branches and RRTConnect never heads for the goal.
+  geometry::FoldState goal;  ///< closed (to 1e-6 rad), one angle per joint, radians
+  SpaceKind space = SpaceKind::Auto;  ///< which space to search
+  std::string planner = "RRTConnect";  ///< an OMPL planner by name (make_planner())
+  /// Seconds for the planner at most (positive, finite); it stops at the first exact solution.
+  double time = 5.0;
+  unsigned int seed = 1;      ///< seed of OMPL's random numbers (0 counts as 1)
+  bool collisions = true;     ///< whether crossing facets make a state invalid (planning and replay)
+  bool use_assignment = true;  ///< mountain/valley assignments of the pattern become angle bounds
+  bool numerical_jacobian = false;  ///< constrained spaces: OMPL's finite differences (a baseline)
+  bool simplify = true;       ///< shorten the path with OMPL's PathSimplifier (reduce vertices, shortcut)
+  /// Constrained spaces: when ≥ 0, the ambient box the sampler draws from (and the plan stays in)
+  /// is narrowed to [min(start, goal) − margin, max(start, goal) + margin] per crease (within the
+  /// bounds; radians). On patterns whose closure variety has many branches through flat (Miura)
+  /// uniform ambient samples project onto those other branches and RRTConnect never heads for the
+  /// goal.
   double search_margin = -1.0;
-  double resolution = 0.02;     // motion validator: radians per check (single-vertex); manifold step/2.5 otherwise
-  double waypoint_step = 0.02;  // largest joint change between two CMML waypoints, radians
-  double velocity = 1.0;        // fastest joint's speed in the CMML, rad/s
-  bool replay = true;           // replay the plan in the simulator before accepting it
-  bool quiet = true;            // silence OMPL's console messages
-  geometry::ProgressFn progress;  // the replay's progress (the planner itself runs for `time` at most)
+  /// Motion validator: radians per check (single-vertex); for constrained spaces the manifold
+  /// step is 2.5 × this. Positive.
+  double resolution = 0.02;
+  double waypoint_step = 0.02;  ///< largest joint change between two CMML waypoints, radians; positive
+  double velocity = 1.0;        ///< fastest joint's speed in the CMML, rad/s; positive
+  bool replay = true;           ///< replay the plan in the simulator before accepting it
+  /// Silence OMPL's console messages (sets OMPL's log level to none, for the whole process).
+  bool quiet = true;
+  geometry::ProgressFn progress;  ///< the replay's progress (the planner itself runs for `time` at most)
 };
 
+/// What plan() found.
 struct PlanResult {
-  // Success: a valid plan, replayed by the simulator when requested. Otherwise LimitReached (no
-  // plan within the time), Collision (the way out of the start collides, or the replay found
-  // one), ClosureViolated (the path leaves the closure manifold, or the replay says so).
+  /// StatusCode::Success: a valid plan, replayed by the simulator when requested. Otherwise
+  /// StatusCode::LimitReached (no plan within the time), StatusCode::Collision (the way out of
+  /// the start collides, or the replay found one), StatusCode::ClosureViolated (the path leaves
+  /// the closure manifold, or the replay says so).
   geometry::Status status;
-  std::string planner, space;
-  double time = 0.0;            // seconds the planner ran
-  double path_length = 0.0;     // Σ Euclidean joint-angle distance between waypoints, radians
-  double max_closure_error = 0.0;  // largest loop error over the waypoints and the replay
-  std::vector<geometry::FoldState> waypoints;  // start … goal, dense
-  geometry::FoldSequence sequence;             // from the flat sheet (start_sequence first)
-  std::optional<simulation::SimulationReport> replay;
+  std::string planner,          ///< the planner's name, as requested
+      space;                    ///< the space searched: "single-vertex", "projected", "atlas" or "tangent-bundle"
+  double time = 0.0;            ///< seconds the planner ran
+  double path_length = 0.0;     ///< Σ Euclidean joint-angle distance between waypoints, radians
+  double max_closure_error = 0.0;  ///< largest loop error over the waypoints and the replay, radians
+  std::vector<geometry::FoldState> waypoints;  ///< start … goal, dense (at most waypoint_step apart per joint)
+  geometry::FoldSequence sequence;             ///< from the flat sheet (start_sequence first)
+  std::optional<simulation::SimulationReport> replay;  ///< the simulator's report; empty when not replayed
 };
 
-// The pipeline: space → planner → path → simplify → densify → CMML → simulator replay.
-// Throws std::invalid_argument for a request that cannot be planned (a start or goal that is
-// not closed, an unknown planner, a single-vertex space on a multi-vertex pattern).
+/// The pipeline: space → planner → path → simplify → densify → CMML → simulator replay. A plan
+/// that cannot be found or does not check out is a status, not an exception.
+/// @param request  the problem and the planner's settings
+/// @throws std::invalid_argument for a request that cannot be planned: no pattern, a pattern
+///         without closed loops, a start or goal of the wrong size, not closed, breaking the
+///         assignment or colliding, a time, resolution, waypoint step or velocity that is not
+///         positive, an unknown planner, a single-vertex space on a pattern that is not one
+///         vertex (or a goal singular for it), or no closed way out of a singular start
 PlanResult plan(const PlanRequest& request);
 
 }  // namespace foldkit::planners
