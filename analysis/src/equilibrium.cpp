@@ -67,7 +67,7 @@ EquilibriumSystem::EquilibriumSystem(const Problem& problem) {
     Spring sp;
     sp.a = c.a;
     sp.b = c.b;
-    sp.q = c.frame;
+    sp.q = c.axes;
     sp.ca = s.modules[c.a].centroid / length_;
     sp.cb = s.modules[c.b].centroid / length_;
     sp.ra = c.origin / length_ - sp.ca;
@@ -115,7 +115,7 @@ SpringState evaluate(const S& sp, const Pose& pa, const Pose& pb) {
   st.a = pa.r * sp.q;
   st.sa = pa.r * sp.ra;
   st.sb = pb.r * sp.rb;
-  // Both frame origins coincide unloaded, so d is a sum of small terms, each accurate to its
+  // Both axes' origins coincide unloaded, so d is a sum of small terms, each accurate to its
   // own size rather than to the size of the coordinates.
   st.d = (pb.u - pa.u) + detail::rotate_minus_identity(pb.phi, sp.rb) - detail::rotate_minus_identity(pa.phi, sp.ra);
   const Vector3d dp = st.a.transpose() * st.d;

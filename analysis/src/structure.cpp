@@ -86,7 +86,7 @@ std::pair<double, Vector2d> polygon_area(const std::vector<Vector2d>& poly) {
 }
 
 // e1 in the plane with normal n, perpendicular to e3 and pointing towards `inside`.
-Eigen::Matrix3d edge_frame(const Vector3d& e3, const Vector3d& n, const Vector3d& origin, const Vector3d& inside) {
+Eigen::Matrix3d edge_axes(const Vector3d& e3, const Vector3d& n, const Vector3d& origin, const Vector3d& inside) {
   Vector3d e1 = n.cross(e3).normalized();
   if ((inside - origin).dot(e1) < 0) e1 = -e1;
   Eigen::Matrix3d f;
@@ -171,7 +171,7 @@ class Detector {
     c.joint = j;
     c.origin = 0.5 * (p + q);
     c.extent = (q - p).norm();
-    c.frame = edge_frame((q - p).normalized(), structure_.modules[a].normal, c.origin, structure_.modules[a].centroid);
+    c.axes = edge_axes((q - p).normalized(), structure_.modules[a].normal, c.origin, structure_.modules[a].centroid);
     structure_.connections.push_back(c);
     joined_.insert({std::min(a, b), std::max(a, b)});
   }
@@ -204,9 +204,9 @@ class Detector {
     c.b = b;
     c.origin = ma.centroid + centre.x() * u + centre.y() * v;
     c.extent = area;
-    c.frame.col(0) = u;
-    c.frame.col(1) = v;
-    c.frame.col(2) = ma.normal;
+    c.axes.col(0) = u;
+    c.axes.col(1) = v;
+    c.axes.col(2) = ma.normal;
     structure_.connections.push_back(c);
     return true;
   }
@@ -244,7 +244,7 @@ class Detector {
     c.b = b;
     c.origin = p0 + 0.5 * (lo + hi) * dir;
     c.extent = hi - lo;
-    c.frame = edge_frame(dir, structure_.modules[a].normal, c.origin, structure_.modules[a].centroid);
+    c.axes = edge_axes(dir, structure_.modules[a].normal, c.origin, structure_.modules[a].centroid);
     structure_.connections.push_back(c);
   }
 

@@ -40,7 +40,7 @@ class FacetObject : public fcl::CollisionObjectd {
 };
 
 struct Facet {
-  std::vector<Eigen::Vector3d> points;          // flat position (z = 0), the facet's own frame
+  std::vector<Eigen::Vector3d> points;          // flat position (z = 0), the facet's own coordinates
   std::vector<std::array<int, 3>> triangles;    // into points
   std::vector<geometry::Tri2> flat;             // the triangles in the plane
   std::unique_ptr<FacetObject> object;
@@ -222,7 +222,7 @@ struct CollisionWorld::Impl {
     return steps;
   }
 
-  // b's frame in a's: along their chain at the current state, or from the given poses.
+  // b's coordinates in a's: along their chain at the current state, or from the given poses.
   Eigen::Isometry3d relative(int a, int b, const std::vector<Eigen::Isometry3d>& poses) {
     const std::vector<int>& steps = chain(a, b);
     if (steps.front() == kNoChain) return poses[a].inverse() * poses[b];
@@ -235,7 +235,7 @@ struct CollisionWorld::Impl {
     return rel;
   }
 
-  // Where b lies relative to a's plane; `rel` maps b's frame into a's.
+  // Where b lies relative to a's plane; `rel` maps b's coordinates into a's.
   Side side_of(const Facet& b, const Eigen::Isometry3d& rel) const {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (const auto& p : b.points) {
@@ -259,7 +259,7 @@ struct CollisionWorld::Impl {
     return false;
   }
 
-  // The deepest crossing of a's and b's triangles, with b placed by `rel` in a's frame; its point
+  // The deepest crossing of a's and b's triangles, with b placed by `rel` in a's coordinates; its point
   // in world coordinates by a's pose.
   std::optional<Crossing> mesh_crossing(int a, int b, const Eigen::Isometry3d& rel, const std::vector<Eigen::Isometry3d>& poses) {
     ++mesh_tests;

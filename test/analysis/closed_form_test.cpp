@@ -26,7 +26,7 @@ analysis::Problem strip_problem(int tiles, double k, double k_translation = 1e9)
   return p;
 }
 
-// Displacement of a point of a module (given in the unloaded frame) from the solution.
+// Displacement of a point of a module (given in the unloaded coordinates) from the solution.
 Vector3d point_displacement(const analysis::Problem& p, const analysis::SolveResult& r, int module, const Vector3d& point) {
   const auto& m = r.modules[static_cast<std::size_t>(module)];
   const Vector3d arm = point - p.structure.modules[static_cast<std::size_t>(module)].centroid;

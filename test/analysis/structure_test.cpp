@@ -47,13 +47,13 @@ TEST(Structure, FoldedCubeHasFiveHingesAndSevenEdges) {
   for (const auto& k : s.connections) {
     // Frames: orthonormal, right-handed; e3 along the edge (whose length is the tile), e1 in a's
     // plane pointing into a.
-    EXPECT_NEAR((k.frame.transpose() * k.frame - Eigen::Matrix3d::Identity()).norm(), 0.0, 1e-12);
-    EXPECT_NEAR(k.frame.determinant(), 1.0, 1e-12);
+    EXPECT_NEAR((k.axes.transpose() * k.axes - Eigen::Matrix3d::Identity()).norm(), 0.0, 1e-12);
+    EXPECT_NEAR(k.axes.determinant(), 1.0, 1e-12);
     EXPECT_NEAR(k.extent, tile, 1e-12);
     const auto& a = s.modules[static_cast<std::size_t>(k.a)];
-    EXPECT_NEAR(k.frame.col(0).dot(a.normal), 0.0, 1e-12);
-    EXPECT_NEAR((a.centroid - k.origin).dot(k.frame.col(0)), tile / 2, 1e-12);
-    EXPECT_NEAR((a.centroid - k.origin).dot(k.frame.col(2)), 0.0, 1e-12);
+    EXPECT_NEAR(k.axes.col(0).dot(a.normal), 0.0, 1e-12);
+    EXPECT_NEAR((a.centroid - k.origin).dot(k.axes.col(0)), tile / 2, 1e-12);
+    EXPECT_NEAR((a.centroid - k.origin).dot(k.axes.col(2)), 0.0, 1e-12);
   }
   // Every tile meets four others, and the centroids are the six face centres of the cube.
   std::map<int, int> degree;

@@ -11,7 +11,7 @@
 
 namespace foldkit::analysis {
 
-/// A dead load (fixed direction) at a point of a module, both in the folded state's frame.
+/// A dead load (fixed direction) at a point of a module, both in the folded state's coordinates.
 struct PointLoad {
   int module = 0;  ///< index into Structure::modules
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  ///< force, N
@@ -76,8 +76,8 @@ class EquilibriumSystem {
  private:
   struct Spring {
     int a, b;                  // module indices
-    Eigen::Matrix3d q;         // frame
-    Eigen::Vector3d ra, rb;    // frame origin from each centroid, scaled
+    Eigen::Matrix3d q;         // the connection's axes
+    Eigen::Vector3d ra, rb;    // the axes' origin from each centroid, scaled
     Eigen::Vector3d ca, cb;    // centroids, scaled
     Matrix6 k;                 // scaled stiffness
   };

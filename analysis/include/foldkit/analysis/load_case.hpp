@@ -16,7 +16,7 @@ namespace foldkit::analysis {
 struct LoadSpec {
   int actor = 0;  ///< actor ID
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  ///< force, N (fixed direction)
-  std::optional<Eigen::Vector3d> point;  ///< in the folded state's frame, pattern units; none = the centroid
+  std::optional<Eigen::Vector3d> point;  ///< in the folded state's coordinates, pattern units; none = the centroid
   int line = 0;  ///< source line of the `<Load>`
 };
 

@@ -20,7 +20,7 @@
 namespace foldkit::analysis {
 
 /// A 6×6 stiffness matrix acting on [Δp; θ] (translation, then rotation vector) in a
-/// connection's frame.
+/// connection's axes.
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 
 /// The kinds of connection of Fig. 9.
@@ -46,16 +46,16 @@ struct Module {
   double area = 0.0;          ///< area, squared pattern units
 };
 
-/// A spring between modules a and b (indices into Structure::modules). Its frame is fixed to
+/// A spring between modules a and b (indices into Structure::modules). Its axes are fixed to
 /// both in the folded state: origin at the midpoint of the shared edge or the centre of the shared
 /// face; columns e1, e2, e3. Edge and hinge: e3 along the edge, e1 in a's plane perpendicular to
 /// e3 pointing into a. Face: e3 along a's normal, e1 along a's first outline edge.
 struct Connection {
   ConnectionKind kind = ConnectionKind::Hinged;  ///< what joins the two modules
-  int a = 0,  ///< the first module (index); the frame is set from it
+  int a = 0,  ///< the first module (index); the axes are set from it
       b = 0;  ///< the second module (index)
-  Eigen::Vector3d origin;  ///< the frame's origin in the folded state, pattern units
-  Eigen::Matrix3d frame;   ///< the frame's axes e1, e2, e3 as columns (orthonormal)
+  Eigen::Vector3d origin;  ///< the axes' origin in the folded state, pattern units
+  Eigen::Matrix3d axes;    ///< the connection's axes e1, e2, e3 as columns (orthonormal)
   int joint = -1;       ///< the crease (joint index) of a hinged connection; −1 otherwise
   double extent = 0.0;  ///< length of the shared edge, or area of the shared face
 };

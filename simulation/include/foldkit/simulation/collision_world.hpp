@@ -43,7 +43,7 @@ const char* to_string(CrossingKind kind);
 /// Two facets that pass through each other.
 struct Crossing {
   std::array<int, 2> actors{};  ///< actor indices, smaller first
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< where, in world coordinates (the frame of the poses)
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< where, in world coordinates (those of the poses)
   CrossingKind kind = CrossingKind::Mesh;  ///< how they cross
   /// Mesh crossings: how far the deepest-crossing pair of triangles interpenetrates (sheet units;
   /// the smaller reach of either triangle through the other's plane). 0 for the other kinds.
@@ -54,7 +54,7 @@ struct Crossing {
 /// the mesh test and judged by their fold angle instead; every other pair near enough for the
 /// broad phase is judged by the rules of docs/SIMULATION.md: touching is allowed, crossing is not.
 ///
-/// A pair is judged in the frame of its first facet, with the second placed through the creases
+/// A pair is judged in the coordinates of its first facet, with the second placed through the creases
 /// of the shortest chain of facets between them (round their common vertex, for facets that share
 /// one), not through the poses given: those come from one spanning tree, and a state that closes
 /// only to round-off or to an interpolation's error (1e-5 rad) opens, along a tree 100 facets
