@@ -30,93 +30,109 @@ const char* stop_name(geometry::StatusCode code) {
   return geometry::to_string(code);
 }
 
+struct Options {
+  std::string pattern, output, velocity;
+  double fraction = 0.9, step = 0.01;
+  int max_steps = 20000;
+  bool no_collision = false, partial = false, json = false;
+};
+
+void add_options(CLI::App* app, Options& opt) {
+  app->add_option("pattern", opt.pattern, "Crease pattern (.pmml or .fold) with a mountain/valley assignment")->required();
+  app->add_option("--fraction", opt.fraction, "Stop when the largest fold angle reaches this fraction of 180 degrees")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  app->add_option("--step", opt.step, "Largest change of any crease per step, radians")
+      ->check(CLI::Range(1e-6, 0.5))
+      ->capture_default_str();
+  app->add_option("--max-steps", opt.max_steps, "Give up after this many steps")->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_option("--velocity", opt.velocity,
+                  "Desired velocity as ID:VALUE,… over the assignment's signs (mountain +1, valley -1, others 0)");
+  app->add_flag("--no-collision", opt.no_collision, "Closure only: no self-collision checks (folding or replay)");
+  app->add_flag("--partial", opt.partial, "When the target is not reached, still write the path up to the stop");
+  app->add_option("-o,--output", opt.output, "Output CMML")->required();
+  app->add_flag("--json", opt.json, "Print one JSON object on stdout");
+}
+
+folding::ProjectedFoldingResult fold(const Options& opt, const geometry::CreasePattern& pattern) {
+  folding::ProjectedFoldingOptions o;
+  if (!opt.velocity.empty()) {
+    o.velocity = parse_velocity(pattern, opt.velocity);
+    if (!(o.velocity.cwiseAbs().maxCoeff() > 0.0)) throw UsageError("--velocity: the desired velocity is zero on every crease");
+  }
+  o.target_fraction = opt.fraction;
+  o.max_step = opt.step;
+  o.max_steps = opt.max_steps;
+  o.collisions = !opt.no_collision;
+  try {
+    ProgressLine progress("fold");
+    o.progress = progress.callback();
+    return folding::fold_projected(pattern, o);
+  } catch (const std::invalid_argument& e) {
+    throw io::ParseError(opt.pattern, 0, e.what());
+  }
+}
+
+void print_summary(const folding::ProjectedFoldingResult& r) {
+  std::cerr << stop_name(r.status.code) << ": " << r.status.message << " (fraction " << r.fraction << ", " << r.steps << " steps, "
+            << r.newton_iterations << " Newton iterations, closure error " << r.max_closure_error << " rad, " << r.time << " s)\n";
+  if (r.rank_decisions > 0)
+    std::cerr << "rank " << r.rank << " (" << r.dof << " DOF) by " << r.rank_method << ", singular-value gap " << r.rank_gap
+              << " (smallest over " << r.rank_decisions << " decisions " << r.min_rank_gap << ")\n";
+}
+
+nlohmann::json to_json(const Options& opt, const folding::ProjectedFoldingResult& r, bool written) {
+  const bool reached = r.status.code == geometry::StatusCode::Success;
+  const bool replay_ok = r.replay && r.replay->status.ok();
+  nlohmann::json j{{"stop", stop_name(r.status.code)},
+                   {"reached", reached},
+                   {"fraction", r.fraction},
+                   {"target", opt.fraction},
+                   {"steps", r.steps},
+                   {"newton_iterations", r.newton_iterations},
+                   {"max_closure_error", r.max_closure_error},
+                   {"rank", r.rank},
+                   {"dof", r.dof},
+                   {"min_pivot_ratio", r.min_pivot_ratio},
+                   {"rank_method", r.rank_method},
+                   {"rank_decisions", r.rank_decisions},
+                   {"rank_gap", r.rank_gap},
+                   {"min_rank_gap", r.rank_decisions ? nlohmann::json(r.min_rank_gap) : nlohmann::json(nullptr)},
+                   {"time", r.time},
+                   {"replay_ok", r.replay ? nlohmann::json(replay_ok) : nlohmann::json(nullptr)},
+                   {"message", r.status.message},
+                   {"output", written ? nlohmann::json(opt.output) : nlohmann::json(nullptr)}};
+  if (r.replay) j["replay_max_closure_error"] = r.replay->max_closure_error;
+  add_status(j, r.status);
+  return j;
+}
+
+int run_fold(const Options& opt) {
+  if (kind_of(opt.output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt.output + "'");
+  if (!(opt.fraction > 0.0)) throw UsageError("--fraction must be greater than 0");
+  const geometry::CreasePattern pattern = load_pattern(opt.pattern).pattern;
+  const folding::ProjectedFoldingResult r = fold(opt, pattern);
+  const bool reached = r.status.code == geometry::StatusCode::Success;
+  const bool replay_ok = r.replay && r.replay->status.ok();
+  print_summary(r);
+  const bool write = replay_ok && (reached || opt.partial);
+  if (write) {
+    io::write_file_atomic(opt.output, io::write_cmml(r.sequence));
+    std::cerr << "wrote " << opt.output << '\n';
+  }
+  if (opt.json) print_json(to_json(opt, r, write));
+  if (r.replay && !r.replay->status.ok()) return kInvalidSequence;
+  return reached ? kOk : kNoPlan;
+}
+
 }  // namespace
 
 Command add_fold(CLI::App& root) {
-  struct Options {
-    std::string pattern, output, velocity;
-    double fraction = 0.9, step = 0.01;
-    int max_steps = 20000;
-    bool no_collision = false, partial = false, json = false;
-  };
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand(
       "fold", "Fold all creases together: desired velocity projected onto the closure constraint, Newton-corrected");
-  app->add_option("pattern", opt->pattern, "Crease pattern (.pmml or .fold) with a mountain/valley assignment")->required();
-  app->add_option("--fraction", opt->fraction, "Stop when the largest fold angle reaches this fraction of 180 degrees")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  app->add_option("--step", opt->step, "Largest change of any crease per step, radians")
-      ->check(CLI::Range(1e-6, 0.5))
-      ->capture_default_str();
-  app->add_option("--max-steps", opt->max_steps, "Give up after this many steps")->check(CLI::PositiveNumber)->capture_default_str();
-  app->add_option("--velocity", opt->velocity,
-                  "Desired velocity as ID:VALUE,… over the assignment's signs (mountain +1, valley -1, others 0)");
-  app->add_flag("--no-collision", opt->no_collision, "Closure only: no self-collision checks (folding or replay)");
-  app->add_flag("--partial", opt->partial, "When the target is not reached, still write the path up to the stop");
-  app->add_option("-o,--output", opt->output, "Output CMML")->required();
-  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
-  return {app, [opt] {
-            if (kind_of(opt->output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt->output + "'");
-            if (!(opt->fraction > 0.0)) throw UsageError("--fraction must be greater than 0");
-            const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
-            folding::ProjectedFoldingOptions o;
-            if (!opt->velocity.empty()) {
-              o.velocity = parse_velocity(pattern, opt->velocity);
-              if (!(o.velocity.cwiseAbs().maxCoeff() > 0.0))
-                throw UsageError("--velocity: the desired velocity is zero on every crease");
-            }
-            o.target_fraction = opt->fraction;
-            o.max_step = opt->step;
-            o.max_steps = opt->max_steps;
-            o.collisions = !opt->no_collision;
-            folding::ProjectedFoldingResult r;
-            try {
-              ProgressLine progress("fold");
-              o.progress = progress.callback();
-              r = folding::fold_projected(pattern, o);
-            } catch (const std::invalid_argument& e) {
-              throw io::ParseError(opt->pattern, 0, e.what());
-            }
-            const bool reached = r.status.code == geometry::StatusCode::Success;
-            const bool replay_ok = r.replay && r.replay->status.ok();
-            std::cerr << stop_name(r.status.code) << ": " << r.status.message << " (fraction " << r.fraction << ", " << r.steps
-                      << " steps, " << r.newton_iterations << " Newton iterations, closure error " << r.max_closure_error
-                      << " rad, " << r.time << " s)\n";
-            if (r.rank_decisions > 0)
-              std::cerr << "rank " << r.rank << " (" << r.dof << " DOF) by " << r.rank_method << ", singular-value gap " << r.rank_gap
-                        << " (smallest over " << r.rank_decisions << " decisions " << r.min_rank_gap << ")\n";
-            const bool write = replay_ok && (reached || opt->partial);
-            if (write) {
-              io::write_file_atomic(opt->output, io::write_cmml(r.sequence));
-              std::cerr << "wrote " << opt->output << '\n';
-            }
-            if (opt->json) {
-              nlohmann::json j{{"stop", stop_name(r.status.code)},
-                               {"reached", reached},
-                               {"fraction", r.fraction},
-                               {"target", opt->fraction},
-                               {"steps", r.steps},
-                               {"newton_iterations", r.newton_iterations},
-                               {"max_closure_error", r.max_closure_error},
-                               {"rank", r.rank},
-                               {"dof", r.dof},
-                               {"min_pivot_ratio", r.min_pivot_ratio},
-                               {"rank_method", r.rank_method},
-                               {"rank_decisions", r.rank_decisions},
-                               {"rank_gap", r.rank_gap},
-                               {"min_rank_gap", r.rank_decisions ? nlohmann::json(r.min_rank_gap) : nlohmann::json(nullptr)},
-                               {"time", r.time},
-                               {"replay_ok", r.replay ? nlohmann::json(replay_ok) : nlohmann::json(nullptr)},
-                               {"message", r.status.message},
-                               {"output", write ? nlohmann::json(opt->output) : nlohmann::json(nullptr)}};
-              if (r.replay) j["replay_max_closure_error"] = r.replay->max_closure_error;
-              add_status(j, r.status);
-              print_json(j);
-            }
-            if (r.replay && !r.replay->status.ok()) return kInvalidSequence;
-            return reached ? kOk : kNoPlan;
-          }};
+  add_options(app, *opt);
+  return {app, [opt] { return run_fold(*opt); }};
 }
 
 }  // namespace foldkit::apps

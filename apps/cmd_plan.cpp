@@ -21,106 +21,130 @@ std::vector<std::pair<int, double>> parse_goal_angles(const geometry::CreasePatt
   return out;
 }
 
-}  // namespace
+struct Options {
+  std::string pattern, goal, goal_angles, start, space = "auto", planner = "RRTConnect", output;
+  double time = 5.0, search_margin = -1.0;
+  unsigned int seed = 1;
+  bool no_collision = false, free_signs = false, json = false;
+};
 
-Command add_plan(CLI::App& root) {
-  struct Options {
-    std::string pattern, goal, goal_angles, start, space = "auto", planner = "RRTConnect", output;
-    double time = 5.0, search_margin = -1.0;
-    unsigned int seed = 1;
-    bool no_collision = false, free_signs = false, json = false;
-  };
-  auto opt = std::make_shared<Options>();
-  CLI::App* app = root.add_subcommand("plan", "Plan a closed, collision-free fold sequence with an OMPL planner");
-  app->add_option("pattern", opt->pattern, "Crease pattern (.pmml or .fold)")->required();
-  CLI::Option* goal = app->add_option("--goal", opt->goal, "CMML whose end state is the goal");
+void add_options(CLI::App* app, Options& opt) {
+  app->add_option("pattern", opt.pattern, "Crease pattern (.pmml or .fold)")->required();
+  CLI::Option* goal = app->add_option("--goal", opt.goal, "CMML whose end state is the goal");
   CLI::Option* goal_angles =
-      app->add_option("--goal-angles", opt->goal_angles,
+      app->add_option("--goal-angles", opt.goal_angles,
                       "Goal as ID:DEGREES,… for some creases: the nearest closed state to flat that holds them");
   goal->excludes(goal_angles);
   goal_angles->excludes(goal);
-  app->add_option("--start", opt->start, "CMML whose end state is the start (default: flat)");
-  app->add_option("--space", opt->space, "auto, single-vertex, projected, atlas, tangent-bundle")
+  app->add_option("--start", opt.start, "CMML whose end state is the start (default: flat)");
+  app->add_option("--space", opt.space, "auto, single-vertex, projected, atlas, tangent-bundle")
       ->check(CLI::IsMember({"auto", "single-vertex", "projected", "atlas", "tangent-bundle"}))
       ->capture_default_str();
-  app->add_option("--planner", opt->planner, "OMPL geometric planner by name (RRTConnect, RRT*, PRM, KPIECE1, BiTRRT, …)")
+  app->add_option("--planner", opt.planner, "OMPL geometric planner by name (RRTConnect, RRT*, PRM, KPIECE1, BiTRRT, …)")
       ->capture_default_str();
-  app->add_option("--time", opt->time, "Seconds for the planner")->check(CLI::PositiveNumber)->capture_default_str();
-  app->add_option("--seed", opt->seed, "Random seed (same seed, same plan)")->check(CLI::PositiveNumber)->capture_default_str();
-  app->add_flag("--no-collision", opt->no_collision, "Closure only (no collision world is built)");
-  app->add_option("--search-margin", opt->search_margin,
+  app->add_option("--time", opt.time, "Seconds for the planner")->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_option("--seed", opt.seed, "Random seed (same seed, same plan)")->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_flag("--no-collision", opt.no_collision, "Closure only (no collision world is built)");
+  app->add_option("--search-margin", opt.search_margin,
                   "Constrained spaces: sample only within the box of start and goal widened by this (radians)")
       ->check(CLI::NonNegativeNumber);
-  app->add_flag("--free-signs", opt->free_signs, "Ignore the pattern's mountain/valley assignment");
-  app->add_option("-o,--output", opt->output, "Output CMML")->required();
-  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
-  return {app, [opt] {
-            if (kind_of(opt->output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt->output + "'");
-            try {
-              opt->planner = planners::canonical_planner(opt->planner);
-            } catch (const std::invalid_argument& e) {
-              throw UsageError(e.what());
-            }
-            const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
-            auto read = [&](const std::string& file) {
-              const geometry::FoldSequence seq = io::read_cmml(file);
-              for (const auto& d : geometry::check_sequence(pattern, seq))
-                if (d.severity == geometry::Severity::Error) throw io::ParseError(file, d.line, d.message);
-              return seq;
-            };
-            planners::PlanRequest req;
-            req.pattern = &pattern;
-            if (opt->goal.empty() == opt->goal_angles.empty()) throw UsageError("give the goal as --goal CMML or --goal-angles ID:DEG,…");
-            if (!opt->goal.empty()) {
-              req.goal = geometry::end_state(pattern, read(opt->goal));
-            } else {
-              std::string why;
-              const auto g = geometry::goal_from_angles(geometry::ClosureSystem(pattern), parse_goal_angles(pattern, opt->goal_angles), why);
-              if (!g) {
-                std::cerr << "no plan: no closed state holds the angles of --goal-angles (" << why << ")\n";
-                if (opt->json) print_json({{"solved", false}, {"message", "no closed goal state: " + why}});
-                return kNoPlan;
-              }
-              req.goal = *g;
-            }
-            if (!opt->start.empty()) {
-              req.start_sequence = read(opt->start);
-              req.start = geometry::end_state(pattern, req.start_sequence);
-            }
-            req.space = planners::parse_space(opt->space);
-            req.planner = opt->planner;
-            req.time = opt->time;
-            req.seed = opt->seed;
-            req.collisions = !opt->no_collision;
-            req.search_margin = opt->search_margin;
-            req.use_assignment = !opt->free_signs;
-            planners::PlanResult r;
-            try {
-              ProgressLine progress("plan (replay)");
-              req.progress = progress.callback();
-              r = planners::plan(req);
-            } catch (const std::invalid_argument& e) {
-              throw io::ParseError(opt->goal.empty() ? "--goal-angles" : opt->goal, 0, e.what());
-            }
-            std::cerr << (r.status.ok() ? "solved" : "no plan") << ": " << r.status.message << " (" << r.planner << " in " << r.space
-                      << ", " << r.time << " s, " << r.waypoints.size() << " waypoints)\n";
-            if (r.status.ok()) {
-              io::write_file_atomic(opt->output, io::write_cmml(r.sequence));
-              std::cerr << "wrote " << opt->output << '\n';
-            }
-            if (opt->json) {
-              nlohmann::json j{{"solved", r.status.ok()},
-                               {"planner", r.planner},
-                               {"space", r.space},
-                               {"time", r.time},
-                               {"path_length", r.path_length},
-                               {"max_closure_error", r.max_closure_error},
-                               {"waypoints", r.waypoints.size()}};
-              add_status(j, r.status);
-              print_json(j);
-            }
-            return r.status.ok() ? kOk : kNoPlan;
-          }};
+  app->add_flag("--free-signs", opt.free_signs, "Ignore the pattern's mountain/valley assignment");
+  app->add_option("-o,--output", opt.output, "Output CMML")->required();
+  app->add_flag("--json", opt.json, "Print one JSON object on stdout");
+}
+
+// A CMML file checked against the pattern: its first error ends the command.
+geometry::FoldSequence read_sequence(const geometry::CreasePattern& pattern, const std::string& file) {
+  const geometry::FoldSequence seq = io::read_cmml(file);
+  for (const auto& d : geometry::check_sequence(pattern, seq))
+    if (d.severity == geometry::Severity::Error) throw io::ParseError(file, d.line, d.message);
+  return seq;
+}
+
+// The goal from --goal or --goal-angles; false (after saying so) when no closed state holds the
+// angles asked for.
+bool set_goal(const Options& opt, const geometry::CreasePattern& pattern, planners::PlanRequest& req) {
+  if (!opt.goal.empty()) {
+    req.goal = geometry::end_state(pattern, read_sequence(pattern, opt.goal));
+    return true;
+  }
+  std::string why;
+  const auto g = geometry::goal_from_angles(geometry::ClosureSystem(pattern), parse_goal_angles(pattern, opt.goal_angles), why);
+  if (!g) {
+    std::cerr << "no plan: no closed state holds the angles of --goal-angles (" << why << ")\n";
+    if (opt.json) print_json({{"solved", false}, {"message", "no closed goal state: " + why}});
+    return false;
+  }
+  req.goal = *g;
+  return true;
+}
+
+void set_start_and_settings(const Options& opt, const geometry::CreasePattern& pattern, planners::PlanRequest& req) {
+  if (!opt.start.empty()) {
+    req.start_sequence = read_sequence(pattern, opt.start);
+    req.start = geometry::end_state(pattern, req.start_sequence);
+  }
+  req.space = planners::parse_space(opt.space);
+  req.planner = opt.planner;
+  req.time = opt.time;
+  req.seed = opt.seed;
+  req.collisions = !opt.no_collision;
+  req.search_margin = opt.search_margin;
+  req.use_assignment = !opt.free_signs;
+}
+
+int report(const Options& opt, const planners::PlanResult& r) {
+  std::cerr << (r.status.ok() ? "solved" : "no plan") << ": " << r.status.message << " (" << r.planner << " in " << r.space
+            << ", " << r.time << " s, " << r.waypoints.size() << " waypoints)\n";
+  if (r.status.ok()) {
+    io::write_file_atomic(opt.output, io::write_cmml(r.sequence));
+    std::cerr << "wrote " << opt.output << '\n';
+  }
+  if (opt.json) {
+    nlohmann::json j{{"solved", r.status.ok()},
+                     {"planner", r.planner},
+                     {"space", r.space},
+                     {"time", r.time},
+                     {"path_length", r.path_length},
+                     {"max_closure_error", r.max_closure_error},
+                     {"waypoints", r.waypoints.size()}};
+    add_status(j, r.status);
+    print_json(j);
+  }
+  return r.status.ok() ? kOk : kNoPlan;
+}
+
+int run_plan(Options& opt) {
+  if (kind_of(opt.output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt.output + "'");
+  try {
+    opt.planner = planners::canonical_planner(opt.planner);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  const geometry::CreasePattern pattern = load_pattern(opt.pattern).pattern;
+  planners::PlanRequest req;
+  req.pattern = &pattern;
+  if (opt.goal.empty() == opt.goal_angles.empty()) throw UsageError("give the goal as --goal CMML or --goal-angles ID:DEG,…");
+  if (!set_goal(opt, pattern, req)) return kNoPlan;
+  set_start_and_settings(opt, pattern, req);
+  planners::PlanResult r;
+  try {
+    ProgressLine progress("plan (replay)");
+    req.progress = progress.callback();
+    r = planners::plan(req);
+  } catch (const std::invalid_argument& e) {
+    throw io::ParseError(opt.goal.empty() ? "--goal-angles" : opt.goal, 0, e.what());
+  }
+  return report(opt, r);
+}
+
+}  // namespace
+
+Command add_plan(CLI::App& root) {
+  auto opt = std::make_shared<Options>();
+  CLI::App* app = root.add_subcommand("plan", "Plan a closed, collision-free fold sequence with an OMPL planner");
+  add_options(app, *opt);
+  return {app, [opt] { return run_plan(*opt); }};
 }
 
 }  // namespace foldkit::apps

@@ -138,29 +138,24 @@ std::vector<ProjectionCase> projection_cases() {
   return out;
 }
 
-void projection_rows(const ProjectionCase& c, std::vector<Row>& rows) {
-  const geometry::ClosureSystem sys(c.pattern);
-  auto row = [&](const std::string& method, const std::string& parameter, double value) {
-    Row r;
-    r.study = "projection";
-    r.problem = c.name;
-    r.method = method;
-    r.parameter = parameter;
-    r.value = value;
-    return r;
-  };
-  {
-    Row r = row("start", "none", 0);
-    r.error = r.residual = sys.max_error(c.start);
-    rows.push_back(r);
-  }
-  // Ours, stopped after k iterations: the error trajectory, each point costed as a whole run.
+Row projection_row(const ProjectionCase& c, const std::string& method, const std::string& parameter, double value) {
+  Row r;
+  r.study = "projection";
+  r.problem = c.name;
+  r.method = method;
+  r.parameter = parameter;
+  r.value = value;
+  return r;
+}
+
+// Ours, stopped after k iterations: the error trajectory, each point costed as a whole run.
+void iteration_limit_rows(const geometry::ClosureSystem& sys, const ProjectionCase& c, std::vector<Row>& rows) {
   for (int k = 1; k <= 60; ++k) {
     geometry::ProjectionOptions o;
     o.tolerance = 1e-15;
     o.max_iterations = k;
     geometry::ProjectionResult res;
-    Row r = row("ours_iteration_limit", "max_iterations", k);
+    Row r = projection_row(c, "ours_iteration_limit", "max_iterations", k);
     r.time_s = timed([&] { res = geometry::project(sys, c.start, o); });
     r.iterations = res.iterations;
     r.error = r.residual = res.error;
@@ -168,57 +163,82 @@ void projection_rows(const ProjectionCase& c, std::vector<Row>& rows) {
     rows.push_back(r);
     if (res.iterations < k) break;  // converged or stuck: later limits change nothing
   }
-  for (bool keep : {true, false})
-    for (int e = 2; e <= 14; ++e) {
-      geometry::ProjectionOptions o;
-      o.tolerance = std::pow(10.0, -e);
-      o.keep_signs = keep;
-      geometry::ProjectionResult res;
-      Row r = row(keep ? "ours_tolerance" : "ours_tolerance_free_signs", "tolerance", o.tolerance);
-      r.time_s = timed([&] { res = geometry::project(sys, c.start, o); });
-      r.iterations = res.iterations;
-      r.error = r.residual = res.error;
-      r.converged = res.status.ok();
-      rows.push_back(r);
-    }
-  // The generic way: Gauss–Newton through the dense pseudo-inverse, x ← x − α J⁺ r, its error
-  // after each iteration against the CPU time spent so far.
-  // The trajectory is run a few times and each point keeps its least cumulative time.
-  for (double alpha : {1.0, 0.5, 0.25}) {
-    const int limit = g_quick ? 25 : 40;
-    std::vector<double> errors, spent;
-    for (int repeat = 0; repeat < 5; ++repeat) {
-      FoldState s = c.start;
-      Eigen::VectorXd res;
-      Eigen::SparseMatrix<double> J;
-      double total = 0;
-      for (int k = 1; k <= limit; ++k) {
-        const double t0 = cpu_seconds();
-        sys.evaluate(s, res, J);
-        const Eigen::MatrixXd dense(J);
-        const Eigen::JacobiSVD<Eigen::MatrixXd> svd(dense, Eigen::ComputeThinU | Eigen::ComputeThinV);
-        s.angles = (s.angles - alpha * svd.solve(res)).cwiseMax(-M_PI).cwiseMin(M_PI);
-        const double error = sys.max_error(s);
-        total += cpu_seconds() - t0;
-        if (repeat == 0) {
-          errors.push_back(error);
-          spent.push_back(total);
-        } else {
-          spent[static_cast<std::size_t>(k - 1)] = std::min(spent[static_cast<std::size_t>(k - 1)], total);
-        }
-        if (error <= 1e-14 || !std::isfinite(error)) break;
-      }
-      if (total > (g_quick ? 0.2 : 2.0)) break;  // slow enough to be measured once
-    }
-    for (std::size_t k = 0; k < errors.size(); ++k) {
-      Row r = row("gn_svd_step_" + std::string(alpha == 1.0 ? "1" : alpha == 0.5 ? "0.5" : "0.25"), "step", alpha);
-      r.iterations = static_cast<int>(k + 1);
-      r.time_s = spent[k];
-      r.error = r.residual = errors[k];
-      r.converged = errors[k] <= 1e-10;
-      rows.push_back(r);
-    }
+}
+
+void tolerance_rows(const geometry::ClosureSystem& sys, const ProjectionCase& c, bool keep, std::vector<Row>& rows) {
+  for (int e = 2; e <= 14; ++e) {
+    geometry::ProjectionOptions o;
+    o.tolerance = std::pow(10.0, -e);
+    o.keep_signs = keep;
+    geometry::ProjectionResult res;
+    Row r = projection_row(c, keep ? "ours_tolerance" : "ours_tolerance_free_signs", "tolerance", o.tolerance);
+    r.time_s = timed([&] { res = geometry::project(sys, c.start, o); });
+    r.iterations = res.iterations;
+    r.error = r.residual = res.error;
+    r.converged = res.status.ok();
+    rows.push_back(r);
   }
+}
+
+// The error after each Gauss–Newton iteration, and the CPU time spent up to it.
+struct Trajectory {
+  std::vector<double> errors, spent;
+};
+
+// The trajectory is run a few times and each point keeps its least cumulative time.
+Trajectory gauss_newton(const geometry::ClosureSystem& sys, const FoldState& start, double alpha) {
+  const int limit = g_quick ? 25 : 40;
+  Trajectory out;
+  for (int repeat = 0; repeat < 5; ++repeat) {
+    FoldState s = start;
+    Eigen::VectorXd res;
+    Eigen::SparseMatrix<double> J;
+    double total = 0;
+    for (int k = 1; k <= limit; ++k) {
+      const double t0 = cpu_seconds();
+      sys.evaluate(s, res, J);
+      const Eigen::MatrixXd dense(J);
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(dense, Eigen::ComputeThinU | Eigen::ComputeThinV);
+      s.angles = (s.angles - alpha * svd.solve(res)).cwiseMax(-M_PI).cwiseMin(M_PI);
+      const double error = sys.max_error(s);
+      total += cpu_seconds() - t0;
+      if (repeat == 0) {
+        out.errors.push_back(error);
+        out.spent.push_back(total);
+      } else {
+        out.spent[static_cast<std::size_t>(k - 1)] = std::min(out.spent[static_cast<std::size_t>(k - 1)], total);
+      }
+      if (error <= 1e-14 || !std::isfinite(error)) break;
+    }
+    if (total > (g_quick ? 0.2 : 2.0)) break;  // slow enough to be measured once
+  }
+  return out;
+}
+
+// The generic way: Gauss–Newton through the dense pseudo-inverse, x ← x − α J⁺ r, its error
+// after each iteration against the CPU time spent so far.
+void gauss_newton_rows(const geometry::ClosureSystem& sys, const ProjectionCase& c, double alpha, std::vector<Row>& rows) {
+  const Trajectory t = gauss_newton(sys, c.start, alpha);
+  for (std::size_t k = 0; k < t.errors.size(); ++k) {
+    Row r = projection_row(c, "gn_svd_step_" + std::string(alpha == 1.0 ? "1" : alpha == 0.5 ? "0.5" : "0.25"), "step", alpha);
+    r.iterations = static_cast<int>(k + 1);
+    r.time_s = t.spent[k];
+    r.error = r.residual = t.errors[k];
+    r.converged = t.errors[k] <= 1e-10;
+    rows.push_back(r);
+  }
+}
+
+void projection_rows(const ProjectionCase& c, std::vector<Row>& rows) {
+  const geometry::ClosureSystem sys(c.pattern);
+  {
+    Row r = projection_row(c, "start", "none", 0);
+    r.error = r.residual = sys.max_error(c.start);
+    rows.push_back(r);
+  }
+  iteration_limit_rows(sys, c, rows);
+  for (bool keep : {true, false}) tolerance_rows(sys, c, keep, rows);
+  for (double alpha : {1.0, 0.5, 0.25}) gauss_newton_rows(sys, c, alpha, rows);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -326,114 +346,139 @@ Row solve_row(const std::string& problem, const std::string& method, const std::
   return r;
 }
 
-void stiffness_rows(std::vector<Row>& rows) {
-  analysis::SolveOptions base;
-  base.estimate_condition = false;
-  analysis::SolveOptions linear = base;
-  linear.linear = true;
+// The discrete elastica: N = 10 links on hinges of stiffness k = 1 about their line and k_t
+// along every axis, a tip load P = α k / N. Oracle: the rigid chain (chain_tip_deflection) plus
+// the slip of the N hinges' translational springs, N P / k_t (isotropic springs under a vertical
+// force slip vertically, leaving every lever arm unchanged). The linear solver is held to the
+// linear model's closed form δ = P Σ dᵢ² / k + N P / k_t instead (dᵢ = hinge to load).
+constexpr int kLinks = 10;
+const Vector3d kTip(kLinks + 1, 0.5, 0.0);
 
-  // The discrete elastica: N = 10 links on hinges of stiffness k = 1 about their line and k_t
-  // along every axis, a tip load P = α k / N. Oracle: the rigid chain (chain_tip_deflection) plus
-  // the slip of the N hinges' translational springs, N P / k_t (isotropic springs under a vertical
-  // force slip vertically, leaving every lever arm unchanged). The linear solver is held to the
-  // linear model's closed form δ = P Σ dᵢ² / k + N P / k_t instead (dᵢ = hinge to load).
-  constexpr int kLinks = 10;
-  const Vector3d tip(kLinks + 1, 0.5, 0.0);
-  auto elastica = [&](double load, double kt) {
-    analysis::Problem p = strip_problem(kLinks + 1, 1.0, kt);
-    p.loads.push_back({kLinks, Vector3d(0, 0, -load), tip});
-    return p;
+analysis::Problem elastica(double load, double kt) {
+  analysis::Problem p = strip_problem(kLinks + 1, 1.0, kt);
+  p.loads.push_back({kLinks, Vector3d(0, 0, -load), kTip});
+  return p;
+}
+
+double oracle(double load, double kt, bool linear_model) {
+  double bending = 0;
+  if (linear_model)
+    for (int i = 1; i <= kLinks; ++i) bending += load * (kLinks + 1 - i) * (kLinks + 1 - i);
+  else
+    bending = chain_tip_deflection(kLinks, 1.0, load);
+  return bending + kLinks * load / kt;
+}
+
+// The relative error of the tip deflection against `expected` (p must outlive the function).
+std::function<double(const analysis::SolveResult&)> relative_to(const analysis::Problem& p, double expected, bool lin) {
+  const Vector3d tip = kTip;
+  return [&p, expected, tip, lin](const analysis::SolveResult& res) {
+    if (!res.status.ok()) return kNaN;
+    return std::abs(deflection(p, res, kLinks, tip, lin) - expected) / std::abs(expected);
   };
-  auto oracle = [&](double load, double kt, bool linear_model) {
-    double bending = 0;
-    if (linear_model)
-      for (int i = 1; i <= kLinks; ++i) bending += load * (kLinks + 1 - i) * (kLinks + 1 - i);
-    else
-      bending = chain_tip_deflection(kLinks, 1.0, load);
-    return bending + kLinks * load / kt;
-  };
-  auto relative_to = [&](const analysis::Problem& p, double expected, bool lin) {
-    return [&p, expected, tip, lin](const analysis::SolveResult& res) {
-      if (!res.status.ok()) return kNaN;
-      return std::abs(deflection(p, res, kLinks, tip, lin) - expected) / std::abs(expected);
-    };
-  };
-  std::cerr << "elastica N=10, alpha=1: oracle tip deflection / L = " << chain_tip_deflection(kLinks, 1.0, 0.01) / kLinks
-            << " (NOTES.md: 0.34204)\n";
-  // Linear against nonlinear as the load grows (ratio k_t / k = 1e6, the default springs' ratio):
-  // the nonlinear error is against the large-deflection oracle, the linear one against it too (the
-  // error a user makes by choosing --linear).
-  constexpr double kDefaultRatio = 1e6;
+}
+
+struct Solvers {
+  analysis::SolveOptions base, linear;
+};
+
+// Linear against nonlinear as the load grows (ratio k_t / k = 1e6, the default springs' ratio):
+// the nonlinear error is against the large-deflection oracle, the linear one against it too (the
+// error a user makes by choosing --linear).
+constexpr double kDefaultRatio = 1e6;
+
+void elastica_load_sweep_rows(const Solvers& s, std::vector<Row>& rows) {
   for (double alpha : {0.01, 0.03, 0.1, 0.3, 1.0, 2.0, 5.0, 10.0}) {
     const double load = alpha / (kLinks * kLinks);
     const analysis::Problem p = elastica(load, kDefaultRatio);
     const double expected = oracle(load, kDefaultRatio, false);
-    rows.push_back(solve_row("elastica_load_sweep", "newton", "alpha", alpha, p, base, relative_to(p, expected, false)));
-    rows.push_back(solve_row("elastica_load_sweep", "linear", "alpha", alpha, p, linear, relative_to(p, expected, true)));
+    rows.push_back(solve_row("elastica_load_sweep", "newton", "alpha", alpha, p, s.base, relative_to(p, expected, false)));
+    rows.push_back(solve_row("elastica_load_sweep", "linear", "alpha", alpha, p, s.linear, relative_to(p, expected, true)));
   }
-  // Tolerance against cost at α = 1.
-  {
-    const double load = 0.01;
-    const analysis::Problem p = elastica(load, kDefaultRatio);
-    const double expected = oracle(load, kDefaultRatio, false);
-    for (int e = 2; e <= 14; ++e) {
-      analysis::SolveOptions o = base;
-      o.tolerance = std::pow(10.0, -e);
-      rows.push_back(solve_row("elastica_alpha1", "newton_tolerance", "tolerance", o.tolerance, p, o, relative_to(p, expected, false)));
-    }
-    for (int m = 1; m <= 8; ++m) {
-      analysis::SolveOptions o = base;
-      o.max_iterations = m;
-      rows.push_back(solve_row("elastica_alpha1", "newton_iteration_limit", "max_iterations", m, p, o, relative_to(p, expected, false)));
-    }
+}
+
+// Tolerance and iteration limit against cost at α = 1.
+void elastica_alpha1_rows(const Solvers& s, std::vector<Row>& rows) {
+  const double load = 0.01;
+  const analysis::Problem p = elastica(load, kDefaultRatio);
+  const double expected = oracle(load, kDefaultRatio, false);
+  for (int e = 2; e <= 14; ++e) {
+    analysis::SolveOptions o = s.base;
+    o.tolerance = std::pow(10.0, -e);
+    rows.push_back(solve_row("elastica_alpha1", "newton_tolerance", "tolerance", o.tolerance, p, o, relative_to(p, expected, false)));
   }
-  // Stiffness ratio k_t / k from 1e2 to 1e14 at α = 1 (nonlinear) and α = 0.01 (linear, against
-  // the linear closed form): how many digits the ill-conditioning leaves.
+  for (int m = 1; m <= 8; ++m) {
+    analysis::SolveOptions o = s.base;
+    o.max_iterations = m;
+    rows.push_back(solve_row("elastica_alpha1", "newton_iteration_limit", "max_iterations", m, p, o, relative_to(p, expected, false)));
+  }
+}
+
+// Stiffness ratio k_t / k from 1e2 to 1e14 at α = 1 (nonlinear) and α = 0.01 (linear, against
+// the linear closed form): how many digits the ill-conditioning leaves.
+void elastica_stiffness_ratio_rows(const Solvers& s, std::vector<Row>& rows) {
   for (int e = 2; e <= 14; ++e) {
     const double kt = std::pow(10.0, e);
     {
       const analysis::Problem p = elastica(0.01, kt);
-      rows.push_back(solve_row("elastica_stiffness_ratio", "newton", "ratio", kt, p, base, relative_to(p, oracle(0.01, kt, false), false)));
+      rows.push_back(solve_row("elastica_stiffness_ratio", "newton", "ratio", kt, p, s.base, relative_to(p, oracle(0.01, kt, false), false)));
     }
     {
       const analysis::Problem p = elastica(1e-4, kt);
-      rows.push_back(solve_row("elastica_stiffness_ratio", "linear", "ratio", kt, p, linear, relative_to(p, oracle(1e-4, kt, true), true)));
+      rows.push_back(solve_row("elastica_stiffness_ratio", "linear", "ratio", kt, p, s.linear, relative_to(p, oracle(1e-4, kt, true), true)));
     }
   }
-  // Small loads on stiff springs: the stiffness in units of the load, k_t L / P, grows as P
-  // shrinks, and with it the round-off floor the solver raises its tolerance to.
+}
+
+// Small loads on stiff springs: the stiffness in units of the load, k_t L / P, grows as P
+// shrinks, and with it the round-off floor the solver raises its tolerance to.
+void elastica_small_load_rows(const Solvers& s, std::vector<Row>& rows) {
   for (int e = 1; e <= 9; ++e) {
     const double load = std::pow(10.0, -e), kt = 1e9;
     const analysis::Problem p = elastica(load, kt);
-    rows.push_back(solve_row("elastica_small_load", "newton", "load", load, p, base, relative_to(p, oracle(load, kt, false), false)));
-    rows.push_back(solve_row("elastica_small_load", "linear", "load", load, p, linear, relative_to(p, oracle(load, kt, true), true)));
+    rows.push_back(solve_row("elastica_small_load", "newton", "load", load, p, s.base, relative_to(p, oracle(load, kt, false), false)));
+    rows.push_back(solve_row("elastica_small_load", "linear", "load", load, p, s.linear, relative_to(p, oracle(load, kt, true), true)));
   }
+}
 
-  // A plate of ≈ 200 tiles (the benchmark's grid): tolerance against cost, error relative to the
-  // solution at tolerance 1e-14 (self-convergence: no independent oracle here).
-  {
-    const analysis::Problem p = plate_problem(g_quick ? 50 : 200);
-    analysis::SolveOptions tight = base;
-    tight.tolerance = 1e-14;
-    const auto ref = analysis::solve(p, tight);
-    const std::string name = g_quick ? "plate50_vs_tol1e-14" : "plate200_vs_tol1e-14";
-    auto err = [&p, &ref](const analysis::SolveResult& res) {
-      if (!res.status.ok() || !ref.status.ok()) return kNaN;
-      double worst = 0, scale = 0;
-      for (std::size_t i = 0; i < res.modules.size(); ++i) {
-        worst = std::max(worst, (res.modules[i].displacement - ref.modules[i].displacement).norm());
-        scale = std::max(scale, ref.modules[i].displacement.norm());
-      }
-      (void)p;
-      return worst / scale;
-    };
-    for (int e = 2; e <= 14; ++e) {
-      analysis::SolveOptions o = base;
-      o.tolerance = std::pow(10.0, -e);
-      rows.push_back(solve_row(name, "newton_tolerance", "tolerance", o.tolerance, p, o, err));
+// A plate of ≈ 200 tiles (the benchmark's grid): tolerance against cost, error relative to the
+// solution at tolerance 1e-14 (self-convergence: no independent oracle here).
+void plate_rows(const Solvers& s, std::vector<Row>& rows) {
+  const analysis::Problem p = plate_problem(g_quick ? 50 : 200);
+  analysis::SolveOptions tight = s.base;
+  tight.tolerance = 1e-14;
+  const auto ref = analysis::solve(p, tight);
+  const std::string name = g_quick ? "plate50_vs_tol1e-14" : "plate200_vs_tol1e-14";
+  auto err = [&p, &ref](const analysis::SolveResult& res) {
+    if (!res.status.ok() || !ref.status.ok()) return kNaN;
+    double worst = 0, scale = 0;
+    for (std::size_t i = 0; i < res.modules.size(); ++i) {
+      worst = std::max(worst, (res.modules[i].displacement - ref.modules[i].displacement).norm());
+      scale = std::max(scale, ref.modules[i].displacement.norm());
     }
-    rows.push_back(solve_row(name, "linear", "tolerance", 0, p, linear, err));
+    (void)p;
+    return worst / scale;
+  };
+  for (int e = 2; e <= 14; ++e) {
+    analysis::SolveOptions o = s.base;
+    o.tolerance = std::pow(10.0, -e);
+    rows.push_back(solve_row(name, "newton_tolerance", "tolerance", o.tolerance, p, o, err));
   }
+  rows.push_back(solve_row(name, "linear", "tolerance", 0, p, s.linear, err));
+}
+
+void stiffness_rows(std::vector<Row>& rows) {
+  Solvers s;
+  s.base.estimate_condition = false;
+  s.linear = s.base;
+  s.linear.linear = true;
+  std::cerr << "elastica N=10, alpha=1: oracle tip deflection / L = " << chain_tip_deflection(kLinks, 1.0, 0.01) / kLinks
+            << " (NOTES.md: 0.34204)\n";
+  elastica_load_sweep_rows(s, rows);
+  elastica_alpha1_rows(s, rows);
+  elastica_stiffness_ratio_rows(s, rows);
+  elastica_small_load_rows(s, rows);
+  plate_rows(s, rows);
 }
 
 }  // namespace

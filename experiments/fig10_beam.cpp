@@ -147,6 +147,83 @@ Outcome run(const analysis::Structure& base, const Case& c, bool linear) {
   return out;
 }
 
+// The six load cases, and the paper's tip deflection (mm) for each.
+const std::vector<Case> kCases = {{"Eq. 6", 1, 1, true},
+                                  {"face ×4", 4, 1, true},
+                                  {"edge ×4", 1, 4, true},
+                                  {"Eq. 6, edges within cubes only", 1, 1, false},
+                                  {"face ×4, edges within cubes only", 4, 1, false},
+                                  {"edge ×4, edges within cubes only", 1, 4, false}};
+const double kPaper[] = {3.2, 1.7, 2.3, 3.2, 1.7, 2.3};
+
+// Hinged, face and edge connections.
+std::array<int, 3> connection_counts(const analysis::Structure& b) {
+  std::array<int, 3> counts{0, 0, 0};
+  for (const auto& c : b.connections) ++counts[static_cast<std::size_t>(c.kind)];
+  return counts;
+}
+
+void header(std::ostream& md, int reachable, const geometry::FoldState& first, const std::array<int, 3>& counts) {
+  md << "# Fig. 10 beam: 48 tiles, 2×4 cubes, 40 N\n\n"
+     << "8-net sheet of Fig. 8a: " << reachable << " of 16384 choices of the inter-net hinges (0°, ±90°, 180°) fold it "
+     << "into a 2×4 block of cubes; the beam is the first of them (inter-net hinges "
+     << hinge_angles(first) << "), the others in the last table (see docs/STIFFNESS.md).\n\n"
+     << "Connections detected: " << counts[0] << " hinged, " << counts[1] << " face, " << counts[2] << " edge. Tile "
+     << kTile * 1000 << " mm; fixed: the 2 end tiles at x = 0; load: 40 N along −z on the 2 end tiles at x = 4t.\n\n"
+     << "| case | tip deflection (mm) | linear (mm) | ratio to Eq. 6 | paper (mm) | paper ratio | iterations | residual | condition |\n"
+     << "|---|---|---|---|---|---|---|---|---|\n";
+}
+
+// Every case on the beam b, nonlinear and linear: a row each in md and csv. Clears ok when a
+// solve fails or the ends are not two tiles each.
+std::vector<Outcome> case_table(const analysis::Structure& b, std::ostream& md, std::ostream& csv, bool& ok) {
+  csv << "case,tip_mm,linear_tip_mm,ratio,paper_mm,paper_ratio,iterations,residual,condition\n";
+  std::vector<Outcome> results;
+  for (std::size_t i = 0; i < kCases.size(); ++i) {
+    const Outcome o = run(b, kCases[i], false), l = run(b, kCases[i], true);
+    ok = ok && o.converged && l.converged && o.fixed == 2 && o.loaded == 2;
+    results.push_back(o);
+    const double base = results[i < 3 ? 0 : 3].tip;
+    const double ratio = o.tip / base, paper_ratio = kPaper[i] / kPaper[i < 3 ? 0 : 3];
+    md << "| " << kCases[i].name << " | " << std::setprecision(4) << o.tip * 1000 << " | " << l.tip * 1000 << " | " << ratio
+       << " | " << kPaper[i] << " | " << std::setprecision(3) << paper_ratio << " | " << o.iterations << " | "
+       << std::setprecision(2) << o.residual << " | " << o.condition << " |\n";
+    csv << '"' << kCases[i].name << "\"," << std::setprecision(6) << o.tip * 1000 << ',' << l.tip * 1000 << ',' << ratio << ','
+        << kPaper[i] << ',' << paper_ratio << ',' << o.iterations << ',' << o.residual << ',' << o.condition << '\n';
+  }
+  return results;
+}
+
+// The same cases on every folding of the sheet into the block: which hinges join the cubes
+// moves the figures. Clears ok when a solve fails.
+void foldings_table(const std::vector<geometry::FoldState>& foldings, const std::vector<analysis::Structure>& beams,
+                    std::ostream& md, bool& ok) {
+  md << "\n| inter-net hinges (deg) | hinged / face / edge | Eq. 6, within cubes (mm) | face ×4 ratio | edge ×4 ratio | "
+        "Eq. 6, all edges (mm) |\n|---|---|---|---|---|---|\n";
+  for (std::size_t i = 0; i < foldings.size(); ++i) {
+    const analysis::Structure& bf = beams[i];
+    const std::array<int, 3> k = connection_counts(bf);
+    const Outcome e = run(bf, kCases[3], false), fx = run(bf, kCases[4], false), ex = run(bf, kCases[5], false),
+                  all = run(bf, kCases[0], false);
+    ok = ok && e.converged && fx.converged && ex.converged && all.converged;
+    md << "| " << hinge_angles(foldings[i]) << " | " << k[0] << " / " << k[1] << " / " << k[2] << " | " << std::setprecision(4)
+       << e.tip * 1000 << " | " << std::setprecision(3) << fx.tip / e.tip << " | " << ex.tip / e.tip << " | "
+       << std::setprecision(4) << all.tip * 1000 << " |\n";
+  }
+}
+
+// Bands (docs/STIFFNESS.md): regression guards on our own figures, and the paper's ordering.
+bool within_bands(const std::vector<Outcome>& results, int reachable, bool ok) {
+  const auto within = [](double v, double lo, double hi) { return v >= lo && v <= hi; };
+  const double tip = results[3].tip * 1000, r_face = results[4].tip / results[3].tip, r_edge = results[5].tip / results[3].tip;
+  ok = ok && within(tip, 2.35, 2.55) && within(r_face, 0.63, 0.68) && within(r_edge, 0.68, 0.72) && r_face < r_edge &&
+       within(results[0].tip * 1000, 0.46, 0.50) && reachable == 9;
+  std::cerr << "check (edges within cubes): tip " << tip << " mm in [2.35, 2.55], face x4 ratio " << r_face
+            << " in [0.63, 0.68], edge x4 ratio " << r_edge << " in [0.68, 0.72]; all edges: tip " << results[0].tip * 1000
+            << " mm in [0.46, 0.50]; " << reachable << " of 9 foldings into the block: " << (ok ? "ok" : "FAILED") << '\n';
+  return ok;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -169,67 +246,16 @@ int main(int argc, char** argv) {
   const int reachable = static_cast<int>(foldings.size());
   std::vector<analysis::Structure> beams;
   for (const auto& f : foldings) beams.push_back(beam(f));
-  const analysis::Structure& b = beams.front();
-  int counts[3] = {0, 0, 0};
-  for (const auto& c : b.connections) ++counts[static_cast<int>(c.kind)];
-  const std::vector<Case> cases = {{"Eq. 6", 1, 1, true}, {"face ×4", 4, 1, true}, {"edge ×4", 1, 4, true},
-                                   {"Eq. 6, edges within cubes only", 1, 1, false},
-                                   {"face ×4, edges within cubes only", 4, 1, false},
-                                   {"edge ×4, edges within cubes only", 1, 4, false}};
-  const double paper[] = {3.2, 1.7, 2.3, 3.2, 1.7, 2.3};
+  const std::array<int, 3> counts = connection_counts(beams.front());
   std::ostringstream md, csv;
-  md << "# Fig. 10 beam: 48 tiles, 2×4 cubes, 40 N\n\n"
-     << "8-net sheet of Fig. 8a: " << reachable << " of 16384 choices of the inter-net hinges (0°, ±90°, 180°) fold it "
-     << "into a 2×4 block of cubes; the beam is the first of them (inter-net hinges "
-     << hinge_angles(foldings.front()) << "), the others in the last table (see docs/STIFFNESS.md).\n\n"
-     << "Connections detected: " << counts[0] << " hinged, " << counts[1] << " face, " << counts[2] << " edge. Tile "
-     << kTile * 1000 << " mm; fixed: the 2 end tiles at x = 0; load: 40 N along −z on the 2 end tiles at x = 4t.\n\n"
-     << "| case | tip deflection (mm) | linear (mm) | ratio to Eq. 6 | paper (mm) | paper ratio | iterations | residual | condition |\n"
-     << "|---|---|---|---|---|---|---|---|---|\n";
-  csv << "case,tip_mm,linear_tip_mm,ratio,paper_mm,paper_ratio,iterations,residual,condition\n";
-  std::vector<Outcome> results;
+  header(md, reachable, foldings.front(), counts);
   bool ok = counts[0] == 47 && counts[1] == 10;
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    const Outcome o = run(b, cases[i], false), l = run(b, cases[i], true);
-    ok = ok && o.converged && l.converged && o.fixed == 2 && o.loaded == 2;
-    results.push_back(o);
-    const double base = results[i < 3 ? 0 : 3].tip;
-    const double ratio = o.tip / base, paper_ratio = paper[i] / paper[i < 3 ? 0 : 3];
-    md << "| " << cases[i].name << " | " << std::setprecision(4) << o.tip * 1000 << " | " << l.tip * 1000 << " | " << ratio
-       << " | " << paper[i] << " | " << std::setprecision(3) << paper_ratio << " | " << o.iterations << " | "
-       << std::setprecision(2) << o.residual << " | " << o.condition << " |\n";
-    csv << '"' << cases[i].name << "\"," << std::setprecision(6) << o.tip * 1000 << ',' << l.tip * 1000 << ',' << ratio << ','
-        << paper[i] << ',' << paper_ratio << ',' << o.iterations << ',' << o.residual << ',' << o.condition << '\n';
-  }
-  // The same cases on every folding of the sheet into the block: which hinges join the cubes
-  // moves the figures.
-  md << "\n| inter-net hinges (deg) | hinged / face / edge | Eq. 6, within cubes (mm) | face ×4 ratio | edge ×4 ratio | "
-        "Eq. 6, all edges (mm) |\n|---|---|---|---|---|---|\n";
-  std::vector<double> spread_tip;
-  for (std::size_t i = 0; i < foldings.size(); ++i) {
-    const geometry::FoldState& f = foldings[i];
-    const analysis::Structure& bf = beams[i];
-    int k[3] = {0, 0, 0};
-    for (const auto& c : bf.connections) ++k[static_cast<int>(c.kind)];
-    const Outcome e = run(bf, cases[3], false), fx = run(bf, cases[4], false), ex = run(bf, cases[5], false), all = run(bf, cases[0], false);
-    ok = ok && e.converged && fx.converged && ex.converged && all.converged;
-    spread_tip.push_back(e.tip * 1000);
-    md << "| " << hinge_angles(f) << " | " << k[0] << " / " << k[1] << " / " << k[2] << " | " << std::setprecision(4)
-       << e.tip * 1000 << " | " << std::setprecision(3) << fx.tip / e.tip << " | " << ex.tip / e.tip << " | "
-       << std::setprecision(4) << all.tip * 1000 << " |\n";
-  }
+  const std::vector<Outcome> results = case_table(beams.front(), md, csv, ok);
+  foldings_table(foldings, beams, md, ok);
   std::cout << md.str();
   std::filesystem::create_directories(dir);
   io::write_file_atomic(dir + "/fig10_beam.md", md.str());
   io::write_file_atomic(dir + "/fig10_beam.csv", csv.str());
   if (!check) return ok ? 0 : 1;
-  // Bands (docs/STIFFNESS.md): regression guards on our own figures, and the paper's ordering.
-  const auto within = [](double v, double lo, double hi) { return v >= lo && v <= hi; };
-  const double tip = results[3].tip * 1000, r_face = results[4].tip / results[3].tip, r_edge = results[5].tip / results[3].tip;
-  ok = ok && within(tip, 2.35, 2.55) && within(r_face, 0.63, 0.68) && within(r_edge, 0.68, 0.72) && r_face < r_edge &&
-       within(results[0].tip * 1000, 0.46, 0.50) && reachable == 9;
-  std::cerr << "check (edges within cubes): tip " << tip << " mm in [2.35, 2.55], face x4 ratio " << r_face
-            << " in [0.63, 0.68], edge x4 ratio " << r_edge << " in [0.68, 0.72]; all edges: tip " << results[0].tip * 1000
-            << " mm in [0.46, 0.50]; " << reachable << " of 9 foldings into the block: " << (ok ? "ok" : "FAILED") << '\n';
-  return ok ? 0 : 1;
+  return within_bands(results, reachable, ok) ? 0 : 1;
 }

@@ -108,173 +108,229 @@ std::string distinct_deg(const geometry::FoldState& s) {
   return out;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const auto args = experiments::parse_args(argc, argv, "experiment-output/fig67",
-                                            "usage: fig67_bird_base [--out DIR] [--check]\n"
-                                            "  The bird base of the paper's Figs. 6/7 under the rigid model.\n");
+// Reads the two bird base files; false (after saying why) when one cannot be read or has no
+// fold angles.
+bool read_inputs(std::optional<io::FoldImport>& bird, std::optional<io::FoldImport>& second) {
   const std::string data = FOLDKIT_EXPERIMENTS_DATA;
-  std::optional<io::FoldImport> bird_file, second_file;
   try {
-    bird_file = io::read_fold(data + "/osbo_rigid-origami__birdBase.fold");
-    second_file = io::read_fold(data + "/robbykraft_Origami__bird-base-3d.fold");
+    bird = io::read_fold(data + "/osbo_rigid-origami__birdBase.fold");
+    second = io::read_fold(data + "/robbykraft_Origami__bird-base-3d.fold");
   } catch (const std::exception& e) {
     std::cerr << "fig67: " << e.what() << '\n';
-    return 1;
+    return false;
   }
-  const io::FoldImport& bird = *bird_file;
-  const io::FoldImport& second = *second_file;
-  if (!bird.state || !second.state) {
+  if (!bird->state || !second->state) {
     std::cerr << "fig67: a bird base file has no fold angles\n";
-    return 1;
+    return false;
   }
-  const geometry::CreasePattern& pattern = bird.pattern;
-  const geometry::ClosureSystem system(pattern);
-  const geometry::FoldState flat = geometry::FoldState::flat(pattern);
-  const geometry::FoldState target = *bird.state;
-  const geometry::Mobility m_flat = geometry::mobility(system, flat), m_target = geometry::mobility(system, target);
-  const double target_error = system.max_error(target);
+  return true;
+}
 
-  // 1. Straight line, every crease in proportion.
-  std::ostringstream straight_csv;
-  straight_csv << "t,closure_residual_rad,nearest_closed_deg\n";
-  double peak = 0, peak_t = 0;
+// 1. Every crease in proportion along the straight line flat → target.
+struct StraightLine {
+  std::string csv;
+  double peak = 0, peak_t = 0;  // the largest closure residual, and where
+  geometry::FoldSequence sequence;
+  simulation::SimulationReport sim;
+};
+
+StraightLine fold_straight(const geometry::CreasePattern& pattern, const geometry::ClosureSystem& system,
+                           const geometry::FoldState& target) {
+  StraightLine out;
+  std::ostringstream csv;
+  csv << "t,closure_residual_rad,nearest_closed_deg\n";
   for (int k = 0; k <= 40; ++k) {
     const double t = k / 40.0;
     const geometry::FoldState s{t * target.angles};
     const double e = system.max_error(s);
     const geometry::ProjectionResult near = geometry::project(system, s);
-    if (e > peak) peak = e, peak_t = t;
-    straight_csv << num(t, 4) << ',' << num(e, 6) << ',' << (near.status.ok() ? num(max_diff(near.state, s) * kDeg, 6) : "") << '\n';
+    if (e > out.peak) out.peak = e, out.peak_t = t;
+    csv << num(t, 4) << ',' << num(e, 6) << ',' << (near.status.ok() ? num(max_diff(near.state, s) * kDeg, 6) : "") << '\n';
   }
-  const geometry::FoldSequence straight = geometry::path_sequence(pattern, {target}, M_PI / 6, "bird base, all creases at once");
+  out.csv = csv.str();
+  out.sequence = geometry::path_sequence(pattern, {target}, M_PI / 6, "bird base, all creases at once");
   simulation::SimulationOptions sync;
   sync.model = simulation::Actuation::Synchronised;
-  const simulation::SimulationReport straight_sim = simulation::simulate(pattern, straight, sync);
+  out.sim = simulation::simulate(pattern, out.sequence, sync);
+  return out;
+}
 
-  // 2. Rigid folding toward the target.
-  std::vector<geometry::FoldState> path;
+// 2. Closed states from flat toward the target, each the projection of a step from the last.
+struct RigidPath {
+  std::vector<geometry::FoldState> states;
   std::vector<int> dofs;
-  geometry::FoldState at = flat;
-  double best = (target.angles - flat.angles).norm(), worst_closure = 0, largest_jump = 0;
+  double worst_closure = 0, largest_jump = 0;
   std::string stop = "step limit";
+  int dof_min = 99, dof_max = 0;
+};
+
+RigidPath fold_rigidly(const geometry::ClosureSystem& system, const geometry::FoldState& flat, const geometry::FoldState& target) {
+  RigidPath out;
+  geometry::FoldState at = flat;
+  double best = (target.angles - flat.angles).norm();
   for (int k = 1; k <= kMaxSteps; ++k) {
     const Eigen::VectorXd d = target.angles - at.angles;
     const geometry::ProjectionResult p = geometry::project(system, geometry::FoldState{at.angles + d * std::min(1.0, kStep / d.norm())});
     if (!p.status.ok()) {
-      stop = "projection failed: " + p.status.message;
+      out.stop = "projection failed: " + p.status.message;
       break;
     }
     const double dist = (p.state.angles - target.angles).norm();
     if (dist >= best - 1e-9) {
-      stop = "no step gets closer to the target";
+      out.stop = "no step gets closer to the target";
       break;
     }
     best = dist;
-    largest_jump = std::max(largest_jump, max_diff(p.state, at));
-    worst_closure = std::max(worst_closure, p.error);
+    out.largest_jump = std::max(out.largest_jump, max_diff(p.state, at));
+    out.worst_closure = std::max(out.worst_closure, p.error);
     at = p.state;
-    path.push_back(at);
-    dofs.push_back(geometry::mobility(system, at).dof);
+    out.states.push_back(at);
+    out.dofs.push_back(geometry::mobility(system, at).dof);
   }
-  const geometry::FoldSequence rigid = geometry::path_sequence(pattern, path, M_PI / 6, "bird base, rigid folding toward the target");
-  const std::string rigid_cmml = io::write_cmml(rigid);
-  simulation::SimulationOptions replay;
-  replay.model = simulation::Actuation::Synchronised;
-  const simulation::SimulationReport rigid_sim = simulation::simulate(pattern, io::parse_cmml(rigid_cmml, "birdbase-rigid.cmml"), replay);
-  // path_sequence skips no waypoint here (each moves), so event k is waypoint k − 1.
+  for (int dof : out.dofs) out.dof_min = std::min(out.dof_min, dof), out.dof_max = std::max(out.dof_max, dof);
+  return out;
+}
+
+// The rigid folding written as CMML, read back and replayed, and where facets first cross.
+struct Replay {
+  geometry::FoldSequence sequence;
+  std::string cmml;
+  simulation::SimulationReport sim;
   std::set<int> colliding_events;
-  for (const auto& c : rigid_sim.collisions) colliding_events.insert(c.event);
-  const int first_collision = colliding_events.empty() ? -1 : *colliding_events.begin() - 1;
-  std::ostringstream path_csv;
-  // The difference to the target twice more, split by whether the replay found facets crossing
-  // there (one of the two empty), so a plot shows where the path stops being physical.
-  path_csv << "step,max_diff_to_target_deg,distance_to_target_deg,closure_error_rad,dof,crossing,diff_crossing_free_deg,"
-              "diff_crossing_deg\n";
-  int dof_min = 99, dof_max = 0;
-  for (std::size_t k = 0; k < path.size(); ++k) {
-    dof_min = std::min(dof_min, dofs[k]), dof_max = std::max(dof_max, dofs[k]);
-    path_csv << k + 1 << ',' << num(max_diff(path[k], target) * kDeg, 6) << ',' << num((path[k].angles - target.angles).norm() * kDeg, 6) << ','
-             << num(system.max_error(path[k]), 3) << ',' << dofs[k] << ',';
-    const bool crossing = colliding_events.count(static_cast<int>(k) + 1) > 0;
-    const std::string diff = num(max_diff(path[k], target) * kDeg, 6);
-    path_csv << crossing << ',' << (crossing ? "" : diff) << ',' << (crossing ? diff : "") << '\n';
-  }
-  const geometry::FoldState& reached = path.empty() ? flat : path.back();
-  const double reached_diff = max_diff(reached, target) * kDeg;
-  const double crossing_diff = first_collision >= 0 ? max_diff(path[first_collision], target) * kDeg : 0.0;
-  const double free_diff = first_collision > 0 ? max_diff(path[first_collision - 1], target) * kDeg : 0.0;
+  int first_collision = -1;  // index into the path; -1: none
   std::string crossing_pair;
   bool crossing_confirmed = false;  // by facets_cross: that pair crosses there, and not one state before
-  if (!rigid_sim.collisions.empty()) {
-    const auto& c = rigid_sim.collisions.front();
-    crossing_pair = std::to_string(c.actors[0]) + " and " + std::to_string(c.actors[1]);
-    crossing_confirmed = facets_cross(pattern, path[first_collision], c.actors[0], c.actors[1]) &&
-                         (first_collision == 0 || !facets_cross(pattern, path[first_collision - 1], c.actors[0], c.actors[1]));
+};
+
+Replay replay_rigid(const geometry::CreasePattern& pattern, const std::vector<geometry::FoldState>& path) {
+  Replay out;
+  out.sequence = geometry::path_sequence(pattern, path, M_PI / 6, "bird base, rigid folding toward the target");
+  out.cmml = io::write_cmml(out.sequence);
+  simulation::SimulationOptions replay;
+  replay.model = simulation::Actuation::Synchronised;
+  out.sim = simulation::simulate(pattern, io::parse_cmml(out.cmml, "birdbase-rigid.cmml"), replay);
+  // path_sequence skips no waypoint here (each moves), so event k is waypoint k − 1.
+  for (const auto& c : out.sim.collisions) out.colliding_events.insert(c.event);
+  out.first_collision = out.colliding_events.empty() ? -1 : *out.colliding_events.begin() - 1;
+  if (!out.sim.collisions.empty()) {
+    const auto& c = out.sim.collisions.front();
+    const int first = out.first_collision;
+    out.crossing_pair = std::to_string(c.actors[0]) + " and " + std::to_string(c.actors[1]);
+    out.crossing_confirmed = facets_cross(pattern, path[first], c.actors[0], c.actors[1]) &&
+                             (first == 0 || !facets_cross(pattern, path[first - 1], c.actors[0], c.actors[1]));
   }
+  return out;
+}
 
+// The difference to the target twice more, split by whether the replay found facets crossing
+// there (one of the two empty), so a plot shows where the path stops being physical.
+std::string rigid_path_csv(const geometry::ClosureSystem& system, const RigidPath& rigid, const Replay& replay,
+                           const geometry::FoldState& target) {
+  std::ostringstream csv;
+  csv << "step,max_diff_to_target_deg,distance_to_target_deg,closure_error_rad,dof,crossing,diff_crossing_free_deg,"
+         "diff_crossing_deg\n";
+  const std::vector<geometry::FoldState>& path = rigid.states;
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    csv << k + 1 << ',' << num(max_diff(path[k], target) * kDeg, 6) << ',' << num((path[k].angles - target.angles).norm() * kDeg, 6) << ','
+        << num(system.max_error(path[k]), 3) << ',' << rigid.dofs[k] << ',';
+    const bool crossing = replay.colliding_events.count(static_cast<int>(k) + 1) > 0;
+    const std::string diff = num(max_diff(path[k], target) * kDeg, 6);
+    csv << crossing << ',' << (crossing ? "" : diff) << ',' << (crossing ? diff : "") << '\n';
+  }
+  return csv.str();
+}
+
+// Everything the report and the checks state.
+struct Findings {
+  geometry::Mobility m_flat, m_target;
+  double target_error = 0;
+  StraightLine straight;
+  RigidPath rigid;
+  Replay replay;
+  double reached_diff = 0, crossing_diff = 0, free_diff = 0;  // degrees from the target
   // 3. The second file's angles.
-  const geometry::ClosureSystem second_system(second.pattern);
-  const double second_error = second_system.max_error(*second.state);
-  const geometry::ProjectionResult second_near = geometry::project(second_system, *second.state);
+  double second_error = 0;
+  geometry::ProjectionResult second_near;
+};
 
-  std::ostringstream md;
+Findings study(const geometry::CreasePattern& pattern, const geometry::ClosureSystem& system, const geometry::FoldState& target,
+               const io::FoldImport& second) {
+  Findings f;
+  const geometry::FoldState flat = geometry::FoldState::flat(pattern);
+  f.m_flat = geometry::mobility(system, flat);
+  f.m_target = geometry::mobility(system, target);
+  f.target_error = system.max_error(target);
+  f.straight = fold_straight(pattern, system, target);
+  f.rigid = fold_rigidly(system, flat, target);
+  f.replay = replay_rigid(pattern, f.rigid.states);
+  const std::vector<geometry::FoldState>& path = f.rigid.states;
+  const int first = f.replay.first_collision;
+  f.reached_diff = max_diff(path.empty() ? flat : path.back(), target) * kDeg;
+  f.crossing_diff = first >= 0 ? max_diff(path[first], target) * kDeg : 0.0;
+  f.free_diff = first > 0 ? max_diff(path[first - 1], target) * kDeg : 0.0;
+  const geometry::ClosureSystem second_system(second.pattern);
+  f.second_error = second_system.max_error(*second.state);
+  f.second_near = geometry::project(second_system, *second.state);
+  return f;
+}
+
+void summary_table(std::ostream& md, const geometry::CreasePattern& pattern, const geometry::ClosureSystem& system,
+                   const Findings& f, const geometry::FoldState& second_state) {
+  const RigidPath& r = f.rigid;
+  const Replay& replay = f.replay;
   md << "# Figs. 6/7: the bird base under the rigid model\n\n"
      << "The paper shows the bird base drawn (Fig. 6) and frames of its simulation in PhysX (Fig. 7); it states no number. "
      << "Ours is kinematic and rigid: facets do not bend, loops must close, facets must not cross.\n\n"
      << "Pattern: `experiments/data/osbo_rigid-origami__birdBase.fold` (Origami Simulator export): " << pattern.actors().size()
      << " facets, " << pattern.joints().size() << " creases, " << pattern.interior_vertices().size()
      << " interior vertices (one of degree 8, four of degree 4), " << system.rows() << " closure equations. Target: the file's fold "
-     << "angles, the flat-folded bird base (its closure error " << num(target_error, 2) << " rad: closed to the file's float precision).\n\n"
+     << "angles, the flat-folded bird base (its closure error " << num(f.target_error, 2) << " rad: closed to the file's float precision).\n\n"
      << "| quantity | ours |\n|---|---|\n"
-     << "| DOF flat | " << m_flat.dof << " (rank " << m_flat.rank << ") |\n"
-     << "| DOF at the closed states of the rigid folding | " << dof_min << (dof_min == dof_max ? "" : "–" + std::to_string(dof_max)) << " |\n"
-     << "| DOF at the flat-folded target (a singular state) | " << m_target.dof << " (rank " << m_target.rank << ") |\n"
-     << "| all creases at once, in proportion: largest closure residual | " << num(peak, 3) << " rad (" << num(peak * kDeg, 3)
-     << "°) at t = " << num(peak_t, 2) << " |\n"
-     << "| the same as one CMML event, simulated (sync) | " << (straight_sim.status.ok() ? "valid" : "invalid") << ": max closure error "
-     << num(straight_sim.max_closure_error, 3) << " rad, " << straight_sim.collision_count << " crossings |\n"
-     << "| rigid folding toward the target (" << path.size() << " closed states, steps ≤ " << num(largest_jump * kDeg, 2)
-     << "° per crease) | stops " << num(reached_diff, 3) << "° from the target (largest crease difference): " << stop << " |\n"
-     << "| its largest closure error | " << num(worst_closure, 2) << " rad |\n"
-     << "| its replay (" << rigid.events.size() << " events, sync) | " << (rigid_sim.status.ok() ? "valid" : "invalid") << ", max closure error "
-     << num(rigid_sim.max_closure_error, 2) << " rad; " << rigid_sim.collision_count << " crossings";
-  if (first_collision >= 0)
-    md << ", the first at state " << first_collision + 1 << " (facets " << crossing_pair << ", "
-       << (crossing_confirmed ? "confirmed" : "NOT confirmed")
-       << " by an independent segment–triangle test, which also finds them apart one state before), " << num(crossing_diff, 3)
-       << "° from the target; crossing-free up to " << num(free_diff, 3) << "° from it";
+     << "| DOF flat | " << f.m_flat.dof << " (rank " << f.m_flat.rank << ") |\n"
+     << "| DOF at the closed states of the rigid folding | " << r.dof_min
+     << (r.dof_min == r.dof_max ? "" : "–" + std::to_string(r.dof_max)) << " |\n"
+     << "| DOF at the flat-folded target (a singular state) | " << f.m_target.dof << " (rank " << f.m_target.rank << ") |\n"
+     << "| all creases at once, in proportion: largest closure residual | " << num(f.straight.peak, 3) << " rad ("
+     << num(f.straight.peak * kDeg, 3) << "°) at t = " << num(f.straight.peak_t, 2) << " |\n"
+     << "| the same as one CMML event, simulated (sync) | " << (f.straight.sim.status.ok() ? "valid" : "invalid") << ": max closure error "
+     << num(f.straight.sim.max_closure_error, 3) << " rad, " << f.straight.sim.collision_count << " crossings |\n"
+     << "| rigid folding toward the target (" << r.states.size() << " closed states, steps ≤ " << num(r.largest_jump * kDeg, 2)
+     << "° per crease) | stops " << num(f.reached_diff, 3) << "° from the target (largest crease difference): " << r.stop << " |\n"
+     << "| its largest closure error | " << num(r.worst_closure, 2) << " rad |\n"
+     << "| its replay (" << replay.sequence.events.size() << " events, sync) | " << (replay.sim.status.ok() ? "valid" : "invalid")
+     << ", max closure error " << num(replay.sim.max_closure_error, 2) << " rad; " << replay.sim.collision_count << " crossings";
+  if (replay.first_collision >= 0)
+    md << ", the first at state " << replay.first_collision + 1 << " (facets " << replay.crossing_pair << ", "
+       << (replay.crossing_confirmed ? "confirmed" : "NOT confirmed")
+       << " by an independent segment–triangle test, which also finds them apart one state before), " << num(f.crossing_diff, 3)
+       << "° from the target; crossing-free up to " << num(f.free_diff, 3) << "° from it";
   md << " |\n"
-     << "| `robbykraft_Origami__bird-base-3d.fold`: its fold angles (" << distinct_deg(*second.state)
-     << " °) | closure residual " << num(second_error, 3) << " rad: not a rigid state; nearest closed state "
-     << (second_near.status.ok() ? num(max_diff(second_near.state, *second.state) * kDeg, 3) + "° away" : "not found") << " |\n\n"
-     << "Remarks. Folding every crease in proportion (what a one-event CMML with matched velocities does) is not a rigid motion: "
-     << "the loops open by up to " << num(peak * kDeg, 3) << "° halfway. Letting the creases move out of proportion, a path of closed states "
-     << "exists from flat (" << m_flat.dof << " DOF) through states of " << dof_min << " DOF to within " << num(reached_diff, 2)
-     << "° of the flat-folded base, where the mechanism becomes singular (" << m_target.dof
+     << "| `robbykraft_Origami__bird-base-3d.fold`: its fold angles (" << distinct_deg(second_state)
+     << " °) | closure residual " << num(f.second_error, 3) << " rad: not a rigid state; nearest closed state "
+     << (f.second_near.status.ok() ? num(max_diff(f.second_near.state, second_state) * kDeg, 3) + "° away" : "not found") << " |\n\n";
+}
+
+void remarks(std::ostream& md, const geometry::CreasePattern& pattern, const Findings& f, const geometry::FoldState& reached) {
+  md << "Remarks. Folding every crease in proportion (what a one-event CMML with matched velocities does) is not a rigid motion: "
+     << "the loops open by up to " << num(f.straight.peak * kDeg, 3) << "° halfway. Letting the creases move out of proportion, a path of closed states "
+     << "exists from flat (" << f.m_flat.dof << " DOF) through states of " << f.rigid.dof_min << " DOF to within " << num(f.reached_diff, 2)
+     << "° of the flat-folded base, where the mechanism becomes singular (" << f.m_target.dof
      << " DOF) and the projection cannot get closer. That path is not physical all the way: ";
-  if (first_collision >= 0)
-    md << "from " << num(crossing_diff, 3) << "° before the end the simulator finds facets " << crossing_pair
-       << " crossing (red in the last frame). So the rigid model folds the bird base to about " << num(free_diff, 2)
+  if (f.replay.first_collision >= 0)
+    md << "from " << num(f.crossing_diff, 3) << "° before the end the simulator finds facets " << f.replay.crossing_pair
+       << " crossing (red in the last frame). So the rigid model folds the bird base to about " << num(f.free_diff, 2)
        << "° short of flat-folded without bending or crossing, and no further along this path; this path is greedy (each step the "
        << "closed state nearest to a step toward the target), and another one, with another layer order, may get closer.\n";
   else
     md << "the simulator finds no crossing.\n";
   md << "\nFinal state of the rigid folding (joint ID: degrees): " << angles_deg(pattern, reached) << ".\n";
+}
 
-  std::cout << md.str();
-  experiments::write_output(args, "fig67_straight.csv", straight_csv.str());
-  experiments::write_output(args, "fig67_rigid_path.csv", path_csv.str());
-  experiments::write_output(args, "fig67_bird_base.md", md.str());
-  experiments::write_output(args, "birdbase.pmml", io::write_pmml(pattern));
-  io::SvgOptions svg;
-  svg.state = &target;
-  experiments::write_output(args, "birdbase.svg", io::write_svg(pattern, svg));
-  experiments::write_output(args, "birdbase-straight.cmml", io::write_cmml(straight));
-  experiments::write_output(args, "birdbase-rigid.cmml", rigid_cmml);
-  // Fig. 7's frames: a quarter, half, three quarters of the crossing-free part, its last state,
-  // and the first crossing (facets in red).
+// Fig. 7's frames: a quarter, half, three quarters of the crossing-free part, its last state,
+// and the first crossing (facets in red).
+void write_frames(const experiments::Args& args, const geometry::CreasePattern& pattern, const geometry::FoldState& target,
+                  const std::vector<geometry::FoldState>& path, const Replay& replay) {
+  const int first_collision = replay.first_collision;
   const geometry::KinematicTree tree = geometry::make_tree(pattern);
   const int free_end = first_collision >= 0 ? first_collision - 1 : static_cast<int>(path.size()) - 1;
   std::vector<int> frames;
@@ -286,22 +342,60 @@ int main(int argc, char** argv) {
     so.size = 360;
     so.caption = "state " + std::to_string(k + 1) + ", " + num(max_diff(path[k], target) * kDeg, 3) + " deg from flat-folded";
     if (k == first_collision)
-      for (const auto& c : rigid_sim.collisions)
+      for (const auto& c : replay.sim.collisions)
         if (c.event == k + 1)
           for (int id : c.actors) so.marked.push_back(*pattern.actor_index(id));
     experiments::write_output(args, "fig7_frame_" + std::to_string(f + 1) + ".svg",
                               simulation::snapshot_svg(pattern, geometry::facet_poses(pattern, tree, path[k]), so));
   }
-  if (!args.check) return 0;
-  bool ok = experiments::expect(m_flat.dof == 10 && dof_min == 5 && dof_max == 5 && m_target.dof == 9,
+}
+
+bool check(const Findings& f) {
+  const RigidPath& r = f.rigid;
+  bool ok = experiments::expect(f.m_flat.dof == 10 && r.dof_min == 5 && r.dof_max == 5 && f.m_target.dof == 9,
                                 "DOF 10 flat, 5 along the rigid folding, 9 at the flat-folded target");
-  ok &= experiments::expect(peak > 1.2 && peak < 1.3 && std::abs(peak_t - 0.5) < 1e-9 && !straight_sim.status.ok(),
+  ok &= experiments::expect(f.straight.peak > 1.2 && f.straight.peak < 1.3 && std::abs(f.straight.peak_t - 0.5) < 1e-9 &&
+                                !f.straight.sim.status.ok(),
                             "straight folding: closure residual peaks at 1.2-1.3 rad halfway, simulator says invalid");
-  ok &= experiments::expect(worst_closure < 1e-9 && largest_jump < 0.01 && reached_diff < 0.5,
+  ok &= experiments::expect(r.worst_closure < 1e-9 && r.largest_jump < 0.01 && f.reached_diff < 0.5,
                             "rigid folding: closed states, small steps, within 0.5° of the flat-folded base");
-  ok &= experiments::expect(first_collision > 0 && free_diff > 5 && free_diff < 15 && rigid_sim.max_closure_error < 1e-3,
+  ok &= experiments::expect(f.replay.first_collision > 0 && f.free_diff > 5 && f.free_diff < 15 && f.replay.sim.max_closure_error < 1e-3,
                             "rigid folding crossing-free until 5-15° before flat-folded, closure kept on replay");
-  ok &= experiments::expect(crossing_confirmed, "the first crossing confirmed by the segment-triangle test (and absent one state before)");
-  ok &= experiments::expect(second_error > 0.3 && second_near.status.ok(), "second file's angles are not closed; a nearest closed state exists");
-  return ok ? 0 : 1;
+  ok &= experiments::expect(f.replay.crossing_confirmed,
+                            "the first crossing confirmed by the segment-triangle test (and absent one state before)");
+  ok &= experiments::expect(f.second_error > 0.3 && f.second_near.status.ok(),
+                            "second file's angles are not closed; a nearest closed state exists");
+  return ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const auto args = experiments::parse_args(argc, argv, "experiment-output/fig67",
+                                            "usage: fig67_bird_base [--out DIR] [--check]\n"
+                                            "  The bird base of the paper's Figs. 6/7 under the rigid model.\n");
+  std::optional<io::FoldImport> bird_file, second_file;
+  if (!read_inputs(bird_file, second_file)) return 1;
+  const geometry::CreasePattern& pattern = bird_file->pattern;
+  const geometry::ClosureSystem system(pattern);
+  const geometry::FoldState target = *bird_file->state;
+  const Findings f = study(pattern, system, target, *second_file);
+  const std::vector<geometry::FoldState>& path = f.rigid.states;
+
+  std::ostringstream md;
+  summary_table(md, pattern, system, f, *second_file->state);
+  remarks(md, pattern, f, path.empty() ? geometry::FoldState::flat(pattern) : path.back());
+  std::cout << md.str();
+  experiments::write_output(args, "fig67_straight.csv", f.straight.csv);
+  experiments::write_output(args, "fig67_rigid_path.csv", rigid_path_csv(system, f.rigid, f.replay, target));
+  experiments::write_output(args, "fig67_bird_base.md", md.str());
+  experiments::write_output(args, "birdbase.pmml", io::write_pmml(pattern));
+  io::SvgOptions svg;
+  svg.state = &target;
+  experiments::write_output(args, "birdbase.svg", io::write_svg(pattern, svg));
+  experiments::write_output(args, "birdbase-straight.cmml", io::write_cmml(f.straight.sequence));
+  experiments::write_output(args, "birdbase-rigid.cmml", f.replay.cmml);
+  write_frames(args, pattern, target, path, f.replay);
+  if (!args.check) return 0;
+  return check(f) ? 0 : 1;
 }

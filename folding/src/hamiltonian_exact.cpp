@@ -2,6 +2,7 @@
 // Hamiltonian search, and the pruning needs the grid's bipartite colouring.
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -181,73 +182,100 @@ HamiltonianResult none(std::string reason) {
   return r;
 }
 
-}  // namespace
+// Cells of each colour, and the cells of degree 1.
+struct Census {
+  int count[2] = {0, 0};
+  std::vector<std::int32_t> leaves;
 
-HamiltonianResult exact_search(const CellGraph& g, const ExactOptions& o) {
+  std::string counts() const {
+    return std::to_string(count[0]) + " even and " + std::to_string(count[1]) + " odd cells";
+  }
+};
+
+Census take_census(const CellGraph& g) {
+  Census c;
+  for (std::size_t v = 0; v < g.vertex_count(); ++v) {
+    ++c.count[colour(g.cells[v])];
+    if (g.degree(static_cast<std::int32_t>(v)) == 1) c.leaves.push_back(static_cast<std::int32_t>(v));
+  }
+  return c;
+}
+
+// Why the shape cannot be searched at all (empty, too large, not connected, or a start that is
+// not a cell), or nothing. `start` is the start cell's vertex (-1: none given).
+std::optional<HamiltonianResult> unsearchable(const CellGraph& g, const ExactOptions& o, bool three_d, std::int32_t& start) {
   const std::size_t n = g.vertex_count();
-  const bool three_d = g.size[2] > 1;
   if (n == 0) return none("the shape is empty");
   if (n > kMaxExactCells) {
     HamiltonianResult r;
     r.status.code = StatusCode::LimitReached;
     r.status.message = "too large for the exact search (" + std::to_string(n) + " cells > " + std::to_string(kMaxExactCells) +
-               "); use the refinement";
+                       "); use the refinement";
     return r;
   }
   if (const std::size_t k = component_count(g); k > 1)
     return none("the shape is not connected (" + std::to_string(k) + " components)");
-  std::int32_t start = -1;
+  start = -1;
   if (o.start && !o.cycle) {
     start = g.vertex_at(o.start->x, o.start->y, o.start->z);
     if (start < 0) return none("the start " + where(*o.start, three_d) + " is not a filled cell");
   }
-  int count[2] = {0, 0};
-  std::vector<std::int32_t> leaves;
-  for (std::size_t v = 0; v < n; ++v) {
-    ++count[colour(g.cells[v])];
-    if (g.degree(static_cast<std::int32_t>(v)) == 1) leaves.push_back(static_cast<std::int32_t>(v));
+  return std::nullopt;
+}
+
+void cycle_failures(const Census& c, std::size_t n, std::vector<std::string>& failed) {
+  if (c.count[0] != c.count[1]) failed.push_back("colour parity: " + c.counts() + " (a cycle needs equal counts)");
+  if (!c.leaves.empty())
+    failed.push_back(std::to_string(c.leaves.size()) + (c.leaves.size() == 1 ? " cell" : " cells") +
+                     " of degree 1 (a cycle has none)");
+  if (n < 4) failed.push_back("fewer than 4 cells");
+}
+
+void path_failures(const CellGraph& g, const ExactOptions& o, const Census& c, std::int32_t start, bool three_d,
+                   std::vector<std::string>& failed) {
+  const bool balanced = c.count[0] - c.count[1] <= 1 && c.count[1] - c.count[0] <= 1;
+  if (!balanced) failed.push_back("colour parity: " + c.counts() + " differ by more than 1");
+  if (c.leaves.size() > 2) failed.push_back(std::to_string(c.leaves.size()) + " cells of degree 1 (a path has only two ends)");
+  if (balanced && start >= 0 && c.count[0] != c.count[1]) {
+    const int s = colour(g.cells[static_cast<std::size_t>(start)]);
+    if (c.count[s] < c.count[1 - s])
+      failed.push_back("colour parity: " + c.counts() + ", so the path must start on the majority colour, and the start " +
+                       where(*o.start, three_d) + " is not");
   }
-  const std::string counts = std::to_string(count[0]) + " even and " + std::to_string(count[1]) + " odd cells";
-  // Every necessary condition that fails is reported, not just the first.
+  if (start >= 0 && c.leaves.size() == 2 && start != c.leaves[0] && start != c.leaves[1])
+    failed.push_back("the two cells of degree 1 must be the ends, and the start " + where(*o.start, three_d) + " is neither");
+}
+
+// Every necessary condition that fails, joined by "; " (not just the first); empty when none.
+std::string failed_conditions(const CellGraph& g, const ExactOptions& o, const Census& c, std::int32_t start, bool three_d) {
   std::vector<std::string> failed;
-  if (o.cycle) {
-    if (count[0] != count[1]) failed.push_back("colour parity: " + counts + " (a cycle needs equal counts)");
-    if (!leaves.empty())
-      failed.push_back(std::to_string(leaves.size()) + (leaves.size() == 1 ? " cell" : " cells") +
-                       " of degree 1 (a cycle has none)");
-    if (n < 4) failed.push_back("fewer than 4 cells");
-  } else {
-    const bool balanced = count[0] - count[1] <= 1 && count[1] - count[0] <= 1;
-    if (!balanced) failed.push_back("colour parity: " + counts + " differ by more than 1");
-    if (leaves.size() > 2) failed.push_back(std::to_string(leaves.size()) + " cells of degree 1 (a path has only two ends)");
-    if (balanced && start >= 0 && count[0] != count[1]) {
-      const int c = colour(g.cells[static_cast<std::size_t>(start)]);
-      if (count[c] < count[1 - c])
-        failed.push_back("colour parity: " + counts + ", so the path must start on the majority colour, and the start " +
-                         where(*o.start, three_d) + " is not");
-    }
-    if (start >= 0 && leaves.size() == 2 && start != leaves[0] && start != leaves[1])
-      failed.push_back("the two cells of degree 1 must be the ends, and the start " + where(*o.start, three_d) + " is neither");
-  }
-  if (!failed.empty()) {
-    std::string reason = failed[0];
-    for (std::size_t i = 1; i < failed.size(); ++i) reason += "; " + failed[i];
-    return none(reason);
-  }
-  // Where the path may start: one end of a degree-1 cell (reversal covers the other), the
-  // majority colour, or for a cycle any one cell.
+  if (o.cycle) cycle_failures(c, g.vertex_count(), failed);
+  else path_failures(g, o, c, start, three_d, failed);
+  if (failed.empty()) return {};
+  std::string reason = failed[0];
+  for (std::size_t i = 1; i < failed.size(); ++i) reason += "; " + failed[i];
+  return reason;
+}
+
+// Where the path may start: one end of a degree-1 cell (reversal covers the other), the
+// majority colour, or for a cycle any one cell.
+std::vector<std::int32_t> start_cells(const CellGraph& g, const ExactOptions& o, const Census& c, std::int32_t start) {
   std::vector<std::int32_t> starts;
   if (start >= 0) {
     starts.push_back(start);
   } else if (o.cycle) {
     starts.push_back(0);
-  } else if (!leaves.empty()) {
-    starts.push_back(leaves[0]);
+  } else if (!c.leaves.empty()) {
+    starts.push_back(c.leaves[0]);
   } else {
-    for (std::size_t v = 0; v < n; ++v)
-      if (count[0] == count[1] || count[colour(g.cells[v])] > count[1 - colour(g.cells[v])])
+    for (std::size_t v = 0; v < g.vertex_count(); ++v)
+      if (c.count[0] == c.count[1] || c.count[colour(g.cells[v])] > c.count[1 - colour(g.cells[v])])
         starts.push_back(static_cast<std::int32_t>(v));
   }
+  return starts;
+}
+
+HamiltonianResult search_from(const CellGraph& g, const ExactOptions& o, const std::vector<std::int32_t>& starts) {
   Search search(g, o);
   HamiltonianResult r;
   for (const std::int32_t s : starts) {
@@ -267,6 +295,17 @@ HamiltonianResult exact_search(const CellGraph& g, const ExactOptions& o) {
   r.status = {StatusCode::NoSolution,
               "exhausted search (" + std::to_string(r.nodes) + " nodes): no Hamiltonian " + (o.cycle ? "cycle" : "path")};
   return r;
+}
+
+}  // namespace
+
+HamiltonianResult exact_search(const CellGraph& g, const ExactOptions& o) {
+  const bool three_d = g.size[2] > 1;
+  std::int32_t start = -1;
+  if (auto r = unsearchable(g, o, three_d, start)) return std::move(*r);
+  const Census census = take_census(g);
+  if (std::string reason = failed_conditions(g, o, census, start, three_d); !reason.empty()) return none(std::move(reason));
+  return search_from(g, o, start_cells(g, o, census, start));
 }
 
 }  // namespace foldkit::folding::detail

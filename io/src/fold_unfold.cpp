@@ -101,98 +101,130 @@ double dihedral(const Vec3& n1, const Vec3& n2, const Vec3& e) {
   return std::atan2(n1.cross(n2).dot(e), n1.dot(n2));
 }
 
+namespace {
+
+// Breadth-first from face 0: each face reached across a side is laid flat in its own frame and
+// moved onto that side where the faces before it put it.
+class Unfolder {
+ public:
+  Unfolder(const std::vector<Vec3>& points, const std::vector<Face>& faces, double tolerance, Unfolding& out)
+      : points_(points), faces_(faces), tolerance_(tolerance), out_(out), placed_vertex_(points.size(), 0),
+        placed_face_(faces.size(), 0) {
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const Face& face = faces[f];
+      for (std::size_t i = 0; i < face.size(); ++i)
+        faces_by_side_[side_key(face[i], face[(i + 1) % face.size()])].push_back(static_cast<int>(f));
+    }
+  }
+
+  // False when out.error was set.
+  bool lay_flat() {
+    if (!local_coords(0)) {
+      out_.error = GeometryError{"face has no area", 0, -1};
+      return false;
+    }
+    for (std::size_t i = 0; i < faces_[0].size(); ++i) {
+      out_.coords[faces_[0][i]] = local_[i];
+      placed_vertex_[faces_[0][i]] = 1;
+    }
+    placed_face_[0] = 1;
+    std::deque<int> queue{0};
+    while (!queue.empty()) {
+      const int f = queue.front();
+      queue.pop_front();
+      const Face& face = faces_[f];
+      for (std::size_t i = 0; i < face.size(); ++i) {
+        const int a = face[i];
+        const int b = face[(i + 1) % face.size()];
+        for (int g : faces_by_side_[side_key(a, b)]) {
+          if (placed_face_[g]) continue;
+          if (!place(f, g, a, b)) return false;
+          placed_face_[g] = 1;
+          queue.push_back(g);
+        }
+      }
+    }
+    return true;
+  }
+
+  void check_connected() {
+    for (std::size_t f = 0; f < faces_.size(); ++f) {
+      if (!placed_face_[f]) {
+        out_.error = GeometryError{"is not connected to face 0; a folded form must be one piece to unfold",
+                                   static_cast<int>(f), -1};
+        return;
+      }
+    }
+  }
+
+ private:
+  // Coordinates of a face's corners in its own plane, orientation kept (u × v = its normal).
+  bool local_coords(int f) {
+    const Vec3 n = newell_normal(points_, faces_[f]);
+    if (n.norm() <= 0.0) return false;
+    const auto basis = in_plane_basis(n.normalized());
+    local_.clear();
+    for (int w : faces_[f]) local_.emplace_back(points_[w].dot(basis[0]), points_[w].dot(basis[1]));
+    return true;
+  }
+
+  // Lays face g flat onto side (a, b) of the placed face f; false when out.error was set.
+  bool place(int f, int g, int a, int b) {
+    if (!local_coords(g)) {
+      out_.error = GeometryError{"face has no area", g, -1};
+      return false;
+    }
+    const Face& other = faces_[g];
+    const auto at = [&](int vertex) {
+      return local_[static_cast<std::size_t>(std::find(other.begin(), other.end(), vertex) - other.begin())];
+    };
+    const Vec2 la = at(a);
+    const Vec2 lb = at(b);
+    const Vec2& pa = out_.coords[a];
+    const Vec2& pb = out_.coords[b];
+    if (std::abs((lb - la).norm() - (pb - pa).norm()) > tolerance_) {
+      out_.error = GeometryError{"not developable: the side between vertices " + std::to_string(a) + " and " +
+                                     std::to_string(b) + " has different lengths in faces " + std::to_string(f) + " and " +
+                                     std::to_string(g),
+                                 g, -1};
+      return false;
+    }
+    const Motion motion = align(la, lb, pa, pb);
+    for (std::size_t k = 0; k < other.size(); ++k) {
+      const int w = other[k];
+      const Vec2 q = motion(local_[k]);
+      if (!placed_vertex_[w]) {
+        out_.coords[w] = q;
+        placed_vertex_[w] = 1;
+      } else if ((q - out_.coords[w]).norm() > tolerance_) {
+        out_.error = GeometryError{"not developable: laid flat, this face puts vertex " + std::to_string(w) + " " +
+                                       short_number((q - out_.coords[w]).norm()) +
+                                       " away from where the faces before it put it",
+                                   g, -1};
+        return false;
+      }
+    }
+    return true;
+  }
+
+  const std::vector<Vec3>& points_;
+  const std::vector<Face>& faces_;
+  const double tolerance_;
+  Unfolding& out_;
+  std::unordered_map<std::uint64_t, std::vector<int>> faces_by_side_;
+  std::vector<char> placed_vertex_;
+  std::vector<char> placed_face_;
+  std::vector<Vec2> local_;  // the corners of the face being placed, in its own plane
+};
+
+}  // namespace
+
 Unfolding unfold(const std::vector<Vec3>& points, const std::vector<Face>& faces, double tolerance) {
   Unfolding out;
   out.coords.assign(points.size(), Vec2::Zero());
   if (faces.empty()) return out;
-
-  std::unordered_map<std::uint64_t, std::vector<int>> faces_by_side;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const Face& face = faces[f];
-    for (std::size_t i = 0; i < face.size(); ++i)
-      faces_by_side[side_key(face[i], face[(i + 1) % face.size()])].push_back(static_cast<int>(f));
-  }
-
-  std::vector<char> placed_vertex(points.size(), 0);
-  std::vector<char> placed_face(faces.size(), 0);
-
-  // Coordinates of a face's corners in its own plane, orientation kept (u × v = its normal).
-  auto local_coords = [&](int f, std::vector<Vec2>& local) -> bool {
-    const Vec3 n = newell_normal(points, faces[f]);
-    if (n.norm() <= 0.0) return false;
-    const auto basis = in_plane_basis(n.normalized());
-    local.clear();
-    for (int w : faces[f]) local.emplace_back(points[w].dot(basis[0]), points[w].dot(basis[1]));
-    return true;
-  };
-
-  std::vector<Vec2> local;
-  if (!local_coords(0, local)) {
-    out.error = GeometryError{"face has no area", 0, -1};
-    return out;
-  }
-  for (std::size_t i = 0; i < faces[0].size(); ++i) {
-    out.coords[faces[0][i]] = local[i];
-    placed_vertex[faces[0][i]] = 1;
-  }
-  placed_face[0] = 1;
-
-  std::deque<int> queue{0};
-  while (!queue.empty()) {
-    const int f = queue.front();
-    queue.pop_front();
-    const Face& face = faces[f];
-    for (std::size_t i = 0; i < face.size(); ++i) {
-      const int a = face[i];
-      const int b = face[(i + 1) % face.size()];
-      for (int g : faces_by_side[side_key(a, b)]) {
-        if (placed_face[g]) continue;
-        if (!local_coords(g, local)) {
-          out.error = GeometryError{"face has no area", g, -1};
-          return out;
-        }
-        const Face& other = faces[g];
-        const auto at = [&](int vertex) {
-          return local[static_cast<std::size_t>(std::find(other.begin(), other.end(), vertex) - other.begin())];
-        };
-        const Vec2 la = at(a);
-        const Vec2 lb = at(b);
-        const Vec2& pa = out.coords[a];
-        const Vec2& pb = out.coords[b];
-        if (std::abs((lb - la).norm() - (pb - pa).norm()) > tolerance) {
-          out.error = GeometryError{"not developable: the side between vertices " + std::to_string(a) + " and " +
-                                        std::to_string(b) + " has different lengths in faces " + std::to_string(f) +
-                                        " and " + std::to_string(g),
-                                    g, -1};
-          return out;
-        }
-        const Motion motion = align(la, lb, pa, pb);
-        for (std::size_t k = 0; k < other.size(); ++k) {
-          const int w = other[k];
-          const Vec2 q = motion(local[k]);
-          if (!placed_vertex[w]) {
-            out.coords[w] = q;
-            placed_vertex[w] = 1;
-          } else if ((q - out.coords[w]).norm() > tolerance) {
-            out.error = GeometryError{"not developable: laid flat, this face puts vertex " + std::to_string(w) +
-                                          " " + short_number((q - out.coords[w]).norm()) +
-                                          " away from where the faces before it put it",
-                                      g, -1};
-            return out;
-          }
-        }
-        placed_face[g] = 1;
-        queue.push_back(g);
-      }
-    }
-  }
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    if (!placed_face[f]) {
-      out.error = GeometryError{"is not connected to face 0; a folded form must be one piece to unfold",
-                                static_cast<int>(f), -1};
-      return out;
-    }
-  }
+  Unfolder unfolder(points, faces, tolerance, out);
+  if (unfolder.lay_flat()) unfolder.check_connected();
   return out;
 }
 
