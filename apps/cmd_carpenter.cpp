@@ -17,7 +17,7 @@
 namespace foldkit::apps {
 namespace {
 
-struct Options {
+struct CarpenterArgs {
   std::string chain, output, frames_csv, state;
   bool closed = false, fold = false, json = false;
   std::size_t max_steps = folding::CarpenterPlanarOptions{}.max_steps;
@@ -25,7 +25,7 @@ struct Options {
 
 // A single-vertex crease pattern (PMML or FOLD) in the state of --state (or the FOLD file's own
 // fold angles): flattened on the sphere by the spherical Carpenter's rule.
-int run_spherical(const Options& opt) {
+int run_spherical(const CarpenterArgs& opt) {
   if (opt.closed) throw UsageError("--closed is for planar chains; a single vertex is always a closed spherical chain");
   if (!opt.frames_csv.empty()) throw UsageError("--frames-csv is for planar chains");
   LoadedPattern loaded = load_pattern(opt.chain);
@@ -61,7 +61,7 @@ int run_spherical(const Options& opt) {
   return r.status.ok() ? kOk : kNoPlan;
 }
 
-int run_planar(const Options& opt) {
+int run_planar(const CarpenterArgs& opt) {
   if (!opt.output.empty() && !has_extension(opt.output, ".cmml") && !has_extension(opt.output, ".json") &&
       !has_extension(opt.output, ".csv"))
     throw UsageError(opt.output + ": unknown output format (expected .cmml, .json or .csv)");
@@ -113,7 +113,7 @@ int run_planar(const Options& opt) {
 }  // namespace
 
 Command add_carpenter(CLI::App& root) {
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<CarpenterArgs>();
   CLI::App* app = root.add_subcommand(
       "carpenter", "Carpenter's rule: straighten a planar chain, convexify a polygon, or flatten a single vertex");
   app->add_option("chain", opt->chain,

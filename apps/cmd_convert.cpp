@@ -10,13 +10,13 @@
 namespace foldkit::apps {
 namespace {
 
-struct Options {
+struct ConvertArgs {
   std::string input, output, pattern;
   bool joint_ids = false;
 };
 
 // A CMML is meaningful only with its pattern: FOLD gets one frame per event, SVG the end state.
-int convert_sequence(const Options& opt) {
+int convert_sequence(const ConvertArgs& opt) {
   if (opt.pattern.empty()) throw UsageError("converting a .cmml needs --pattern PMML");
   const geometry::CreasePattern pattern = load_pattern(opt.pattern).pattern;
   const geometry::FoldSequence seq = io::read_cmml(opt.input);
@@ -41,7 +41,7 @@ int convert_sequence(const Options& opt) {
   return kOk;
 }
 
-int run(const Options& opt) {
+int run_convert(const ConvertArgs& opt) {
   if (kind_of(opt.input) == FileKind::Cmml) return convert_sequence(opt);
   LoadedPattern loaded = load_pattern(opt.input);
   for (const auto& w : loaded.warnings) std::cerr << geometry::format(w, opt.input) << '\n';
@@ -53,13 +53,13 @@ int run(const Options& opt) {
 }  // namespace
 
 Command add_convert(CLI::App& root) {
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<ConvertArgs>();
   CLI::App* app = root.add_subcommand("convert", "Convert between .pmml, .cmml, .fold and .svg by file extension");
   app->add_option("input", opt->input, "Input file (.pmml, .fold, or .cmml with --pattern)")->required();
   app->add_option("output", opt->output, "Output file (.pmml, .cmml, .fold or .svg)")->required();
   app->add_option("--pattern", opt->pattern, "The crease pattern a .cmml input folds");
   app->add_flag("--joint-ids", opt->joint_ids, "Label joints with their IDs in SVG output");
-  return {app, [opt] { return run(*opt); }};
+  return {app, [opt] { return run_convert(*opt); }};
 }
 
 }  // namespace foldkit::apps

@@ -152,7 +152,7 @@ struct Example {
   RoughStart fold;  // empty: the example is not folded
 };
 
-int run(const std::string& dir) {
+int run_demo(const std::string& dir) {
   fs::create_directories(dir);
   const std::vector<Example> examples = {
       {"degree8-vertex", gen::single_vertex(std::vector<double>(8, M_PI / 4)), alternating(0.5, -0.45)},
@@ -209,7 +209,7 @@ Command add_demo(CLI::App& root) {
   auto dir = std::make_shared<std::string>("foldkit-demo");
   CLI::App* app = root.add_subcommand("demo", "Run the pipeline on built-in examples and write every output to a folder");
   app->add_option("-o,--output", *dir, "Output folder")->capture_default_str();
-  return {app, [dir] { return run(*dir); }};
+  return {app, [dir] { return run_demo(*dir); }};
 }
 
 }  // namespace foldkit::apps

@@ -30,14 +30,14 @@ const char* stop_name(geometry::StatusCode code) {
   return geometry::to_string(code);
 }
 
-struct Options {
+struct FoldArgs {
   std::string pattern, output, velocity;
   double fraction = 0.9, step = 0.01;
   int max_steps = 20000;
   bool no_collision = false, partial = false, json = false;
 };
 
-void add_options(CLI::App* app, Options& opt) {
+void add_fold_options(CLI::App* app, FoldArgs& opt) {
   app->add_option("pattern", opt.pattern, "Crease pattern (.pmml or .fold) with a mountain/valley assignment")->required();
   app->add_option("--fraction", opt.fraction, "Stop when the largest fold angle reaches this fraction of 180 degrees")
       ->check(CLI::Range(0.0, 1.0))
@@ -54,7 +54,7 @@ void add_options(CLI::App* app, Options& opt) {
   app->add_flag("--json", opt.json, "Print one JSON object on stdout");
 }
 
-folding::ProjectedFoldingResult fold(const Options& opt, const geometry::CreasePattern& pattern) {
+folding::ProjectedFoldingResult fold(const FoldArgs& opt, const geometry::CreasePattern& pattern) {
   folding::ProjectedFoldingOptions o;
   if (!opt.velocity.empty()) {
     o.velocity = parse_velocity(pattern, opt.velocity);
@@ -81,7 +81,7 @@ void print_summary(const folding::ProjectedFoldingResult& r) {
               << " (smallest over " << r.rank_decisions << " decisions " << r.min_rank_gap << ")\n";
 }
 
-nlohmann::json to_json(const Options& opt, const folding::ProjectedFoldingResult& r, bool written) {
+nlohmann::json to_json(const FoldArgs& opt, const folding::ProjectedFoldingResult& r, bool written) {
   const bool reached = r.status.code == geometry::StatusCode::Success;
   const bool replay_ok = r.replay && r.replay->status.ok();
   nlohmann::json j{{"stop", stop_name(r.status.code)},
@@ -107,7 +107,7 @@ nlohmann::json to_json(const Options& opt, const folding::ProjectedFoldingResult
   return j;
 }
 
-int run_fold(const Options& opt) {
+int run_fold(const FoldArgs& opt) {
   if (kind_of(opt.output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt.output + "'");
   if (!(opt.fraction > 0.0)) throw UsageError("--fraction must be greater than 0");
   const geometry::CreasePattern pattern = load_pattern(opt.pattern).pattern;
@@ -128,10 +128,10 @@ int run_fold(const Options& opt) {
 }  // namespace
 
 Command add_fold(CLI::App& root) {
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<FoldArgs>();
   CLI::App* app = root.add_subcommand(
       "fold", "Fold all creases together: desired velocity projected onto the closure constraint, Newton-corrected");
-  add_options(app, *opt);
+  add_fold_options(app, *opt);
   return {app, [opt] { return run_fold(*opt); }};
 }
 

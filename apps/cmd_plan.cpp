@@ -21,14 +21,14 @@ std::vector<std::pair<int, double>> parse_goal_angles(const geometry::CreasePatt
   return out;
 }
 
-struct Options {
+struct PlanArgs {
   std::string pattern, goal, goal_angles, start, space = "auto", planner = "RRTConnect", output;
   double time = 5.0, search_margin = -1.0;
   unsigned int seed = 1;
   bool no_collision = false, free_signs = false, json = false;
 };
 
-void add_options(CLI::App* app, Options& opt) {
+void add_plan_options(CLI::App* app, PlanArgs& opt) {
   app->add_option("pattern", opt.pattern, "Crease pattern (.pmml or .fold)")->required();
   CLI::Option* goal = app->add_option("--goal", opt.goal, "CMML whose end state is the goal");
   CLI::Option* goal_angles =
@@ -63,7 +63,7 @@ geometry::FoldSequence read_sequence(const geometry::CreasePattern& pattern, con
 
 // The goal from --goal or --goal-angles; false (after saying so) when no closed state holds the
 // angles asked for.
-bool set_goal(const Options& opt, const geometry::CreasePattern& pattern, planners::PlanRequest& req) {
+bool set_goal(const PlanArgs& opt, const geometry::CreasePattern& pattern, planners::PlanRequest& req) {
   if (!opt.goal.empty()) {
     req.goal = geometry::end_state(pattern, read_sequence(pattern, opt.goal));
     return true;
@@ -79,7 +79,7 @@ bool set_goal(const Options& opt, const geometry::CreasePattern& pattern, planne
   return true;
 }
 
-void set_start_and_settings(const Options& opt, const geometry::CreasePattern& pattern, planners::PlanRequest& req) {
+void set_start_and_settings(const PlanArgs& opt, const geometry::CreasePattern& pattern, planners::PlanRequest& req) {
   if (!opt.start.empty()) {
     req.start_sequence = read_sequence(pattern, opt.start);
     req.start = geometry::end_state(pattern, req.start_sequence);
@@ -93,7 +93,7 @@ void set_start_and_settings(const Options& opt, const geometry::CreasePattern& p
   req.use_assignment = !opt.free_signs;
 }
 
-int report(const Options& opt, const planners::PlanResult& r) {
+int report(const PlanArgs& opt, const planners::PlanResult& r) {
   std::cerr << (r.status.ok() ? "solved" : "no plan") << ": " << r.status.message << " (" << r.planner << " in " << r.space
             << ", " << r.time << " s, " << r.waypoints.size() << " waypoints)\n";
   if (r.status.ok()) {
@@ -114,7 +114,7 @@ int report(const Options& opt, const planners::PlanResult& r) {
   return r.status.ok() ? kOk : kNoPlan;
 }
 
-int run_plan(Options& opt) {
+int run_plan(PlanArgs& opt) {
   if (kind_of(opt.output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt.output + "'");
   try {
     opt.planner = planners::canonical_planner(opt.planner);
@@ -141,9 +141,9 @@ int run_plan(Options& opt) {
 }  // namespace
 
 Command add_plan(CLI::App& root) {
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<PlanArgs>();
   CLI::App* app = root.add_subcommand("plan", "Plan a closed, collision-free fold sequence with an OMPL planner");
-  add_options(app, *opt);
+  add_plan_options(app, *opt);
   return {app, [opt] { return run_plan(*opt); }};
 }
 

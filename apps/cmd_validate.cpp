@@ -14,7 +14,7 @@ using geometry::Diagnostic;
 using geometry::Diagnostics;
 using geometry::Severity;
 
-struct Options {
+struct ValidateArgs {
   std::vector<std::string> files;
   std::string pattern;
   bool auto_joints = false;
@@ -22,7 +22,7 @@ struct Options {
 };
 
 // Every finding about one file; a ParseError stops the reading of that file only.
-Diagnostics check_file(const std::string& path, const Options& opt, const std::optional<geometry::CreasePattern>& pattern,
+Diagnostics check_file(const std::string& path, const ValidateArgs& opt, const std::optional<geometry::CreasePattern>& pattern,
                        std::string& summary) {
   geometry::BuildOptions build;
   build.auto_joints = opt.auto_joints;
@@ -61,7 +61,7 @@ Diagnostics check_file(const std::string& path, const Options& opt, const std::o
   }
 }
 
-int run(const Options& opt) {
+int run_validate(const ValidateArgs& opt) {
   bool all_ok = true;
   nlohmann::json files = nlohmann::json::array();
   std::optional<geometry::CreasePattern> pattern;
@@ -100,13 +100,13 @@ int run(const Options& opt) {
 }  // namespace
 
 Command add_validate(CLI::App& root) {
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<ValidateArgs>();
   CLI::App* app = root.add_subcommand("validate", "Check PMML, CMML and FOLD files; print every problem as FILE:LINE: message");
   app->add_option("files", opt->files, "Files to check (.pmml, .cmml, .fold)")->required();
   app->add_option("--pattern", opt->pattern, "Crease pattern (.pmml or .fold) to check CMML files against");
   app->add_flag("--auto-joints", opt->auto_joints, "Treat an edge shared by two actors without a joint as a joint");
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
-  return {app, [opt] { return run(*opt); }};
+  return {app, [opt] { return run_validate(*opt); }};
 }
 
 }  // namespace foldkit::apps
