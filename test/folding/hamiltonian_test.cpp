@@ -6,19 +6,16 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <functional>
 #include <random>
 #include <set>
 #include <string>
 #include <tuple>
 #include <vector>
 
-#include "foldkit/io/parse_error.hpp"
 #include "foldkit/io/shape_file.hpp"
 
 namespace {
 
-using foldkit::io::ParseError;
 using namespace foldkit::folding;
 using foldkit::geometry::StatusCode;
 using foldkit::io::parse_pixel_grid;
@@ -273,24 +270,8 @@ TEST(HamiltonianRefine, FullBoxes) {
   EXPECT_EQ(check_path(cells_of(refine(rect)), refined_hamiltonian_cycle(rect).path, true), "");
 }
 
-int parse_line(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const ParseError& e) {
-    return e.line();
-  }
-  return -1;
-}
-
-TEST(HamiltonianShapes, VoxelLayers) {
+TEST(HamiltonianExact, VoxelLayersHaveAPath) {
   const VoxelShape v = parse_voxel_layers("##\n#.\n\n.#\n..\n", "v.vox");
-  EXPECT_EQ(v.nx, 2);
-  EXPECT_EQ(v.ny, 2);
-  EXPECT_EQ(v.nz, 2);
-  EXPECT_EQ(v.count(), 4u);
-  EXPECT_TRUE(v.filled(1, 0, 1));
-  EXPECT_EQ(parse_line([] { parse_voxel_layers("##\n\n###\n", "v.vox"); }), 3);
-  EXPECT_EQ(parse_line([] { parse_voxel_layers("VOX \x96", "v.vox"); }), 1);
   const HamiltonianResult r = exact_hamiltonian(v);
   ASSERT_EQ(r.status.code, StatusCode::Success);
   EXPECT_EQ(check_path(cells_of(v), r.path, false), "");

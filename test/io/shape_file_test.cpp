@@ -12,6 +12,7 @@
 namespace {
 
 using foldkit::geometry::PixelShape;
+using foldkit::geometry::VoxelShape;
 using foldkit::io::parse_pbm;
 using foldkit::io::parse_pixel_grid;
 using foldkit::io::parse_voxel_layers;
@@ -89,6 +90,17 @@ TEST(ShapeFile, RandomBytesParseOrThrowParseError) {
       }
     }
   }
+}
+
+TEST(ShapeFile, VoxelLayers) {
+  const VoxelShape v = parse_voxel_layers("##\n#.\n\n.#\n..\n", "v.vox");
+  EXPECT_EQ(v.nx, 2);
+  EXPECT_EQ(v.ny, 2);
+  EXPECT_EQ(v.nz, 2);
+  EXPECT_EQ(v.count(), 4u);
+  EXPECT_TRUE(v.filled(1, 0, 1));
+  EXPECT_EQ(parse_line([] { parse_voxel_layers("##\n\n###\n", "v.vox"); }), 3);
+  EXPECT_EQ(parse_line([] { parse_voxel_layers("VOX \x96", "v.vox"); }), 1);
 }
 
 }  // namespace
