@@ -81,7 +81,7 @@ void print_summary(const folding::ProjectedFoldingResult& r) {
               << " (smallest over " << r.rank_decisions << " decisions " << r.min_rank_gap << ")\n";
 }
 
-nlohmann::json to_json(const FoldArgs& opt, const folding::ProjectedFoldingResult& r, bool written) {
+nlohmann::json fold_json(const FoldArgs& opt, const folding::ProjectedFoldingResult& r, bool written) {
   const bool reached = r.status.code == geometry::StatusCode::Success;
   const bool replay_ok = r.replay && r.replay->status.ok();
   nlohmann::json j{{"stop", stop_name(r.status.code)},
@@ -120,7 +120,7 @@ int run_fold(const FoldArgs& opt) {
     io::write_file_atomic(opt.output, io::write_cmml(r.sequence));
     std::cerr << "wrote " << opt.output << '\n';
   }
-  if (opt.json) print_json(to_json(opt, r, write));
+  if (opt.json) print_json(fold_json(opt, r, write));
   if (r.replay && !r.replay->status.ok()) return kInvalidSequence;
   return reached ? kOk : kNoPlan;
 }

@@ -72,7 +72,12 @@ bool set_goal(const PlanArgs& opt, const geometry::CreasePattern& pattern, plann
   const auto g = geometry::goal_from_angles(geometry::ClosureSystem(pattern), parse_goal_angles(pattern, opt.goal_angles), why);
   if (!g) {
     std::cerr << "no plan: no closed state holds the angles of --goal-angles (" << why << ")\n";
-    if (opt.json) print_json({{"solved", false}, {"message", "no closed goal state: " + why}});
+    if (opt.json) {
+      nlohmann::json j{{"solved", false}};
+      // The nearest closed state was not found; that proves no such state exists only sometimes.
+      add_status(j, {geometry::StatusCode::NoProgress, "no closed goal state: " + why});
+      print_json(j);
+    }
     return false;
   }
   req.goal = *g;

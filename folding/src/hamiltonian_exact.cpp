@@ -208,9 +208,8 @@ std::optional<HamiltonianResult> unsearchable(const CellGraph& g, const ExactOpt
   if (n == 0) return none("the shape is empty");
   if (n > kMaxExactCells) {
     HamiltonianResult r;
-    r.status.code = StatusCode::LimitReached;
-    r.status.message = "too large for the exact search (" + std::to_string(n) + " cells > " + std::to_string(kMaxExactCells) +
-                       "); use the refinement";
+    r.status = {StatusCode::LimitReached, "too large for the exact search (" + std::to_string(n) + " cells > " +
+                                              std::to_string(kMaxExactCells) + "); use the refinement"};
     return r;
   }
   if (const std::size_t k = component_count(g); k > 1)

@@ -151,8 +151,8 @@ HamiltonianResult refined(const std::vector<std::uint8_t>& cells, int nx, int ny
     return r;
   }
   if (n > kMaxRefineCells) {
-    r.status.code = geometry::StatusCode::LimitReached;
-    r.status.message = "too large to refine (" + std::to_string(n) + " cells > " + std::to_string(kMaxRefineCells) + ")";
+    r.status = {geometry::StatusCode::LimitReached,
+                "too large to refine (" + std::to_string(n) + " cells > " + std::to_string(kMaxRefineCells) + ")"};
     return r;
   }
   const detail::CellGraph g = detail::make_graph(cells, nx, ny, nz);

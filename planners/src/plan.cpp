@@ -282,7 +282,14 @@ PlanResult plan(const PlanRequest& req) {
                                                  ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition())));
   result.time = elapsed(t0);
   if (status != ob::PlannerStatus::EXACT_SOLUTION) {
-    result.status = {geometry::StatusCode::LimitReached, "no plan found within " + std::to_string(req.time) + " s"};
+    // The time ran out (OMPL's TIMEOUT, or only an approximate path in that time); anything else
+    // OMPL reports is named as it says it.
+    if (status == ob::PlannerStatus::TIMEOUT || status == ob::PlannerStatus::APPROXIMATE_SOLUTION)
+      result.status = {geometry::StatusCode::LimitReached, "no plan found within " + std::to_string(req.time) + " s"};
+    else if (status == ob::PlannerStatus::INVALID_START || status == ob::PlannerStatus::INVALID_GOAL)
+      result.status = {geometry::StatusCode::InvalidInput, "no plan: OMPL reports " + status.asString()};
+    else
+      result.status = {geometry::StatusCode::NoProgress, "no plan: OMPL reports " + status.asString()};
     return result;
   }
   og::PathGeometric path = ss.getSolutionPath();

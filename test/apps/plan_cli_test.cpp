@@ -103,6 +103,15 @@ TEST(PlanCli, GoalAnglesForSomeCreases) {
     EXPECT_EQ(foldkit({"plan", c.pattern, "--goal-angles", bad, "--time", "1", "-o", out}).exit, 2) << bad;
   EXPECT_EQ(foldkit({"plan", c.pattern, "--goal", c.goal, "--goal-angles", "1:30", "--time", "1", "-o", out}).exit, 2);
   EXPECT_EQ(foldkit({"plan", c.pattern, "--time", "1", "-o", out}).exit, 2);
+  // Four of five creases held near 180 degrees: one free crease cannot close three loop equations.
+  std::filesystem::remove(out);
+  const auto none = foldkit({"plan", c.pattern, "--goal-angles", "1:179,2:-179,3:179,4:-179", "--time", "1", "-o", out, "--json"});
+  EXPECT_EQ(none.exit, 4) << none.err;
+  const auto j = nlohmann::json::parse(none.out);
+  EXPECT_FALSE(j["solved"].get<bool>());
+  EXPECT_EQ(j["status"], "no-progress");
+  EXPECT_EQ(j["message"].get<std::string>().rfind("no closed goal state", 0), 0u);
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 }  // namespace

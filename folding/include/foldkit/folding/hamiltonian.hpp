@@ -22,6 +22,7 @@ constexpr std::size_t kMaxRefineCells = 2'500'000;
 
 // The shapes live in geometry (their files in io/shape_file.hpp); the names stay usable here.
 using geometry::Cell;
+using geometry::kMaxGridCells;
 using geometry::PixelShape;
 using geometry::VoxelShape;
 using geometry::refine;
