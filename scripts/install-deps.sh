@@ -26,6 +26,7 @@ if [ "$demo" -eq 0 ]; then
   packages+=(
     libbenchmark-dev libgtest-dev
     doxygen
+    libsuitesparse-dev
     python3-matplotlib
     ompl-demos
   )
