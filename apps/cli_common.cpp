@@ -16,21 +16,11 @@
 namespace foldkit::apps {
 
 FileKind kind_of(const std::string& path) {
-  const auto dot = path.rfind('.');
-  if (dot == std::string::npos) return FileKind::Unknown;
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (ext == "pmml") return FileKind::Pmml;
-  if (ext == "cmml") return FileKind::Cmml;
-  if (ext == "fold") return FileKind::Fold;
-  if (ext == "svg") return FileKind::Svg;
+  if (has_extension(path, ".pmml")) return FileKind::Pmml;
+  if (has_extension(path, ".cmml")) return FileKind::Cmml;
+  if (has_extension(path, ".fold")) return FileKind::Fold;
+  if (has_extension(path, ".svg")) return FileKind::Svg;
   return FileKind::Unknown;
-}
-
-bool has_extension(const std::string& path, const std::string& extension) {
-  if (path.size() < extension.size()) return false;
-  return std::equal(extension.begin(), extension.end(), path.end() - static_cast<std::ptrdiff_t>(extension.size()),
-                    [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b)); });
 }
 
 LoadedPattern load_pattern(const std::string& path, const geometry::BuildOptions& options) {

@@ -11,6 +11,7 @@
 #include "foldkit/geometry/crease_pattern.hpp"
 #include "foldkit/geometry/fold_sequence.hpp"
 #include "foldkit/geometry/status.hpp"
+#include "foldkit/io/file_name.hpp"
 
 namespace foldkit::apps {
 
@@ -46,8 +47,8 @@ struct UsageError : std::runtime_error {
 
 enum class FileKind { Pmml, Cmml, Fold, Svg, Unknown };
 FileKind kind_of(const std::string& path);
-// Whether `path` ends with `extension` (".csv"), ignoring case as kind_of() does.
-bool has_extension(const std::string& path, const std::string& extension);
+// Whether `path` ends with `extension` (".csv"), ignoring case; kind_of() is built on it.
+using io::has_extension;
 
 // A crease pattern from .pmml or .fold (throws ParseError; UsageError for other extensions).
 struct LoadedPattern {

@@ -40,6 +40,9 @@ def long_functions(limit):
 
 
 if __name__ == '__main__':
+    if len(sys.argv) > 2 or (len(sys.argv) == 2 and not sys.argv[1].isdigit()):
+        print('usage: python3 scripts/long-functions.py [N]   (N: a line count, default 80)', file=sys.stderr)
+        sys.exit(2)
     limit = int(sys.argv[1]) if len(sys.argv) > 1 else 80
     for n, path, line, head in long_functions(limit):
         print(f'{n:5d} {path}:{line} {head}')

@@ -191,6 +191,14 @@ Resolved resolve(const BenchOptions& o) {
   return r;
 }
 
+// The scene's space, planner setup and way out of its start; a scene whose way out collides is
+// broken (std::runtime_error), since every built-in scene must be plannable.
+PlanSetup scene_setup(const BenchScene& scene) {
+  PlanSetup setup = make_plan_setup(scene.request, true);
+  if (!setup.blocked.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.blocked);
+  return setup;
+}
+
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -231,8 +239,7 @@ class SceneRun {
   BenchSceneResult run() {
     if (std::all_of(runs_of_.begin(), runs_of_.end(), [](const auto& v) { return v.empty(); })) return result_;
     scene_ = make_bench_scene(result_.scene, o_.seed);
-    setup_ = make_plan_setup(scene_.request, true);
-    if (!setup_.blocked.empty()) throw std::runtime_error("scene " + scene_.name + ": " + setup_.blocked);
+    setup_ = scene_setup(scene_);
     // The planners, in the suite's order; those with as many runs in this shard share one
     // Benchmark (each Benchmark estimates the space's properties for its log header: seconds).
     for (const auto& name : res_.planners) {
@@ -368,8 +375,7 @@ std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::
   std::vector<ErrorVsTimeRow> rows;
   for (const auto& scene_name : res.scenes) {
     const BenchScene scene = make_bench_scene(scene_name, o.seed);
-    const PlanSetup setup = make_plan_setup(scene.request, true);
-    if (!setup.blocked.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.blocked);
+    const PlanSetup setup = scene_setup(scene);
     const double start_distance = (setup.start.angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
     for (const auto& name : res.planners) {
       for (double limit : limits)

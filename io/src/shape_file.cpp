@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/file_name.hpp"
 #include "foldkit/io/parse_error.hpp"
 
 namespace foldkit::io {
@@ -200,18 +201,6 @@ PixelShape parse_pbm(const std::string& bytes, const std::string& file) {
   if (!any_filled(shape.cells)) throw ParseError(file, header_line, "the image has no filled pixel (1)");
   return shape;
 }
-
-namespace {
-
-// Extensions are matched ignoring case (shape.PBM is a PBM), as the CLI matches them.
-bool has_extension(const std::string& path, const char (&extension)[5]) {
-  if (path.size() < 4) return false;
-  for (std::size_t k = 0; k < 4; ++k)
-    if (std::tolower(static_cast<unsigned char>(path[path.size() - 4 + k])) != extension[k]) return false;
-  return true;
-}
-
-}  // namespace
 
 bool is_voxel_path(const std::string& path) { return has_extension(path, ".vox"); }
 
