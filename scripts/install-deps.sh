@@ -28,6 +28,7 @@ if [ "$demo" -eq 0 ]; then
     doxygen
     libsuitesparse-dev
     python3-matplotlib
+    pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest
     ompl-demos
   )
 fi

@@ -30,3 +30,10 @@ if cmake -S "$source_dir/examples/use_foldkit" -B "$prefix/no-planners" -DCMAKE_
   exit 1
 fi
 "$prefix/install/bin/foldkit" --version
+# The Python package, when built: importable from the installed tree alone.
+module=$(find "$prefix/install" -name '_foldkit*.so' | head -n 1)
+if [ -n "$module" ]; then
+  site=$(dirname "$(dirname "$module")")
+  (cd "$prefix" && PYTHONPATH="$site" /usr/bin/python3 -c \
+    "import foldkit; p = foldkit.generators.miura(3, 3); s = foldkit.fold(p, 0.3).states[-1]; assert foldkit.dof(p, s).dof == 1; print('python:', p)")
+fi

@@ -1,0 +1,84 @@
+// foldkit.plan: sampling-based planning on the crease pattern's closure manifold (OMPL).
+#include "bindings.hpp"
+#include "foldkit/planners/plan.hpp"
+#include "foldkit/planners/planner_factory.hpp"
+#include "foldkit/simulation/simulate.hpp"
+
+namespace foldkit::python {
+namespace {
+
+using planners::PlanResult;
+
+void bind_result(py::module_& m) {
+  py::class_<PlanResult>(m, "PlanResult", "A plan: the waypoints from start to goal, their CMML, and the simulator's replay.")
+      .def_readonly("status", &PlanResult::status, "'success' when solved (and the replay is valid).")
+      .def_property_readonly("solved", [](const PlanResult& r) { return r.status.ok(); }, "Whether a valid plan was found.")
+      .def_readonly("planner", &PlanResult::planner, "The planner's name.")
+      .def_readonly("space", &PlanResult::space, "The space searched: 'single-vertex', 'projected', 'atlas' or 'tangent-bundle'.")
+      .def_readonly("time", &PlanResult::time, "Seconds the planner ran.")
+      .def_readonly("path_length", &PlanResult::path_length, "Σ joint-angle distance between waypoints, radians.")
+      .def_readonly("max_closure_error", &PlanResult::max_closure_error, "Largest loop error over waypoints and replay, radians.")
+      .def_property_readonly(
+          "waypoints", [](const PlanResult& r) {
+            const Eigen::Index joints = r.waypoints.empty() ? 0 : r.waypoints.front().angles.size();
+            return states_array(r.waypoints, joints);
+          },
+          "Start … goal, shape (waypoints, joints), radians; at most waypoint_step apart per joint.")
+      .def_readonly("sequence", &PlanResult::sequence, "The plan as a FoldSequence from the flat sheet.")
+      .def_readonly("replay", &PlanResult::replay, "The simulator's SimulationReport of the sequence, or None when not replayed.");
+}
+
+}  // namespace
+
+void bind_plan(py::module_& m) {
+  bind_result(m);
+  m.def(
+      "plan",
+      [](const geometry::CreasePattern& p, const Eigen::VectorXd& goal, const py::object& start, const std::string& space,
+         const std::string& planner, double time, unsigned seed, bool collisions, bool use_assignment, bool simplify,
+         double search_margin, double waypoint_step, double velocity, bool replay) {
+        require(std::isfinite(time) && time > 0.0, "time", "positive and finite", time);
+        require(std::isfinite(waypoint_step) && waypoint_step > 0.0, "waypoint_step", "positive and finite", waypoint_step);
+        require(std::isfinite(velocity) && velocity > 0.0, "velocity", "positive and finite", velocity);
+        require(std::isfinite(search_margin), "search_margin", "finite (negative: automatic)", search_margin);
+        planners::PlanRequest req;
+        req.pattern = &p;
+        req.goal = to_state(p, goal, "goal");
+        if (!start.is_none()) {
+          if (py::isinstance<geometry::FoldSequence>(start)) {
+            req.start_sequence = start.cast<geometry::FoldSequence>();
+            for (const auto& d : geometry::check_sequence(p, req.start_sequence))
+              if (d.severity == geometry::Severity::Error) throw py::value_error("start: " + geometry::format(d, "sequence"));
+            req.start = geometry::end_state(p, req.start_sequence);
+          } else {
+            req.start = state_or_flat(p, start, "start");
+          }
+        }
+        req.space = planners::parse_space(space);
+        req.planner = planners::canonical_planner(planner);
+        req.time = time;
+        req.seed = seed;
+        req.collisions = collisions;
+        req.use_assignment = use_assignment;
+        req.simplify = simplify;
+        req.search_margin = search_margin;
+        req.waypoint_step = waypoint_step;
+        req.velocity = velocity;
+        req.replay = replay;
+        py::gil_scoped_release release;
+        return planners::plan(req);
+      },
+      py::arg("pattern"), py::arg("goal"), py::arg("start") = py::none(), py::arg("space") = "auto",
+      py::arg("planner") = "RRTConnect", py::arg("time") = 5.0, py::arg("seed") = 1u, py::arg("collisions") = true,
+      py::arg("use_assignment") = true, py::arg("simplify") = true, py::arg("search_margin") = -1.0,
+      py::arg("waypoint_step") = 0.02, py::arg("velocity") = 1.0, py::arg("replay") = true,
+      "Plans from `start` to the closed state `goal`. `start` is None (flat), a FoldSequence (its end state is the start; "
+      "the plan's sequence begins with it, as the CLI's --start CMML), or a closed state: then the plan's sequence reaches "
+      "it from flat in one straight event, which the replay accepts only where that line stays closed (pass the "
+      "FoldSequence otherwise). Planning runs "
+      "an OMPL planner by name, as `foldkit plan`: space 'auto', 'single-vertex', 'projected', 'atlas' or "
+      "'tangent-bundle'; `time` seconds at most; the same seed gives the same plan. Returns a PlanResult (check `solved`).");
+  m.def("planners", &planners::planner_names, "The planner names plan() accepts.");
+}
+
+}  // namespace foldkit::python

@@ -1,0 +1,48 @@
+// What the binding files share: one bind_* function per file, called by module.cpp, and the
+// conversions every file needs (states, statuses, patterns kept alive by what refers to them).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "foldkit/geometry/crease_pattern.hpp"
+#include "foldkit/geometry/fold_sequence.hpp"
+#include "foldkit/geometry/fold_state.hpp"
+#include "foldkit/geometry/status.hpp"
+
+namespace foldkit::python {
+
+namespace py = pybind11;
+
+void bind_pattern(py::module_& m);
+void bind_io(py::module_& m);
+void bind_kinematics(py::module_& m);
+void bind_simulate(py::module_& m);
+void bind_plan(py::module_& m);
+void bind_algorithms(py::module_& m);
+
+/// Checks that `angles` has one finite angle per joint of `pattern` (ValueError otherwise) and
+/// wraps it. `what` names the argument in the message ("state", "goal", …).
+geometry::FoldState to_state(const geometry::CreasePattern& pattern, const Eigen::VectorXd& angles, const char* what);
+
+/// The flat state when `angles` is None, else to_state().
+geometry::FoldState state_or_flat(const geometry::CreasePattern& pattern, const py::object& angles, const char* what);
+
+/// States as a (len(states), joints) float array, radians; `joints` gives the width when there are none.
+py::array_t<double> states_array(const std::vector<geometry::FoldState>& states, Eigen::Index joints);
+
+/// Rows of a 2-D float array as states of `pattern` (checked by to_state()).
+std::vector<geometry::FoldState> states_from_array(const geometry::CreasePattern& pattern, const py::object& rows,
+                                                   const char* what);
+
+/// Each actor's 4×4 pose at each state: shape (states, actors, 4, 4), pattern units.
+py::array_t<double> poses_array(const geometry::CreasePattern& pattern, const std::vector<geometry::FoldState>& states);
+
+/// Raises ValueError("NAME must be WHAT (got VALUE)") unless `ok`.
+void require(bool ok, const char* name, const char* what, double value);
+
+}  // namespace foldkit::python

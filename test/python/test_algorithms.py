@@ -1,0 +1,176 @@
+"""plan, fold, stiffness, Carpenter's rule, Hamiltonian paths: the CLI's numbers on the same
+files, and invariants checked here with numpy."""
+import math
+
+import numpy as np
+import pytest
+
+import foldkit
+
+
+def test_fold_matches_cli(cli, tmp_path):
+    p = foldkit.generators.miura(6, 6)
+    pmml = tmp_path / "m.pmml"
+    foldkit.write_pmml(str(pmml), p)
+    rc, expected, err = cli("fold", pmml, "--fraction", 0.5, "-o", tmp_path / "f.cmml")
+    assert rc == 0, err
+    r = foldkit.fold(p, fraction=0.5)
+    assert r.reached and r.status.code == expected["status"]
+    assert r.steps == expected["steps"] and r.newton_iterations == expected["newton_iterations"]
+    assert r.dof == expected["dof"] == 1 and r.rank == expected["rank"]
+    assert r.fraction == pytest.approx(expected["fraction"], rel=1e-12)
+    assert r.max_closure_error == pytest.approx(expected["max_closure_error"], rel=1e-6, abs=1e-16)
+    assert r.replay is not None and r.replay.valid
+    assert r.states.shape == (r.steps + 1, len(p.joint_ids))
+    system = foldkit.ClosureSystem(p)
+    assert max(system.max_error(s) for s in r.states) <= 1e-10
+    np.testing.assert_allclose(r.states[-1], foldkit.read_state(p, str(tmp_path / "f.cmml")), atol=1e-9)
+
+
+def single_vertex_goal():
+    p = foldkit.generators.single_vertex([math.radians(a) for a in (50, 70, 60, 55, 65, 60)])
+    # No assignment on a generated vertex: fold along alternating mountain/valley velocities.
+    velocity = np.array([1.0, -1.0, 1.0, -1.0, 1.0, -1.0])
+    goal = foldkit.fold(p, fraction=0.6, velocity=velocity, collisions=False, replay=False).states[-1]
+    return p, goal
+
+
+def test_plan_single_vertex_matches_cli(cli, tmp_path):
+    p, goal = single_vertex_goal()
+    pmml, goal_cmml = tmp_path / "v.pmml", tmp_path / "goal.cmml"
+    foldkit.write_pmml(str(pmml), p)
+    foldkit.write_cmml(str(goal_cmml), foldkit.sequence_to(p, goal))
+    goal = foldkit.read_state(p, str(goal_cmml))
+    rc, expected, err = cli("plan", pmml, "--goal", goal_cmml, "--planner", "RRTConnect", "--time", 5, "--seed", 3,
+                            "-o", tmp_path / "plan.cmml")
+    assert rc == 0, err
+    r = foldkit.plan(p, goal, planner="RRTConnect", time=5, seed=3)
+    assert r.solved and r.space == expected["space"] == "single-vertex"
+    assert len(r.waypoints) == expected["waypoints"]
+    assert r.path_length == pytest.approx(expected["path_length"], rel=1e-9)
+    w = r.waypoints
+    np.testing.assert_allclose(w[0], 0, atol=1e-12)
+    np.testing.assert_allclose(w[-1], goal, atol=1e-6)
+    assert np.max(np.abs(np.diff(w, axis=0))) <= 0.02 + 1e-12
+    assert max(foldkit.closure_error(p, s) for s in w) <= 1e-6
+    assert r.replay.valid
+
+
+def test_plan_is_seeded_and_starts_anywhere():
+    p, goal = single_vertex_goal()
+    a = foldkit.plan(p, goal, seed=7, time=5)
+    b = foldkit.plan(p, goal, seed=7, time=5)
+    assert a.solved and np.array_equal(a.waypoints, b.waypoints)
+    # From a state part-way, reached from flat along the first plan's own closed waypoints.
+    half = a.waypoints[: len(a.waypoints) // 2 + 1]
+    c = foldkit.plan(p, goal, start=foldkit.path_sequence(p, half), seed=7, time=5)
+    assert c.solved, c.status
+    np.testing.assert_allclose(c.waypoints[0], half[-1], atol=1e-9)
+    assert c.replay.valid
+
+
+def test_stiffness_matches_cli(cli, data, tmp_path):
+    sheet = foldkit.generators.cube_sheet(1, tile=0.01)
+    pmml = tmp_path / "cube.pmml"
+    foldkit.write_pmml(str(pmml), sheet)
+    cmml, loadcase = data / "good" / "cube-fold.cmml", data / "good" / "cube-top-load.loadcase"
+    rc, expected, err = cli("stiffness", pmml, loadcase, "--state", cmml)
+    assert rc == 0, err
+    state = foldkit.read_state(sheet, str(cmml))
+    r = foldkit.stiffness(sheet, str(loadcase), state=state)
+    assert r.status.ok and r.status.code == expected["status"]
+    assert r.iterations == expected["iterations"]
+    assert r.max_displacement == pytest.approx(expected["max_displacement"], rel=1e-9)
+    lc = foldkit.read_load_case(str(loadcase))
+    assert foldkit.stiffness(sheet, lc, state=state).max_displacement == pytest.approx(r.max_displacement)
+    fixed = np.array(r.fixed)
+    assert np.all(r.displacements[fixed] == 0) and np.all(r.rotations[fixed] == 0)
+    assert np.max(np.linalg.norm(r.displacements, axis=1)) == pytest.approx(r.max_displacement)
+    assert r.module_ids == sheet.actor_ids
+
+
+def random_walk(n, seed):
+    """A self-avoiding lattice walk of n links, jittered, as a (n + 1, 2) array."""
+    rng = np.random.default_rng(seed)
+    while True:
+        pts, seen = [(0, 0)], {(0, 0)}
+        for _ in range(n):
+            x, y = pts[-1]
+            free = [q for q in ((x + 1, y), (x - 1, y), (x, y + 1), (x, y - 1)) if q not in seen]
+            if not free:
+                break
+            q = free[rng.integers(len(free))]
+            pts.append(q)
+            seen.add(q)
+        if len(pts) == n + 1:
+            return np.array(pts, float) + 0.1 * rng.uniform(-1, 1, (n + 1, 2))
+
+
+def test_carpenter_is_expansive_and_matches_cli(cli, tmp_path):
+    pts = random_walk(30, seed=2)
+    chain = tmp_path / "c.txt"
+    chain.write_text("".join(f"{x!r} {y!r}\n" for x, y in pts))
+    rc, expected, err = cli("carpenter", chain, "-o", tmp_path / "out.json")
+    assert rc == 0, err
+    r = foldkit.carpenter(foldkit.read_chain(str(chain)))
+    assert r.status.ok and r.steps == expected["steps"]
+    f = r.frames
+    np.testing.assert_allclose(f[0], pts, atol=1e-12)
+    bars = np.linalg.norm(np.diff(f, axis=1), axis=2)
+    np.testing.assert_allclose(bars, np.broadcast_to(bars[0], bars.shape), rtol=1e-6)
+    d = np.linalg.norm(f[:, :, None, :] - f[:, None, :, :], axis=3)
+    assert np.all(np.diff(d, axis=0) >= -1e-9)  # no distance decreases between frames
+    end = f[-1] - f[-1][0]
+    direction = end[-1] / np.linalg.norm(end[-1])
+    assert np.max(np.abs(end[:, 0] * direction[1] - end[:, 1] * direction[0])) < 1e-6  # straight
+
+
+def test_carpenter_convexifies_a_polygon():
+    arrow = np.array([[0, 0], [4, 0], [4, 4], [2, 1], [0, 4]], float)
+    r = foldkit.carpenter(arrow, closed=True)
+    assert r.status.ok and r.closed
+    last = r.frames[-1]
+    edges = np.roll(last, -1, axis=0) - last
+    cross = edges[:, 0] * np.roll(edges, -1, axis=0)[:, 1] - edges[:, 1] * np.roll(edges, -1, axis=0)[:, 0]
+    assert np.all(cross >= -1e-9) or np.all(cross <= 1e-9)
+
+
+def test_carpenter_vertex_flattens():
+    p, goal = single_vertex_goal()
+    r = foldkit.carpenter_vertex(p, goal)
+    assert r.status.ok
+    np.testing.assert_allclose(r.frames[0], goal, atol=1e-9)
+    assert np.max(np.abs(r.frames[-1])) < 1e-4
+    assert r.min_distance_growth >= -1e-9
+    assert foldkit.simulate(p, r.folding).valid
+
+
+def hamiltonian_path_ok(shape, path):
+    cells = {tuple(c) for c in np.argwhere(shape)[:, ::-1]}  # (x, y[, z])
+    steps = np.abs(np.diff(path, axis=0)).sum(axis=1)
+    return len(path) == len(cells) and {tuple(c) for c in path} == cells and np.all(steps == 1)
+
+
+def test_hamiltonian_paths(cli, tmp_path):
+    shape = np.array([[1, 1, 1, 0], [1, 1, 1, 1], [0, 1, 1, 1]], bool)
+    r = foldkit.hamiltonian(shape)
+    assert r.status.ok and hamiltonian_path_ok(shape, r.path)
+    grid = tmp_path / "s.txt"
+    grid.write_text("\n".join("".join("#" if c else "." for c in row) for row in shape) + "\n")
+    rc, expected, err = cli("hamiltonian", grid)
+    assert rc == 0 and expected["status"] == r.status.code, err
+    # A 3×3 block minus an edge cell leaves 5 cells of one colour and 3 of the other: no path.
+    no = np.ones((3, 3), bool)
+    no[0, 1] = False
+    assert foldkit.hamiltonian(no).status.code == "no-solution"
+    cycle = foldkit.hamiltonian(no, refine=True)
+    assert cycle.status.ok and cycle.cycle and len(cycle.path) == 4 * no.sum()
+    voxels = np.ones((2, 2, 3), bool)
+    v = foldkit.hamiltonian(voxels)
+    assert v.status.ok and v.path.shape == (12, 3) and hamiltonian_path_ok(voxels, v.path)
+
+
+def test_cube_chain_folds_validly():
+    sheet = foldkit.generators.cube_sheet(2)
+    seq = foldkit.fold_cube_chain(sheet, 2)
+    assert len(seq) > 0 and foldkit.simulate(sheet, seq).valid
