@@ -59,6 +59,13 @@ void bind_fold(py::module_& m) {
       "Bad options (e.g. max_step outside (0, 0.5]) raise ValueError.");
 }
 
+// One 3-vector of each module's result as the rows of a (modules, 3) array.
+Eigen::MatrixX3d module_rows(const analysis::SolveResult& r, Eigen::Vector3d analysis::ModuleResult::*field) {
+  Eigen::MatrixX3d rows(static_cast<Eigen::Index>(r.modules.size()), 3);
+  for (std::size_t i = 0; i < r.modules.size(); ++i) rows.row(static_cast<Eigen::Index>(i)) = (r.modules[i].*field).transpose();
+  return rows;
+}
+
 void bind_stiffness(py::module_& m) {
   using R = analysis::SolveResult;
   py::class_<R>(m, "StiffnessResult", "The lumped 6-DOF spring model's equilibrium under a load case.")
@@ -84,18 +91,10 @@ void bind_stiffness(py::module_& m) {
           },
           "Per module, whether it is held fixed.")
       .def_property_readonly(
-          "displacements", [](const R& r) {
-            Eigen::MatrixX3d d(static_cast<Eigen::Index>(r.modules.size()), 3);
-            for (std::size_t i = 0; i < r.modules.size(); ++i) d.row(static_cast<Eigen::Index>(i)) = r.modules[i].displacement.transpose();
-            return d;
-          },
+          "displacements", [](const R& r) { return module_rows(r, &analysis::ModuleResult::displacement); },
           "Centroid displacement of each module, shape (modules, 3), pattern units.")
       .def_property_readonly(
-          "rotations", [](const R& r) {
-            Eigen::MatrixX3d d(static_cast<Eigen::Index>(r.modules.size()), 3);
-            for (std::size_t i = 0; i < r.modules.size(); ++i) d.row(static_cast<Eigen::Index>(i)) = r.modules[i].rotation.transpose();
-            return d;
-          },
+          "rotations", [](const R& r) { return module_rows(r, &analysis::ModuleResult::rotation); },
           "Rotation vector of each module, shape (modules, 3), radians.");
   m.def(
       "stiffness",
