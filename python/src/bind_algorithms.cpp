@@ -31,9 +31,20 @@ void bind_fold(py::module_& m) {
       .def_readonly("dof", &R::dof, "Creases − rank there.")
       .def_readonly("rank_gap", &R::rank_gap, "Singular-value gap of the last rank decision.")
       .def_readonly("rank_method", &R::rank_method, "How the rank was decided.")
+      .def_readonly("rank_decisions", &R::rank_decisions, "Rank-revealing decisions made.")
+      .def_property_readonly(
+          "min_rank_gap", [](const R& r) { return r.rank_decisions ? py::object(py::float_(r.min_rank_gap)) : py::object(py::none()); },
+          "Smallest singular-value gap over the rank decisions, or None when none was made.")
+      .def_readonly("min_pivot_ratio", &R::min_pivot_ratio, "Smallest pivot ratio the rank screen saw.")
       .def_readonly("time", &R::time, "Seconds spent folding (no replay).")
       .def_readonly("sequence", &R::sequence, "The CMML of the states (FoldSequence).")
-      .def_readonly("replay", &R::replay, "The simulator's SimulationReport of the sequence, or None.");
+      .def_readonly("replay", &R::replay,
+                    "The simulator's SimulationReport of the sequence, or None. `status` stays 'success' when the target "
+                    "was reached even if the replay is rejected: check `replay.valid` too (as the CLI's replay_ok).")
+      .def("__repr__", [](const R& r) {
+        return "FoldResult(" + std::string(geometry::to_string(r.status.code)) + ", fraction=" + py::repr(py::float_(r.fraction)).cast<std::string>() +
+               ", steps=" + std::to_string(r.steps) + ")";
+      });
   m.def(
       "fold",
       [](const geometry::CreasePattern& p, double fraction, const py::object& velocity, double max_step, bool collisions, int max_steps,
@@ -95,7 +106,11 @@ void bind_stiffness(py::module_& m) {
           "Centroid displacement of each module, shape (modules, 3), pattern units.")
       .def_property_readonly(
           "rotations", [](const R& r) { return module_rows(r, &analysis::ModuleResult::rotation); },
-          "Rotation vector of each module, shape (modules, 3), radians.");
+          "Rotation vector of each module, shape (modules, 3), radians.")
+      .def("__repr__", [](const R& r) {
+        return "StiffnessResult(" + std::string(geometry::to_string(r.status.code)) + ", iterations=" + std::to_string(r.iterations) +
+               ", max_displacement=" + py::repr(py::float_(r.max_displacement)).cast<std::string>() + ")";
+      });
   m.def(
       "stiffness",
       [](const geometry::CreasePattern& p, const py::object& load_case, const py::object& state, bool linear, double detect_tolerance,

@@ -96,7 +96,10 @@ void bind_sequence(py::module_& m) {
             return states_array(geometry::event_states(p, s), static_cast<Eigen::Index>(p.joints().size()));
           },
           py::arg("pattern"), "The state before the first event and after each event, shape (events + 1, joints).")
-      .def("__len__", [](const FoldSequence& s) { return s.events.size(); }, "The number of events.");
+      .def("__len__", [](const FoldSequence& s) { return s.events.size(); }, "The number of events.")
+      .def("__repr__", [](const FoldSequence& s) {
+        return "<FoldSequence '" + s.title + "': " + std::to_string(s.events.size()) + " events>";
+      });
 
   m.def(
       "sequence_to", [](const geometry::CreasePattern& p, const Eigen::VectorXd& state, double velocity, const std::string& title) {

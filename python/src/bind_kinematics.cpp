@@ -63,7 +63,9 @@ void bind_closure_system(py::module_& m) {
           "max_error", [](const ClosureSystem& s, const Eigen::VectorXd& state) { return s.max_error(to_state(s.pattern(), state, "state")); },
           py::arg("state"), "The largest loop error at `state`, radians (the CLI's closure_error).")
       .def(
-          "loop_errors", [](const ClosureSystem& s, const Eigen::VectorXd& state) { return s.loop_errors(to_state(s.pattern(), state, "state")); },
+          "loop_errors", [](const ClosureSystem& s, const Eigen::VectorXd& state) {
+            return py::array(py::cast(s.loop_errors(to_state(s.pattern(), state, "state"))));
+          },
           py::arg("state"), "Each loop's error at `state`, radians.");
 }
 
@@ -108,7 +110,11 @@ void bind_projection(py::module_& m) {
                              "The last accepted state, radians.")
       .def_readonly("status", &geometry::ProjectionResult::status, "How it ended.")
       .def_readonly("iterations", &geometry::ProjectionResult::iterations, "Iterations taken.")
-      .def_readonly("error", &geometry::ProjectionResult::error, "Largest loop error at `state`, radians.");
+      .def_readonly("error", &geometry::ProjectionResult::error, "Largest loop error at `state`, radians.")
+      .def("__repr__", [](const geometry::ProjectionResult& r) {
+        return "ProjectionResult(" + std::string(geometry::to_string(r.status.code)) + ", iterations=" + std::to_string(r.iterations) +
+               ", error=" + py::repr(py::float_(r.error)).cast<std::string>() + ")";
+      });
   m.def(
       "project", [](const CreasePattern& p, const Eigen::VectorXd& state, double tolerance, int max_iterations, bool keep_signs) {
         require(std::isfinite(tolerance) && tolerance > 0.0, "tolerance", "positive and finite", tolerance);

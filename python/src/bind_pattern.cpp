@@ -151,8 +151,9 @@ void bind_crease_pattern(py::module_& m) {
                              "The interior vertices, each a VertexStar (its creases counter-clockwise and its sector angles).")
       .def_property_readonly(
           "boundary_vertices", [](const CreasePattern& p) {
-            std::vector<bool> b;
-            for (std::size_t v = 0; v < p.vertices().size(); ++v) b.push_back(p.is_boundary_vertex(static_cast<int>(v)));
+            py::array_t<bool> b(static_cast<py::ssize_t>(p.vertices().size()));
+            auto a = b.mutable_unchecked<1>();
+            for (py::ssize_t v = 0; v < a.shape(0); ++v) a(v) = p.is_boundary_vertex(static_cast<int>(v));
             return b;
           },
           "Per vertex, whether it lies on the sheet's boundary.")
@@ -249,7 +250,7 @@ void bind_tessellations(py::module_& g) {
       py::arg("rows") = 4, py::arg("cols") = 4, py::arg("a") = 1.0, py::arg("b") = 1.0, py::arg("angle") = M_PI / 3,
       py::arg("spring") = 1.0, py::arg("damping") = 0.1, py::arg("title") = "",
       "A Miura-ori of rows × cols parallelograms (column width a, row height b, parallelogram angle in radians), "
-      "mountain/valley assigned: 1 DOF.");
+      "mountain/valley assigned: 1 DOF once folded (the flat state is singular: foldkit.dof counts more there).");
   g.def(
       "waterbomb", [](int units, int rows, double spring, double damping, const std::string& title) {
         count(units, "units");

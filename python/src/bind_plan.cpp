@@ -25,7 +25,11 @@ void bind_result(py::module_& m) {
           },
           "Start … goal, shape (waypoints, joints), radians; at most waypoint_step apart per joint.")
       .def_readonly("sequence", &PlanResult::sequence, "The plan as a FoldSequence from the flat sheet.")
-      .def_readonly("replay", &PlanResult::replay, "The simulator's SimulationReport of the sequence, or None when not replayed.");
+      .def_readonly("replay", &PlanResult::replay, "The simulator's SimulationReport of the sequence, or None when not replayed.")
+      .def("__repr__", [](const PlanResult& r) {
+        return "PlanResult(" + std::string(geometry::to_string(r.status.code)) + ", " + r.planner + " in " + r.space + ", " +
+               std::to_string(r.waypoints.size()) + " waypoints)";
+      });
 }
 
 }  // namespace

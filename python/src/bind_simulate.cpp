@@ -76,7 +76,11 @@ void bind_report(py::module_& m) {
             return states_array(s, r.final_state.angles.size());
           },
           "Recorded states, shape (frames, joints), radians: every step, or with record_frames=False only each event's end.")
-      .def_property_readonly("final_state", [](const SimulationReport& r) { return r.final_state.angles; }, "The state after the last event.");
+      .def_property_readonly("final_state", [](const SimulationReport& r) { return r.final_state.angles; }, "The state after the last event.")
+      .def("__repr__", [](const SimulationReport& r) {
+        return "SimulationReport(" + std::string(geometry::to_string(r.status.code)) + ", " + std::to_string(r.steps) + " steps, " +
+               std::to_string(r.collision_count) + " collisions)";
+      });
 }
 
 }  // namespace

@@ -18,6 +18,9 @@ def test_fold_matches_cli(cli, tmp_path):
     assert r.reached and r.status.code == expected["status"]
     assert r.steps == expected["steps"] and r.newton_iterations == expected["newton_iterations"]
     assert r.dof == expected["dof"] == 1 and r.rank == expected["rank"]
+    assert r.rank_decisions == expected["rank_decisions"] and r.rank_method == expected["rank_method"]
+    assert r.min_pivot_ratio == pytest.approx(expected["min_pivot_ratio"], rel=1e-9)
+    assert (r.min_rank_gap is None) == (expected["min_rank_gap"] is None)
     assert r.fraction == pytest.approx(expected["fraction"], rel=1e-12)
     assert r.max_closure_error == pytest.approx(expected["max_closure_error"], rel=1e-6, abs=1e-16)
     assert r.replay is not None and r.replay.valid
