@@ -163,20 +163,31 @@ void ClosureSystem::evaluate(const FoldState& state, Eigen::VectorXd& r, Eigen::
   evaluate_into(state, r, &sink);
 }
 
-std::vector<double> ClosureSystem::loop_errors(const FoldState& state) const {
-  const Eigen::VectorXd r = residual(state);
+namespace {
+
+// One error per loop of a residual laid out as ClosureSystem's: 3 rows per vertex loop, then 6
+// (rotation, translation) per hole cycle.
+std::vector<double> errors_of(const Eigen::VectorXd& r, std::size_t loops, std::size_t cycles) {
   std::vector<double> out;
-  out.reserve(loops_.size() + cycles_.size());
-  for (std::size_t i = 0; i < loops_.size(); ++i) out.push_back(r.segment<3>(static_cast<Eigen::Index>(3 * i)).norm());
-  for (std::size_t i = 0; i < cycles_.size(); ++i) {
-    const Eigen::Index row = static_cast<Eigen::Index>(3 * loops_.size() + 6 * i);
+  out.reserve(loops + cycles);
+  for (std::size_t i = 0; i < loops; ++i) out.push_back(r.segment<3>(static_cast<Eigen::Index>(3 * i)).norm());
+  for (std::size_t i = 0; i < cycles; ++i) {
+    const Eigen::Index row = static_cast<Eigen::Index>(3 * loops + 6 * i);
     out.push_back(std::max(r.segment<3>(row).norm(), r.segment<3>(row + 3).norm()));
   }
   return out;
 }
 
-double ClosureSystem::max_error(const FoldState& state) const {
-  const std::vector<double> e = loop_errors(state);
+}  // namespace
+
+std::vector<double> ClosureSystem::loop_errors(const FoldState& state) const {
+  return errors_of(residual(state), loops_.size(), cycles_.size());
+}
+
+double ClosureSystem::max_error(const FoldState& state) const { return residual_error(residual(state)); }
+
+double ClosureSystem::residual_error(const Eigen::VectorXd& residual) const {
+  const std::vector<double> e = errors_of(residual, loops_.size(), cycles_.size());
   return e.empty() ? 0.0 : *std::max_element(e.begin(), e.end());
 }
 

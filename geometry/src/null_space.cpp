@@ -29,7 +29,8 @@ bool LeastNormSolver::factor(const Eigen::SparseMatrix<double>& jacobian, double
     ++analyses_;
   }
   ldlt_.factorize(a_);
-  return ldlt_.info() == Eigen::Success;
+  factored_ = ldlt_.info() == Eigen::Success;
+  return factored_;
 }
 
 Eigen::VectorXd LeastNormSolver::solve(const Eigen::VectorXd& b) const {
@@ -42,6 +43,14 @@ bool LeastNormSolver::min_norm_step(const Eigen::SparseMatrix<double>& jacobian,
                                     Eigen::VectorXd& step) {
   if (!factor(jacobian)) return false;
   step = -solve(jacobian.transpose() * residual);
+  return step.allFinite();
+}
+
+bool LeastNormSolver::chord_step(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& residual,
+                                 Eigen::VectorXd& step) const {
+  if (!factored_ || jacobian.cols() != a_.cols()) return false;
+  // No refinement: a chord step is approximate anyway, and the next iteration corrects it.
+  step = -ldlt_.solve(jacobian.transpose() * residual);
   return step.allFinite();
 }
 
@@ -59,6 +68,15 @@ NullSpaceVelocity LeastNormSolver::project_onto_null_space(const Eigen::SparseMa
     t.pivot_ratio = 0.0;
     return t;
   }
+  t.velocity = eps_ * solve(desired);
+  count_pivots(t);
+  return t;
+}
+
+NullSpaceVelocity LeastNormSolver::project_with_last_factor(const Eigen::VectorXd& desired) const {
+  if (!factored_ || desired.size() != a_.cols())
+    throw std::logic_error("LeastNormSolver::project_with_last_factor: no factorisation of this size");
+  NullSpaceVelocity t;
   t.velocity = eps_ * solve(desired);
   count_pivots(t);
   return t;

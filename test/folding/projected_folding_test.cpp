@@ -243,6 +243,42 @@ TEST(ProjectedFolding, StripStopsAtTheCollision) {
   EXPECT_EQ(fold_projected(p, o).status.code, StatusCode::Success);
 }
 
+// The chord corrector (one factorisation per step) and the corrector that refactors at every
+// Newton iterate stop at the same tolerance. On a 1-DOF pattern (Miura-ori of several shapes) the
+// closed states form one curve, so both walk it (every state closed to 1e-10), each leaving the
+// prediction in its own direction and so spacing its states a little differently along it (by a
+// quarter of a step after 300 steps), and both end where it reaches the target fraction. On a
+// many-DOF pattern (waterbomb) each lands on its own nearby closed states; both paths must be
+// valid.
+TEST(ProjectedFolding, ChordCorrectorWalksTheSameCurve) {
+  struct Case {
+    geo::PatternSpec spec;
+    double fraction;
+    double tolerance;  // largest difference of the two paths' end states; < 0: not compared
+  };
+  std::vector<Case> cases = {{gen::miura(3, 5), 0.9, 1e-8},
+                             {gen::miura(8, 8, 1.0, 1.5, 0.9), 0.8, 1e-8},
+                             {gen::miura(12, 6, 0.7, 1.0, 1.3), 0.6, 1e-8},
+                             {gen::waterbomb(2, 2), 0.3, -1.0}};
+  for (const Case& c : cases) {
+    const geo::CreasePattern p = geo::build_or_throw(c.spec);
+    ProjectedFoldingOptions o;
+    o.target_fraction = c.fraction;
+    const ProjectedFoldingResult chord = fold_projected(p, o);
+    o.chord_corrector = false;
+    const ProjectedFoldingResult full = fold_projected(p, o);
+    SCOPED_TRACE(p.title());
+    ASSERT_EQ(chord.status.code, full.status.code) << chord.status.message << " / " << full.status.message;
+    ASSERT_TRUE(chord.status.ok()) << chord.status.message;
+    expect_valid_path(p, chord, o.max_step);
+    expect_assignment_kept(p, chord);
+    expect_valid_path(p, full, o.max_step);
+    if (c.tolerance < 0.0) continue;
+    EXPECT_LE(std::abs(chord.steps - full.steps), 1);
+    EXPECT_LE((chord.states.back().angles - full.states.back().angles).cwiseAbs().maxCoeff(), c.tolerance);
+  }
+}
+
 TEST(ProjectedFolding, SameInputSameOutput) {
   const geo::CreasePattern p = geo::build_or_throw(gen::miura(3, 3));
   ProjectedFoldingOptions o;

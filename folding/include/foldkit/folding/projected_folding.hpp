@@ -45,6 +45,11 @@ struct ProjectedFoldingOptions {
   /// A state is singular when its smallest kept singular value falls below this × σ_max (screened
   /// by √(smallest kept pivot / largest), confirmed by singular values). At least 0.
   double singular_ratio = 1e-7;
+  /// Correct each step with chord iterations on the factorisation the step's tangent was
+  /// computed with (one factorisation per step; refactored only when they stall), instead of
+  /// refactoring at every Newton iterate (false: the method before, kept for comparison in
+  /// benchmarks/bench_projected_folding.cpp). Both stop at the same closure tolerance.
+  bool chord_corrector = true;
   /// Replay the CMML in the simulator (default simulation options, collisions as above) when the
   /// path has more than the flat state.
   bool replay = true;

@@ -57,6 +57,9 @@ class ClosureSystem {
   std::vector<double> loop_errors(const FoldState& state) const;
   /// The largest of loop_errors(); 0 for a pattern without loops.
   double max_error(const FoldState& state) const;
+  /// max_error() of the state a residual was computed at (by residual() or evaluate()), read off
+  /// the residual without multiplying the loops out again.
+  double residual_error(const Eigen::VectorXd& residual) const;
 
  private:
   struct VertexLoop {

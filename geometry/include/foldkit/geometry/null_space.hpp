@@ -71,6 +71,23 @@ class LeastNormSolver {
   /// @return false when the factorisation fails or the step is not finite
   bool min_norm_step(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& residual, Eigen::VectorXd& step);
 
+  /// project_onto_null_space() of the Jacobian last factored (by project_onto_null_space,
+  /// min_norm_step or decide_rank), not factoring again: for a caller whose last factorisation
+  /// was at a point close enough to the one it needs the projection at (a path follower's
+  /// prediction of the state it then corrected to).
+  /// @param desired  w, size = the factored Jacobian's columns
+  /// @throws std::logic_error when nothing is factored or the size differs
+  NullSpaceVelocity project_with_last_factor(const Eigen::VectorXd& desired) const;
+  /// A chord step: the least-norm step with the factorisation the last call made, not factoring
+  /// again, −(J₀ᵀJ₀ + εI)⁻¹Jᵀr where J₀ is the Jacobian last factored (by project_onto_null_space,
+  /// min_norm_step or decide_rank) and `jacobian` should be J₀. Newton's method with its Jacobian
+  /// frozen converges linearly near J₀'s point instead of quadratically, for two triangular solves
+  /// per iteration instead of a factorisation.
+  /// @param jacobian  J₀, rows × n
+  /// @param residual  r at the current iterate, size rows
+  /// @param step      set to the step, size n
+  /// @return false when nothing is factored yet or the step is not finite
+  bool chord_step(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& residual, Eigen::VectorXd& step) const;
   /// J's numerical rank: singular values above relative_tolerance·max(σ_max, scale_floor) count
   /// (scale_floor: the size of an entry of J that is not rounding, so that a J zero to rounding
   /// has rank 0; 0 leaves the tolerance purely relative). Up to
@@ -105,6 +122,7 @@ class LeastNormSolver {
   double eps_ = 0.0;
   std::vector<int> outer_, inner_;  // the pattern ldlt_ was analysed for
   int analyses_ = 0;
+  bool factored_ = false;  // ldlt_ holds a successful factorisation
 };
 
 /// One-off form of LeastNormSolver::project_onto_null_space (a fresh analysis each call).
