@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <ostream>
 
 #include <ompl/base/ProjectionEvaluator.h>
@@ -73,8 +74,22 @@ void SingleVertexStateSpace::complete(StateType* s, int branch) const {
   for (std::size_t j = 0; j < n_; ++j) f.angles[static_cast<Eigen::Index>(j)] = s->angles[j];
   s->branch = branch >= 0 ? 1 : -1;
   s->closed = chain_->solve(f, s->branch);
-  if (s->closed)
+  if (s->closed) {
     for (int j : chain_->passive_joints()) s->angles[j] = f.angles[j];
+  } else {
+    set_open(s, s->branch);
+  }
+}
+
+// A state without a root gets passives that depend on its branch alone (middle one at ±π, far
+// from where the branches meet; the others 0), not on where the computation started: then
+// interpolating on from such a state gives what interpolating straight there gives
+// (StateSpace::sanityChecks, "continued interpolation"). The validity checker rejects it anyway.
+void SingleVertexStateSpace::set_open(StateType* s, int branch) const {
+  s->branch = branch >= 0 ? 1 : -1;
+  s->closed = false;
+  for (int j : chain_->passive_joints()) s->angles[j] = 0.0;
+  s->angles[chain_->passive_joints()[1]] = s->branch * M_PI;
 }
 
 bool SingleVertexStateSpace::from_fold_state(const geometry::FoldState& angles, ob::State* state, double tolerance) const {
@@ -161,11 +176,10 @@ void SingleVertexStateSpace::interpolate(const ob::State* from, const ob::State*
   if (t <= 0.0) return copyState(state, from);
   if (t >= 1.0) return copyState(state, to);
   auto* s = state->as<StateType>();
+  // Nothing of `from` or `to` is read after its own angle is written, so `state` may be either
+  // (OMPL's planners pass `from` again). The passives are solved even from a state that is not
+  // closed (see set_open).
   for (int j : chain_->active_joints()) s->angles[j] = f->angles[j] + t * (g->angles[j] - f->angles[j]);
-  if (!f->closed || !g->closed) {
-    s->closed = false;
-    return;
-  }
   int branch = f->branch;
   if (f->branch != g->branch) {
     const int middle = chain_->passive_joints()[1];
@@ -175,15 +189,31 @@ void SingleVertexStateSpace::interpolate(const ob::State* from, const ob::State*
       // Two branches that do not meet on this segment: no continuous motion joins them along
       // it. Saying so here (rather than following the from-branch, which never gets closer to
       // the to-state) keeps planners from creeping towards the other branch forever.
-      for (int j : chain_->passive_joints()) s->angles[j] = f->angles[j];
-      s->branch = f->branch;
-      s->closed = false;
+      set_open(s, f->branch);
       return;
     }
   }
-  // Passive angles start from the from-state's (solve overwrites them when a root exists).
-  for (int j : chain_->passive_joints()) s->angles[j] = f->angles[j];
   complete(s, branch);
+}
+
+unsigned int SingleVertexStateSpace::getSerializationLength() const {
+  return static_cast<unsigned int>(n_ * sizeof(double) + sizeof(int) + 1);
+}
+
+void SingleVertexStateSpace::serialize(void* serialization, const ob::State* state) const {
+  const auto* s = state->as<StateType>();
+  auto* out = static_cast<char*>(serialization);
+  std::memcpy(out, s->angles, n_ * sizeof(double));
+  std::memcpy(out + n_ * sizeof(double), &s->branch, sizeof(int));
+  out[n_ * sizeof(double) + sizeof(int)] = s->closed ? 1 : 0;
+}
+
+void SingleVertexStateSpace::deserialize(ob::State* state, const void* serialization) const {
+  auto* s = state->as<StateType>();
+  const auto* in = static_cast<const char*>(serialization);
+  std::memcpy(s->angles, in, n_ * sizeof(double));
+  std::memcpy(&s->branch, in + n_ * sizeof(double), sizeof(int));
+  s->closed = in[n_ * sizeof(double) + sizeof(int)] != 0;
 }
 
 ob::StateSamplerPtr SingleVertexStateSpace::allocDefaultStateSampler() const {

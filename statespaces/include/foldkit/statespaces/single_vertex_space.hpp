@@ -64,7 +64,8 @@ class SingleVertexStateSpace : public ompl::base::StateSpace {
   /// The fold angles of `state` (one per joint, radians), closed or not.
   geometry::FoldState to_fold_state(const ompl::base::State* state) const;
   /// Solves the passives of `state` (actives already set) on `branch` (+1 / −1; 0 counts as +1);
-  /// sets `branch` and `closed`.
+  /// sets `branch` and `closed`. Without a root the passives are set to values of the branch
+  /// alone (the middle one ±π, the others 0).
   void complete(StateType* state, int branch) const;
 
   /// n − 3: the number of active creases.
@@ -88,6 +89,14 @@ class SingleVertexStateSpace : public ompl::base::StateSpace {
   /// The state a fraction `t` of the way from `from` to `to`, as described for the class.
   void interpolate(const ompl::base::State* from, const ompl::base::State* to, double t,
                    ompl::base::State* state) const override;
+  /// Bytes serialize() writes: the angles, the branch and `closed`.
+  unsigned int getSerializationLength() const override;
+  /// Writes the state to `serialization` (getSerializationLength() bytes; the machine's own
+  /// representation, as OMPL's RealVectorStateSpace does), for PlannerDataStorage and
+  /// experience-based planners.
+  void serialize(void* serialization, const ompl::base::State* state) const override;
+  /// Reads a state serialize() wrote.
+  void deserialize(ompl::base::State* state, const void* serialization) const override;
   /// A SingleVertexSampler.
   ompl::base::StateSamplerPtr allocDefaultStateSampler() const override;
   /// A new state, all angles 0, branch +1, closed.
@@ -103,6 +112,7 @@ class SingleVertexStateSpace : public ompl::base::StateSpace {
   void registerProjections() override;
 
  private:
+  void set_open(StateType* state, int branch) const;  // no root: canonical passives
   std::shared_ptr<const SingleVertexChain> chain_;
   AngleBounds bounds_;
   std::size_t n_;
