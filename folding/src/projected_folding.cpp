@@ -111,7 +111,6 @@ class Folder {
     if (step && opt_.chord_corrector) {
       const Corrected c = chord_correct(guess);
       if (c.ok) return c;
-      fresh_factor_ = false;
     }
     FoldState s = guess;
     Eigen::VectorXd r, delta;
@@ -133,7 +132,7 @@ class Folder {
 
   // One Newton step from `guess` on J(guess), then chord steps on its factorisation; not ok when
   // the error stops shrinking tenfold, a crease crosses flat, or ten iterations do not converge.
-  // Leaves J(guess)'s factorisation in the solver (fresh_factor_) when it is ok.
+  // Sets fresh_factor_ when it is ok after factoring J(guess).
   Corrected chord_correct(const FoldState& guess) {
     FoldState s = guess;
     Eigen::VectorXd r, delta;
@@ -141,7 +140,6 @@ class Folder {
     double error = system_.residual_error(r);
     if (error <= po_.tolerance) return {s, true, 0, error};
     if (!solver_.min_norm_step(factored_jacobian_, r, delta)) return {s, false, 0, error};
-    fresh_factor_ = true;
     for (int it = 1; it <= 10; ++it) {
       s.angles += delta;
       ++result_.newton_iterations;
@@ -149,7 +147,10 @@ class Folder {
       r = system_.residual(s);
       const double previous = error;
       error = system_.residual_error(r);
-      if (error <= po_.tolerance) return {s, true, it, error};
+      if (error <= po_.tolerance) {
+        fresh_factor_ = true;
+        return {s, true, it, error};
+      }
       if (!(error < 0.1 * previous) || !solver_.chord_step(factored_jacobian_, r, delta)) break;
     }
     return {s, false, 0, error};

@@ -21,7 +21,7 @@ void bind_fold(py::module_& m) {
       .def_readonly("status", &R::status, "'success' when the target fraction was reached; else why it stopped.")
       .def_property_readonly("reached", [](const R& r) { return r.status.ok(); }, "Whether the target fraction was reached.")
       .def_property_readonly(
-          "states", [](const R& r) { return states_array(r.states, r.states.empty() ? 0 : r.states.front().angles.size()); },
+          "states", [](const R& r) { return states_array(r.states); },
           "Flat, then every accepted state, shape (steps + 1, joints), radians.")
       .def_readonly("fraction", &R::fraction, "Largest |fold angle| / π at the last state.")
       .def_readonly("max_closure_error", &R::max_closure_error, "Largest loop error over the states, radians.")
@@ -115,7 +115,7 @@ void bind_stiffness(py::module_& m) {
       "stiffness",
       [](const geometry::CreasePattern& p, const py::object& load_case, const py::object& state, bool linear, double detect_tolerance,
          int max_iterations) {
-        require(std::isfinite(detect_tolerance) && detect_tolerance > 0.0, "detect_tolerance", "positive and finite", detect_tolerance);
+        require_positive(detect_tolerance, "detect_tolerance");
         require(max_iterations >= 1, "max_iterations", "at least 1", max_iterations);
         const bool from_file = py::isinstance<py::str>(load_case);
         const std::string name = from_file ? load_case.cast<std::string>() : std::string("<load case>");
@@ -185,7 +185,7 @@ void bind_carpenter(py::module_& m) {
   using S = folding::CarpenterSphericalResult;
   py::class_<S>(m, "CarpenterVertexResult", "A single vertex flattened by the spherical Carpenter's rule.")
       .def_readonly("status", &S::status, "'success' when flat.")
-      .def_property_readonly("frames", [](const S& r) { return states_array(r.frames, r.frames.empty() ? 0 : r.frames.front().angles.size()); },
+      .def_property_readonly("frames", [](const S& r) { return states_array(r.frames); },
                              "Folded input … flat, shape (frames, joints), radians.")
       .def_readonly("steps", &S::steps, "LP steps taken.")
       .def_readonly("max_sector_error", &S::max_sector_error, "Largest sector-angle error, radians.")
@@ -275,7 +275,7 @@ void bind_hamiltonian(py::module_& m) {
   m.def(
       "fold_cube_chain", [](const geometry::CreasePattern& sheet, int cubes, double velocity) {
         require(cubes >= 1, "cubes", "at least 1", cubes);
-        require(std::isfinite(velocity) && velocity > 0.0, "velocity", "positive and finite", velocity);
+        require_positive(velocity, "velocity");
         return folding::fold_cube_chain(sheet, cubes, velocity);
       },
       py::arg("sheet"), py::arg("cubes"), py::arg("velocity") = 1.0,

@@ -40,6 +40,14 @@ geometry::BuildOptions build_options(double merge_tolerance, bool auto_joints) {
   return o;
 }
 
+// The key frame and frames write_fold adds, from Python arguments (None: left out).
+io::FoldExport fold_export(const geometry::CreasePattern& p, const py::object& state, const py::object& frames) {
+  io::FoldExport e;
+  if (!state.is_none()) e.state = state_or_flat(p, state, "state");
+  if (!frames.is_none()) e.frames = states_from_array(p, frames, "frames");
+  return e;
+}
+
 FoldFile fold_file(io::FoldImport f, const std::string& name) {
   const auto joints = static_cast<Eigen::Index>(f.pattern.joints().size());
   std::vector<std::string> warnings;
@@ -52,7 +60,7 @@ void bind_sequence(py::module_& m) {
   py::class_<geometry::FoldCommand>(m, "FoldCommand", "One joint's fold in an event: towards `angle` at `velocity`.")
       .def(py::init([](int joint_id, double angle, double velocity) {
              require(std::isfinite(angle), "angle", "finite", angle);
-             require(std::isfinite(velocity) && velocity > 0.0, "velocity", "positive and finite", velocity);
+             require_positive(velocity, "velocity");
              return geometry::FoldCommand{joint_id, angle, velocity, 0};
            }),
            py::arg("joint_id"), py::arg("angle"), py::arg("velocity") = 1.0,
@@ -103,14 +111,14 @@ void bind_sequence(py::module_& m) {
 
   m.def(
       "sequence_to", [](const geometry::CreasePattern& p, const Eigen::VectorXd& state, double velocity, const std::string& title) {
-        require(std::isfinite(velocity) && velocity > 0.0, "velocity", "positive and finite", velocity);
+        require_positive(velocity, "velocity");
         return geometry::sequence_to(p, to_state(p, state, "state"), velocity, title);
       },
       py::arg("pattern"), py::arg("state"), py::arg("velocity") = M_PI / 6, py::arg("title") = "",
       "One event from flat to `state`, every joint arriving together (fastest at `velocity` rad/s).");
   m.def(
       "path_sequence", [](const geometry::CreasePattern& p, const py::object& waypoints, double max_velocity, const std::string& title) {
-        require(std::isfinite(max_velocity) && max_velocity > 0.0, "max_velocity", "positive and finite", max_velocity);
+        require_positive(max_velocity, "max_velocity");
         return geometry::path_sequence(p, states_from_array(p, waypoints, "waypoints"), max_velocity, title);
       },
       py::arg("pattern"), py::arg("waypoints"), py::arg("max_velocity") = 1.0, py::arg("title") = "",
@@ -149,19 +157,13 @@ void bind_pattern_files(py::module_& m) {
       py::arg("text"), py::arg("name") = "<string>", "A FOLD file from its text.");
   m.def(
       "fold_text", [](const geometry::CreasePattern& p, const py::object& state, const py::object& frames) {
-        io::FoldExport e;
-        if (!state.is_none()) e.state = state_or_flat(p, state, "state");
-        if (!frames.is_none()) e.frames = states_from_array(p, frames, "frames");
-        return io::write_fold(p, e);
+        return io::write_fold(p, fold_export(p, state, frames));
       },
       py::arg("pattern"), py::arg("state") = py::none(), py::arg("frames") = py::none(),
       "The pattern as FOLD 1.2 text, with a key frame `state` and `frames` (rows) if given.");
   m.def(
       "write_fold", [](const std::string& path, const geometry::CreasePattern& p, const py::object& state, const py::object& frames) {
-        io::FoldExport e;
-        if (!state.is_none()) e.state = state_or_flat(p, state, "state");
-        if (!frames.is_none()) e.frames = states_from_array(p, frames, "frames");
-        io::write_file_atomic(path, io::write_fold(p, e));
+        io::write_file_atomic(path, io::write_fold(p, fold_export(p, state, frames)));
       },
       py::arg("path"), py::arg("pattern"), py::arg("state") = py::none(), py::arg("frames") = py::none(),
       "Writes FOLD 1.2 (atomically), with a key frame `state` and `frames` (rows) if given.");
@@ -199,9 +201,8 @@ void bind_cmml(py::module_& m) {
       py::arg("path"), py::arg("sequence"), "Writes the sequence as CMML (atomically).");
   m.def(
       "read_state", [](const geometry::CreasePattern& p, const std::string& path) {
-        FoldSequence s = io::read_cmml(path);
-        for (const auto& d : geometry::check_sequence(p, s))
-          if (d.severity == geometry::Severity::Error) throw io::ParseError(path, d.line, d.message);
+        const FoldSequence s = io::read_cmml(path);
+        require_valid(p, s, path);
         return geometry::end_state(p, s).angles;
       },
       py::arg("pattern"), py::arg("path"),

@@ -93,7 +93,7 @@ void bind_mobility(py::module_& m) {
       });
   m.def(
       "dof", [](const CreasePattern& p, const py::object& state, double tolerance) {
-        require(std::isfinite(tolerance) && tolerance > 0.0, "tolerance", "positive and finite", tolerance);
+        require_positive(tolerance, "tolerance");
         const geometry::FoldState s = state_or_flat(p, state, "state");
         py::gil_scoped_release release;
         const ClosureSystem system(p);
@@ -117,7 +117,7 @@ void bind_projection(py::module_& m) {
       });
   m.def(
       "project", [](const CreasePattern& p, const Eigen::VectorXd& state, double tolerance, int max_iterations, bool keep_signs) {
-        require(std::isfinite(tolerance) && tolerance > 0.0, "tolerance", "positive and finite", tolerance);
+        require_positive(tolerance, "tolerance");
         require(max_iterations >= 1, "max_iterations", "at least 1", max_iterations);
         const geometry::FoldState start = to_state(p, state, "state");
         geometry::ProjectionOptions o;

@@ -13,7 +13,6 @@ namespace gen = geometry::generators;
 // Generators do not check their arguments (the CLI's parser does), so these do it here.
 constexpr int kMaxCount = 100000;
 void count(int n, const char* name) { require(n >= 1 && n <= kMaxCount, name, "an integer in [1, 100000]", n); }
-void positive(double x, const char* name) { require(std::isfinite(x) && x > 0.0, name, "positive and finite", x); }
 gen::JointDefaults joints(double spring, double damping) {
   require(std::isfinite(spring) && spring >= 0.0, "spring", "finite and >= 0", spring);
   require(std::isfinite(damping) && damping >= 0.0, "damping", "finite and >= 0", damping);
@@ -182,12 +181,12 @@ void bind_sheets(py::module_& g) {
         require(sectors.size() >= 3, "len(sectors)", "at least 3", static_cast<double>(sectors.size()));
         double sum = 0.0;
         for (double s : sectors) {
-          positive(s, "every sector");
+          require_positive(s, "every sector");
           sum += s;
         }
         // As the CLI: sectors typed by hand rarely sum to exactly 2π; tiny rounding is rescaled.
         require(std::abs(sum - 2.0 * M_PI) <= 1e-6, "sum(sectors)", "2π (within 1e-6)", sum);
-        positive(radius, "radius");
+        require_positive(radius, "radius");
         std::vector<double> scaled = sectors;
         for (double& s : scaled) s *= 2.0 * M_PI / sum;
         return built(gen::single_vertex(scaled, radius, joints(spring, damping)), title);
@@ -207,8 +206,8 @@ void bind_sheets(py::module_& g) {
   g.def(
       "strip", [](int panels, double width, double height, double spring, double damping, const std::string& title) {
         count(panels, "panels");
-        positive(width, "width");
-        positive(height, "height");
+        require_positive(width, "width");
+        require_positive(height, "height");
         return built(gen::strip(panels, width, height, joints(spring, damping)), title);
       },
       py::arg("panels") = 4, py::arg("width") = 1.0, py::arg("height") = 1.0, py::arg("spring") = 1.0, py::arg("damping") = 0.1,
@@ -217,7 +216,7 @@ void bind_sheets(py::module_& g) {
       "grid", [](int rows, int cols, double cell, double spring, double damping, const std::string& title) {
         count(rows, "rows");
         count(cols, "cols");
-        positive(cell, "cell");
+        require_positive(cell, "cell");
         cells(static_cast<long long>(rows) * cols, "rows × cols");
         return built(gen::grid(rows, cols, cell, joints(spring, damping)), title);
       },
@@ -227,7 +226,7 @@ void bind_sheets(py::module_& g) {
       "circular_lattice", [](int rings, int spokes, double ring_width, double spring, double damping, const std::string& title) {
         count(rings, "rings");
         require(spokes >= 3 && spokes <= kMaxCount, "spokes", "an integer in [3, 100000]", spokes);
-        positive(ring_width, "ring_width");
+        require_positive(ring_width, "ring_width");
         cells(static_cast<long long>(rings) * spokes, "rings × spokes");
         return built(gen::circular_lattice(rings, spokes, ring_width, joints(spring, damping)), title);
       },
@@ -241,8 +240,8 @@ void bind_tessellations(py::module_& g) {
       "miura", [](int rows, int cols, double a, double b, double angle, double spring, double damping, const std::string& title) {
         count(rows, "rows");
         count(cols, "cols");
-        positive(a, "a");
-        positive(b, "b");
+        require_positive(a, "a");
+        require_positive(b, "b");
         require(angle > 0.0 && angle <= M_PI / 2, "angle", "in (0, π/2] radians", angle);
         cells(static_cast<long long>(rows) * cols, "rows × cols");
         return built(gen::miura(rows, cols, a, b, angle, joints(spring, damping)), title);
@@ -262,17 +261,17 @@ void bind_tessellations(py::module_& g) {
       "A waterbomb tessellation of units × rows degree-6 bases, mountain/valley assigned.");
   g.def(
       "boat", [](double length, double half_width, double bow, double spring, double damping, const std::string& title) {
-        positive(length, "length");
-        positive(half_width, "half_width");
-        positive(bow, "bow");
+        require_positive(length, "length");
+        require_positive(half_width, "half_width");
+        require_positive(bow, "bow");
         return built(gen::boat(length, half_width, bow, joints(spring, damping)), title);
       },
       py::arg("length") = 4.0, py::arg("half_width") = 1.0, py::arg("bow") = 1.0, py::arg("spring") = 1.0,
       py::arg("damping") = 0.1, py::arg("title") = "", "The paper's boat: a sheet with two degree-4 vertices.");
   g.def(
       "square_twist", [](double side, double twist, double pleat, double spring, double damping, const std::string& title) {
-        positive(side, "side");
-        positive(pleat, "pleat");
+        require_positive(side, "side");
+        require_positive(pleat, "pleat");
         require(twist > 0.0 && twist < M_PI / 2, "twist", "strictly between 0 and π/2 radians", twist);
         return built(gen::square_twist(side, twist, pleat, joints(spring, damping)), title);
       },
@@ -281,7 +280,7 @@ void bind_tessellations(py::module_& g) {
   g.def(
       "cube_sheet", [](int cubes, double tile, double spring, double damping, const std::string& title) {
         count(cubes, "cubes");
-        positive(tile, "tile");
+        require_positive(tile, "tile");
         return built(gen::cube_sheet(cubes, tile, joints(spring, damping)), title);
       },
       py::arg("cubes") = 2, py::arg("tile") = 1.0, py::arg("spring") = 1.0, py::arg("damping") = 0.1, py::arg("title") = "",

@@ -19,10 +19,7 @@ void bind_result(py::module_& m) {
       .def_readonly("path_length", &PlanResult::path_length, "Σ joint-angle distance between waypoints, radians.")
       .def_readonly("max_closure_error", &PlanResult::max_closure_error, "Largest loop error over waypoints and replay, radians.")
       .def_property_readonly(
-          "waypoints", [](const PlanResult& r) {
-            const Eigen::Index joints = r.waypoints.empty() ? 0 : r.waypoints.front().angles.size();
-            return states_array(r.waypoints, joints);
-          },
+          "waypoints", [](const PlanResult& r) { return states_array(r.waypoints); },
           "Start … goal, shape (waypoints, joints), radians; at most waypoint_step apart per joint.")
       .def_readonly("sequence", &PlanResult::sequence, "The plan as a FoldSequence from the flat sheet.")
       .def_readonly("replay", &PlanResult::replay, "The simulator's SimulationReport of the sequence, or None when not replayed.")
@@ -41,9 +38,9 @@ void bind_plan(py::module_& m) {
       [](const geometry::CreasePattern& p, const Eigen::VectorXd& goal, const py::object& start, const std::string& space,
          const std::string& planner, double time, unsigned seed, bool collisions, bool use_assignment, bool simplify,
          double search_margin, double waypoint_step, double velocity, bool replay) {
-        require(std::isfinite(time) && time > 0.0, "time", "positive and finite", time);
-        require(std::isfinite(waypoint_step) && waypoint_step > 0.0, "waypoint_step", "positive and finite", waypoint_step);
-        require(std::isfinite(velocity) && velocity > 0.0, "velocity", "positive and finite", velocity);
+        require_positive(time, "time");
+        require_positive(waypoint_step, "waypoint_step");
+        require_positive(velocity, "velocity");
         require(std::isfinite(search_margin), "search_margin", "finite (negative: automatic)", search_margin);
         planners::PlanRequest req;
         req.pattern = &p;
@@ -51,8 +48,7 @@ void bind_plan(py::module_& m) {
         if (!start.is_none()) {
           if (py::isinstance<geometry::FoldSequence>(start)) {
             req.start_sequence = start.cast<geometry::FoldSequence>();
-            for (const auto& d : geometry::check_sequence(p, req.start_sequence))
-              if (d.severity == geometry::Severity::Error) throw py::value_error("start: " + geometry::format(d, "sequence"));
+            require_valid(p, req.start_sequence, source_of(start));
             req.start = geometry::end_state(p, req.start_sequence);
           } else {
             req.start = state_or_flat(p, start, "start");

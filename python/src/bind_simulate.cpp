@@ -8,10 +8,6 @@ namespace {
 
 using simulation::SimulationReport;
 
-std::string source_of(const py::object& sequence) {
-  return py::hasattr(sequence, "source") ? py::str(sequence.attr("source")).cast<std::string>() : std::string("<sequence>");
-}
-
 void bind_report_parts(py::module_& m) {
   py::class_<simulation::CollisionEvent>(m, "CollisionEvent", "The first time two facets crossed in an event.")
       .def_readonly("time", &simulation::CollisionEvent::time, "When, seconds from the start.")
@@ -73,7 +69,7 @@ void bind_report(py::module_& m) {
           "frames", [](const SimulationReport& r) {
             std::vector<geometry::FoldState> s;
             for (const auto& f : r.frames) s.push_back(f.state);
-            return states_array(s, r.final_state.angles.size());
+            return states_array(s, r.final_state.angles.size());  // the width also when none
           },
           "Recorded states, shape (frames, joints), radians: every step, or with record_frames=False only each event's end.")
       .def_property_readonly("final_state", [](const SimulationReport& r) { return r.final_state.angles; }, "The state after the last event.")
@@ -94,11 +90,10 @@ void bind_simulate(py::module_& m) {
          double closure_tolerance, bool collisions, bool record_frames, bool poses, double max_event_time) {
         const auto& sequence = sequence_object.cast<const geometry::FoldSequence&>();
         const std::string source = source_of(sequence_object);
-        for (const auto& d : geometry::check_sequence(p, sequence))
-          if (d.severity == geometry::Severity::Error) throw io::ParseError(source, d.line, d.message);
-        require(std::isfinite(time_step) && time_step > 0.0, "time_step", "positive and finite", time_step);
-        require(std::isfinite(closure_tolerance) && closure_tolerance > 0.0, "closure_tolerance", "positive and finite", closure_tolerance);
-        require(std::isfinite(max_event_time) && max_event_time > 0.0, "max_event_time", "positive and finite", max_event_time);
+        require_valid(p, sequence, source);
+        require_positive(time_step, "time_step");
+        require_positive(closure_tolerance, "closure_tolerance");
+        require_positive(max_event_time, "max_event_time");
         simulation::SimulationOptions o;
         o.model = simulation::parse_actuation(model);
         o.time_step = time_step;

@@ -32,8 +32,9 @@ geometry::FoldState to_state(const geometry::CreasePattern& pattern, const Eigen
 /// The flat state when `angles` is None, else to_state().
 geometry::FoldState state_or_flat(const geometry::CreasePattern& pattern, const py::object& angles, const char* what);
 
-/// States as a (len(states), joints) float array, radians; `joints` gives the width when there are none.
-py::array_t<double> states_array(const std::vector<geometry::FoldState>& states, Eigen::Index joints);
+/// States as a (len(states), joints) float array, radians; `joints` gives the width when there are
+/// none (−1: the first state's size, 0 when there is none).
+py::array_t<double> states_array(const std::vector<geometry::FoldState>& states, Eigen::Index joints = -1);
 
 /// Rows of a 2-D float array as states of `pattern` (checked by to_state()).
 std::vector<geometry::FoldState> states_from_array(const geometry::CreasePattern& pattern, const py::object& rows,
@@ -44,5 +45,15 @@ py::array_t<double> poses_array(const geometry::CreasePattern& pattern, const st
 
 /// Raises ValueError("NAME must be WHAT (got VALUE)") unless `ok`.
 void require(bool ok, const char* name, const char* what, double value);
+
+/// require() that `x` is positive and finite.
+void require_positive(double x, const char* name);
+
+/// The file a FoldSequence object was read from (its `source`), or "<sequence>".
+std::string source_of(const py::object& sequence);
+
+/// Raises io::ParseError at `source`'s line for the first error geometry::check_sequence finds
+/// (a joint the pattern lacks, a joint twice in one event), as the CLI does for a CMML.
+void require_valid(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence, const std::string& source);
 
 }  // namespace foldkit::python

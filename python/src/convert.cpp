@@ -3,6 +3,7 @@
 
 #include "bindings.hpp"
 #include "foldkit/geometry/kinematics.hpp"
+#include "foldkit/io/parse_error.hpp"
 
 namespace foldkit::python {
 
@@ -26,6 +27,7 @@ geometry::FoldState state_or_flat(const geometry::CreasePattern& pattern, const 
 }
 
 py::array_t<double> states_array(const std::vector<geometry::FoldState>& states, Eigen::Index joints) {
+  if (joints < 0) joints = states.empty() ? 0 : states.front().angles.size();
   py::array_t<double> out({static_cast<py::ssize_t>(states.size()), static_cast<py::ssize_t>(joints)});
   auto a = out.mutable_unchecked<2>();
   for (std::size_t i = 0; i < states.size(); ++i)
@@ -66,6 +68,17 @@ void require(bool ok, const char* name, const char* what, double value) {
   std::ostringstream out;
   out << name << " must be " << what << " (got " << value << ")";
   throw py::value_error(out.str());
+}
+
+void require_positive(double x, const char* name) { require(std::isfinite(x) && x > 0.0, name, "positive and finite", x); }
+
+std::string source_of(const py::object& sequence) {
+  return py::hasattr(sequence, "source") ? py::str(sequence.attr("source")).cast<std::string>() : std::string("<sequence>");
+}
+
+void require_valid(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence, const std::string& source) {
+  for (const auto& d : geometry::check_sequence(pattern, sequence))
+    if (d.severity == geometry::Severity::Error) throw io::ParseError(source, d.line, d.message);
 }
 
 }  // namespace foldkit::python

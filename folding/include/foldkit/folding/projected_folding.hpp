@@ -45,10 +45,11 @@ struct ProjectedFoldingOptions {
   /// A state is singular when its smallest kept singular value falls below this × σ_max (screened
   /// by √(smallest kept pivot / largest), confirmed by singular values). At least 0.
   double singular_ratio = 1e-7;
-  /// Correct each step with chord iterations on the factorisation the step's tangent was
-  /// computed with (one factorisation per step; refactored only when they stall), instead of
-  /// refactoring at every Newton iterate (false: the method before, kept for comparison in
-  /// benchmarks/bench_projected_folding.cpp). Both stop at the same closure tolerance.
+  /// One factorisation per step: J factored at the predicted point gives one Newton step, the
+  /// chord steps after it and the next step's tangent (refactored at every iterate only when the
+  /// chord steps stall). false: refactor at every Newton iterate and for every tangent (the
+  /// method before, kept for comparison in benchmarks/bench_projected_folding.cpp). Both stop at
+  /// the same closure tolerance.
   bool chord_corrector = true;
   /// Replay the CMML in the simulator (default simulation options, collisions as above) when the
   /// path has more than the flat state.
