@@ -113,7 +113,8 @@ int list(bool json) {
 
 Command add_bench(CLI::App& root) {
   struct Options {
-    std::string suite, output, shard = "1/1", planners, scenes, error_vs_time;
+    std::string suite, output, shard = "1/1", planners, scenes, error_vs_time, space = "auto";
+    std::vector<std::string> params;
     double time = 1.0;
     unsigned int runs = 10, seed = 1;
     bool json = false, list = false, simplify = false;
@@ -129,6 +130,10 @@ Command add_bench(CLI::App& root) {
   app->add_option("--seed", opt->seed, "Seed of the scenes' goals and of OMPL")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_option("--planners", opt->planners, "Planners, comma-separated (default: the suite's)");
   app->add_option("--scenes", opt->scenes, "Scenes, comma-separated (default: the suite's)");
+  app->add_option("--space", opt->space, "Space of every scene: auto (each scene's own), single-vertex, driving, projected, atlas, tangent-bundle")
+      ->check(CLI::IsMember({"auto", "single-vertex", "driving", "projected", "atlas", "tangent-bundle"}))
+      ->capture_default_str();
+  app->add_option("--param", opt->params, "NAME=VALUE: a sampling planner's parameter by OMPL's name (repeatable)");
   app->add_option("--error-vs-time", opt->error_vs_time,
                   "Time limits, comma-separated seconds: write DIR/error_vs_time.csv (error reached per limit) instead of logs");
   app->add_flag("--simplify", opt->simplify,
@@ -146,6 +151,8 @@ Command add_bench(CLI::App& root) {
             o.runs = opt->runs;
             o.seed = opt->seed;
             o.simplify = opt->simplify;
+            o.space = opt->space;
+            for (const auto& p : opt->params) o.params.push_back(planners::parse_planner_param(p));
             std::tie(o.shard, o.shards) = parse_shard(opt->shard);
             if (!opt->planners.empty()) o.planners = split_list(opt->planners, "--planners");
             if (!opt->scenes.empty()) o.scenes = split_list(opt->scenes, "--scenes");

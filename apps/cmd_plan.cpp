@@ -23,6 +23,7 @@ std::vector<std::pair<int, double>> parse_goal_angles(const geometry::CreasePatt
 
 struct PlanArgs {
   std::string pattern, goal, goal_angles, start, space = "auto", planner = "RRTConnect", output;
+  std::vector<std::string> params;
   double time = 5.0, search_margin = -1.0;
   unsigned int seed = 1;
   bool no_collision = false, free_signs = false, json = false;
@@ -37,11 +38,12 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
   goal->excludes(goal_angles);
   goal_angles->excludes(goal);
   app->add_option("--start", opt.start, "CMML whose end state is the start (default: flat)");
-  app->add_option("--space", opt.space, "auto, single-vertex, projected, atlas, tangent-bundle")
-      ->check(CLI::IsMember({"auto", "single-vertex", "projected", "atlas", "tangent-bundle"}))
+  app->add_option("--space", opt.space, "auto, single-vertex, driving, projected, atlas, tangent-bundle")
+      ->check(CLI::IsMember({"auto", "single-vertex", "driving", "projected", "atlas", "tangent-bundle"}))
       ->capture_default_str();
   app->add_option("--planner", opt.planner, "OMPL geometric planner by name (RRTConnect, RRT*, PRM, KPIECE1, BiTRRT, …)")
       ->capture_default_str();
+  app->add_option("--param", opt.params, "NAME=VALUE: a planner parameter by OMPL's name (repeatable), e.g. range=0.3");
   app->add_option("--time", opt.time, "Seconds for the planner")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_option("--seed", opt.seed, "Random seed (same seed, same plan)")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_flag("--no-collision", opt.no_collision, "Closure only (no collision world is built)");
@@ -91,6 +93,7 @@ void set_start_and_settings(const PlanArgs& opt, const geometry::CreasePattern& 
   }
   req.space = planners::parse_space(opt.space);
   req.planner = opt.planner;
+  for (const auto& p : opt.params) req.params.push_back(planners::parse_planner_param(p));
   req.time = opt.time;
   req.seed = opt.seed;
   req.collisions = !opt.no_collision;
@@ -123,6 +126,7 @@ int run_plan(PlanArgs& opt) {
   if (kind_of(opt.output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt.output + "'");
   try {
     opt.planner = planners::canonical_planner(opt.planner);
+    planners::check_planner_params(opt.planner, opt.params);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }

@@ -138,8 +138,13 @@ std::string clean(std::string v) {
   return v;
 }
 
-ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, const PlanSetup& setup) {
-  if (!is_deterministic_planner(name)) return make_planner(name, setup.si);
+ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, const PlanSetup& setup,
+                             const std::vector<std::pair<std::string, std::string>>& params) {
+  if (!is_deterministic_planner(name)) {
+    ob::PlannerPtr p = make_planner(name, setup.si);
+    planners::set_planner_params(*p, name, params);
+    return p;
+  }
   const PlanSetup* s = &setup;
   return std::make_shared<DeterministicPlanner>(
       setup.si, name, deterministic_method(name), *scene.pattern, setup.reader,
@@ -239,11 +244,12 @@ class SceneRun {
   BenchSceneResult run() {
     if (std::all_of(runs_of_.begin(), runs_of_.end(), [](const auto& v) { return v.empty(); })) return result_;
     scene_ = make_bench_scene(result_.scene, o_.seed);
+    if (o_.space != "auto") scene_.request.space = planners::parse_space(o_.space);
     setup_ = scene_setup(scene_);
     // The planners, in the suite's order; those with as many runs in this shard share one
     // Benchmark (each Benchmark estimates the space's properties for its log header: seconds).
     for (const auto& name : res_.planners) {
-      objects_.push_back(bench_planner(name, scene_, setup_));
+      objects_.push_back(bench_planner(name, scene_, setup_, o_.params));
       names_ += (names_.empty() ? "" : ",") + objects_.back()->getName();
     }
     std::map<std::size_t, std::vector<std::size_t>> groups;  // run count → planner indices
@@ -374,7 +380,8 @@ std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::
   std::size_t done = 0;
   std::vector<ErrorVsTimeRow> rows;
   for (const auto& scene_name : res.scenes) {
-    const BenchScene scene = make_bench_scene(scene_name, o.seed);
+    BenchScene scene = make_bench_scene(scene_name, o.seed);
+    if (o.space != "auto") scene.request.space = planners::parse_space(o.space);
     const PlanSetup setup = scene_setup(scene);
     const double start_distance = (setup.start.angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
     for (const auto& name : res.planners) {
@@ -382,7 +389,7 @@ std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::
         for (unsigned int run = 0; run < o.runs; ++run) {
           og::SimpleSetup ss(setup.si);
           setup.set_start_and_goal(ss, scene.request.goal);
-          ss.setPlanner(bench_planner(name, scene, setup));
+          ss.setPlanner(bench_planner(name, scene, setup, o.params));
           ss.setup();
           const auto t1 = std::chrono::steady_clock::now();
           ss.solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(limit),

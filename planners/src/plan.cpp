@@ -18,7 +18,9 @@
 #include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/planners/planner_factory.hpp"
+#include "foldkit/geometry/driving_chart.hpp"
 #include "foldkit/statespaces/closure_constraint.hpp"
+#include "foldkit/statespaces/driving_space.hpp"
 #include "foldkit/statespaces/single_vertex_space.hpp"
 #include "foldkit/statespaces/validity.hpp"
 
@@ -31,15 +33,17 @@ using geometry::FoldState;
 SpaceKind parse_space(const std::string& name) {
   if (name == "auto") return SpaceKind::Auto;
   if (name == "single-vertex") return SpaceKind::SingleVertex;
+  if (name == "driving") return SpaceKind::Driving;
   if (name == "projected") return SpaceKind::Projected;
   if (name == "atlas") return SpaceKind::Atlas;
   if (name == "tangent-bundle") return SpaceKind::TangentBundle;
-  throw std::invalid_argument("unknown space '" + name + "' (auto, single-vertex, projected, atlas, tangent-bundle)");
+  throw std::invalid_argument("unknown space '" + name + "' (auto, single-vertex, driving, projected, atlas, tangent-bundle)");
 }
 
 const char* to_string(SpaceKind kind) {
   switch (kind) {
     case SpaceKind::SingleVertex: return "single-vertex";
+    case SpaceKind::Driving: return "driving";
     case SpaceKind::Projected: return "projected";
     case SpaceKind::Atlas: return "atlas";
     case SpaceKind::TangentBundle: return "tangent-bundle";
@@ -57,6 +61,7 @@ double elapsed(std::chrono::steady_clock::time_point t0) {
 
 bool PlanSetup::write(const FoldState& state, ob::State* out) const {
   if (single_vertex) return single_vertex->from_fold_state(state, out);
+  if (driving) return driving->from_fold_state(state, out);
   if (joint_space) {
     auto* v = out->as<ob::RealVectorStateSpace::StateType>();
     for (Eigen::Index j = 0; j < state.angles.size(); ++j) v->values[j] = state.angles[j];
@@ -70,7 +75,8 @@ void PlanSetup::set_start_and_goal(og::SimpleSetup& ss, const FoldState& goal) c
   ob::ScopedState<> s(space), g(space);
   write(prefix.back(), s.get());
   if (!write(goal, g.get()))
-    throw std::invalid_argument("plan: the goal is a singular state of the single-vertex space (try --space projected)");
+    throw std::invalid_argument(std::string("plan: the goal is a singular state of the ") + (driving ? "driving" : "single-vertex") +
+                                " space (try --space projected)");
   ss.setStartAndGoalStates(s, g, 1e-9);
   if (kind == SpaceKind::Atlas || kind == SpaceKind::TangentBundle) {
     auto atlas = std::static_pointer_cast<ob::AtlasStateSpace>(constrained.space);
@@ -119,6 +125,44 @@ void set_up_single_vertex_space(PlanSetup& setup, const PlanRequest& req, const 
     if (setup.prefix.empty() || !sv->from_fold_state(setup.prefix.back(), probe_state.get()))
       throw std::invalid_argument("plan: no closed way out of the singular start state");
   }
+}
+
+// The driving-crease space: the chart is chosen at the goal (or, when the goal is singular, at
+// the end of the way out of the start), DOF-many coordinates, the rest by closure.
+void set_up_driving_space(PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) {
+  const geometry::ClosureSystem& system = *setup.system;
+  const geometry::Mobility at_goal = geometry::mobility(system, req.goal);
+  const geometry::Mobility at_start = geometry::mobility(system, setup.start);
+  const Eigen::Index rank = std::max(at_goal.rank, at_start.rank);
+  if (at_start.rank < rank) {
+    // Flat (or another singular state): leave it along a short closed segment first.
+    setup.prefix = geometry::lead_in(system, setup.start, req.goal, rank, req.waypoint_step);
+    if (setup.prefix.empty()) throw std::invalid_argument("plan: no closed way out of the singular start state");
+  }
+  const FoldState& from = setup.prefix.back();
+  const FoldState& chart_state = at_goal.rank >= rank ? req.goal : from;
+  const int dof = static_cast<int>(system.cols() - rank);
+  if (dof == 0) throw std::invalid_argument("plan: the pattern is rigid (0 degrees of freedom): nothing can move");
+  geometry::DrivingChart chart = geometry::choose_driving_chart(system, chart_state, dof, std::max(1u, req.seed));
+  // Sampling bounds of each driving crease: its angle bounds, narrowed to the side of flat that
+  // both ends of the plan are on (flat is singular; the goal's signs pick the branch).
+  Eigen::VectorXd lo(dof), hi(dof);
+  for (int i = 0; i < dof; ++i) {
+    const int j = chart.driving[static_cast<std::size_t>(i)];
+    lo[i] = bounds.lower[j];
+    hi[i] = bounds.upper[j];
+    if (req.goal.angles[j] > 0.0 && from.angles[j] > 0.0) lo[i] = std::max(lo[i], 0.0);
+    if (req.goal.angles[j] < 0.0 && from.angles[j] < 0.0) hi[i] = std::min(hi[i], 0.0);
+  }
+  auto space = std::make_shared<statespaces::DrivingStateSpace>(setup.system, std::move(chart), bounds, lo, hi);
+  if (!space->add_anchor(from)) throw std::invalid_argument("plan: the start is a singular state of the driving space (try --space projected)");
+  if (!space->add_anchor(req.goal)) throw std::invalid_argument("plan: the goal is a singular state of the driving space (try --space projected)");
+  setup.driving = space;
+  setup.space = space;
+  setup.si = std::make_shared<ob::SpaceInformation>(setup.space);
+  setup.reader = statespaces::driving_reader(space);
+  setup.si->setMotionValidator(std::make_shared<statespaces::FoldMotionValidator>(setup.si, setup.validity, setup.reader,
+                                                                                   req.resolution, 2.5 * req.resolution));
 }
 
 // OMPL's Projected, Atlas or TangentBundle space on the closure constraint.
@@ -173,7 +217,7 @@ PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
   SpaceKind kind = req.space;
   if (kind == SpaceKind::Auto)
     kind = pattern.interior_vertices().size() == 1 && geometry::hole_count(pattern) == 0 ? SpaceKind::SingleVertex
-                                                                                       : SpaceKind::Projected;
+                                                                                       : SpaceKind::Driving;
   auto system = std::make_shared<const geometry::ClosureSystem>(pattern);
   setup.system = system;
   if (system->rows() == 0 && !allow_no_loops)
@@ -192,6 +236,8 @@ PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
     set_up_joint_space(setup, req, bounds);
   else if (kind == SpaceKind::SingleVertex)
     set_up_single_vertex_space(setup, req, bounds);
+  else if (kind == SpaceKind::Driving)
+    set_up_driving_space(setup, req, bounds);
   else
     set_up_constrained_space(setup, req, bounds);
   setup.si->setStateValidityChecker(std::make_shared<statespaces::FoldValidityChecker>(setup.si, validity, setup.reader));
@@ -273,6 +319,7 @@ PlanResult plan(const PlanRequest& req) {
 
   og::SimpleSetup ss(setup.si);
   ss.setPlanner(make_planner(req.planner, setup.si));
+  set_planner_params(*ss.getPlanner(), req.planner, req.params);
   setup.set_start_and_goal(ss, req.goal);
   ss.setup();
 

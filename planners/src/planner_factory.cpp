@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/planners/est/BiEST.h>
 #include <ompl/geometric/planners/est/EST.h>
 #include <ompl/geometric/planners/est/ProjEST.h>
@@ -88,6 +89,40 @@ const Entry& find(const std::string& name) {
 
 ompl::base::PlannerPtr make_planner(const std::string& name, const ompl::base::SpaceInformationPtr& si) {
   return find(name).make(si);
+}
+
+void set_planner_params(ompl::base::Planner& planner, const std::string& name,
+                        const std::vector<std::pair<std::string, std::string>>& params) {
+  ompl::base::ParamSet& set = planner.params();
+  for (const auto& [key, value] : params) {
+    if (!set.hasParam(key)) {
+      std::vector<std::string> names;
+      set.getParamNames(names);
+      std::string known;
+      for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+      throw std::invalid_argument("planner " + name + " has no parameter '" + key + "' (it has: " + (known.empty() ? "none" : known) + ")");
+    }
+    // ParamSet::setParam answers false for a value the parameter's setter cannot parse or refuses.
+    if (!set.setParam(key, value))
+      throw std::invalid_argument("planner " + name + ": parameter '" + key + "' refuses the value '" + value + "'");
+  }
+}
+
+std::pair<std::string, std::string> parse_planner_param(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw std::invalid_argument("planner parameter '" + text + "' is not NAME=VALUE");
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+void check_planner_params(const std::string& planner, const std::vector<std::string>& params) {
+  if (params.empty()) return;
+  auto box = std::make_shared<ompl::base::RealVectorStateSpace>(1);
+  box->setBounds(0.0, 1.0);
+  auto si = std::make_shared<ompl::base::SpaceInformation>(box);
+  std::vector<std::pair<std::string, std::string>> parsed;
+  for (const auto& p : params) parsed.push_back(parse_planner_param(p));
+  set_planner_params(*make_planner(planner, si), planner, parsed);
 }
 
 std::vector<std::string> planner_names() {

@@ -5,9 +5,20 @@
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/constraint/ConstrainedStateSpace.h>
 
+#include "foldkit/statespaces/driving_space.hpp"
+
 namespace foldkit::statespaces {
 
 namespace ob = ompl::base;
+
+StateReader driving_reader(std::shared_ptr<const DrivingStateSpace> space) {
+  return [space](const ob::State* state, geometry::FoldState& out) {
+    const auto* s = state->as<DrivingStateSpace::StateType>();
+    if (!s->closed) return false;
+    out.angles = Eigen::Map<const Eigen::VectorXd>(s->angles, static_cast<Eigen::Index>(space->joints()));
+    return true;
+  };
+}
 
 StateReader single_vertex_reader(std::shared_ptr<const SingleVertexStateSpace> space) {
   return [space](const ob::State* state, geometry::FoldState& out) {

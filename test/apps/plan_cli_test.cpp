@@ -131,3 +131,29 @@ TEST(PlanCli, MiuraFromTheDemoThroughTheProjectedSpace) {
 }
 
 }  // namespace
+
+namespace {
+
+// Planner parameters by OMPL's names (--param NAME=VALUE): a known one plans, an unknown one or a
+// malformed one is a usage error (exit 2) that names what the planner has, and writes nothing.
+TEST(PlanCli, PlannerParametersByName) {
+  const Case c = make_case();
+  const std::string out = c.dir + "/param.cmml";
+  std::filesystem::remove(out);
+  const auto ok = foldkit({"plan", c.pattern, "--goal", c.goal, "--param", "range=0.3", "--param", "intermediate_states=1",
+                           "--time", "2", "--seed", "4", "-o", out, "--json"});
+  ASSERT_EQ(ok.exit, 0) << ok.err;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  std::filesystem::remove(out);
+  const auto unknown = foldkit({"plan", c.pattern, "--goal", c.goal, "--param", "nonsense=1", "-o", out});
+  EXPECT_EQ(unknown.exit, 2);
+  EXPECT_NE(unknown.err.find("no parameter 'nonsense'"), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("range"), std::string::npos) << unknown.err;
+  const auto refused = foldkit({"plan", c.pattern, "--goal", c.goal, "--param", "range=fast", "-o", out});
+  EXPECT_EQ(refused.exit, 2) << refused.err;
+  const auto malformed = foldkit({"plan", c.pattern, "--goal", c.goal, "--param", "range", "-o", out});
+  EXPECT_EQ(malformed.exit, 2);
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace

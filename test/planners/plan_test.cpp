@@ -221,3 +221,60 @@ TEST(Plan, CornerCubeFromFlatInTheSingleVertexAndProjectedSpaces) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 16's failure: Miura sheets from flat to a folded goal, default options (no search
+// margin), were not planned in 120 s in the Projected space. The auto space is now the
+// driving-crease one (1 coordinate): every waypoint closed to 1e-10, the replay valid with
+// collisions on, the assignment kept.
+TEST(Plan, MiuraSheetsInTheDrivingSpaceWithDefaultOptions) {
+  for (int n : {4, 6, 10}) {
+    SCOPED_TRACE("Miura " + std::to_string(n));
+    const CreasePattern p = build_or_throw(gen::miura(n, n));
+    Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
+    for (std::size_t j = 0; j < p.joints().size(); ++j)
+      g[static_cast<Eigen::Index>(j)] = p.joints()[j].assignment == foldkit::geometry::Assignment::Mountain ? 1.2 : -1.2;
+    PlanRequest req;
+    req.pattern = &p;
+    req.goal = projected_goal(p, g);
+    req.time = 20.0;  // generous for sanitizer builds; well under a second in Release
+    req.seed = 3;
+    const PlanResult r = plan(req);
+    EXPECT_EQ(r.space, "driving");
+    expect_valid_plan(p, req, r);
+    const ClosureSystem sys(p);
+    for (const FoldState& w : r.waypoints) EXPECT_LE(sys.max_error(w), 1e-10);
+    const auto bounds = foldkit::statespaces::AngleBounds::of(p, true);
+    for (const FoldState& w : r.waypoints) EXPECT_TRUE(bounds.contains(w, 1e-9));
+  }
+}
+
+// Planner parameters through OMPL's ParamSet: applied (a tiny range means many more states),
+// and an unknown one refused with the names the planner has.
+TEST(Plan, PlannerParametersByName) {
+  const CreasePattern p = build_or_throw(gen::miura(4, 4));
+  Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
+  for (std::size_t j = 0; j < p.joints().size(); ++j)
+    g[static_cast<Eigen::Index>(j)] = p.joints()[j].assignment == foldkit::geometry::Assignment::Mountain ? 1.0 : -1.0;
+  PlanRequest req;
+  req.pattern = &p;
+  req.goal = projected_goal(p, g);
+  req.time = 20.0;
+  req.replay = false;
+  req.simplify = false;
+  req.params = {{"range", "0.01"}};
+  const PlanResult small = plan(req);
+  ASSERT_TRUE(small.status.ok()) << small.status.message;
+  req.params = {{"nonsense", "1"}};
+  try {
+    plan(req);
+    ADD_FAILURE() << "an unknown parameter was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("range"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(foldkit::planners::check_planner_params("RRTConnect", {"range"}), std::invalid_argument);
+  EXPECT_NO_THROW(foldkit::planners::check_planner_params("KPIECE1", {"range=0.2", "border_fraction=0.8"}));
+}
+
+}  // namespace

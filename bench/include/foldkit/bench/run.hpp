@@ -42,6 +42,12 @@ struct BenchOptions {
   std::string suite = "quick";  ///< the suite (bench_suite())
   std::vector<std::string> scenes,  ///< scenes to run instead of the suite's; empty: the suite's
       planners;                     ///< planners to run instead of the suite's; empty: the suite's
+  /// The space every scene is planned in (planners::parse_space: auto, single-vertex, driving,
+  /// projected, atlas, tangent-bundle); "auto" keeps each scene's own.
+  std::string space = "auto";
+  /// Parameters of the sampling planners by OMPL's names ("range", "0.3"), set through each
+  /// planner's ParamSet; a planner without one of them is an error.
+  std::vector<std::pair<std::string, std::string>> params;
   double time = 1.0;                ///< seconds per run; positive and finite
   unsigned int runs = 10,  ///< runs per planner and scene (per time limit for run_error_vs_time()); at least 1
       seed = 1,            ///< the scenes' goal seed (make_bench_scene()) and OMPL's random seed (0 counts as 1)

@@ -4,6 +4,7 @@
 /// path turned into a CMML sequence the simulator replays (docs/PLANNING.md).
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "foldkit/geometry/closure.hpp"
@@ -17,13 +18,14 @@ namespace foldkit::planners {
 
 /// Which space the planner searches (docs/PLANNING.md).
 enum class SpaceKind {
-  Auto,           ///< single-vertex for a pattern with one interior vertex and no hole, else projected
+  Auto,           ///< single-vertex for a pattern with one interior vertex and no hole, else driving
   SingleVertex,   ///< the exact (n − 3)-dimensional space of one vertex
+  Driving,        ///< statespaces::DrivingStateSpace: DOF-many driving creases, the rest by closure
   Projected,      ///< OMPL ProjectedStateSpace on the closure constraint (analytic Jacobian)
   Atlas,          ///< OMPL AtlasStateSpace
   TangentBundle,  ///< OMPL TangentBundleStateSpace
 };
-/// The space named "auto", "single-vertex", "projected", "atlas" or "tangent-bundle".
+/// The space named "auto", "single-vertex", "driving", "projected", "atlas" or "tangent-bundle".
 /// @throws std::invalid_argument for any other name
 SpaceKind parse_space(const std::string& name);
 /// The kind's name, as parse_space() reads it.
@@ -41,6 +43,9 @@ struct PlanRequest {
   geometry::FoldState goal;  ///< closed (to 1e-6 rad), one angle per joint, radians
   SpaceKind space = SpaceKind::Auto;  ///< which space to search
   std::string planner = "RRTConnect";  ///< an OMPL planner by name (make_planner())
+  /// The planner's parameters by name, set through OMPL's ParamSet (planner->params()), e.g.
+  /// {"range", "0.3"}; applied in order after the planner's defaults.
+  std::vector<std::pair<std::string, std::string>> params;
   /// Seconds for the planner at most (positive, finite); it stops at the first exact solution.
   double time = 5.0;
   unsigned int seed = 1;      ///< seed of OMPL's random numbers (0 counts as 1)
@@ -73,7 +78,7 @@ struct PlanResult {
   /// the closure manifold, or the replay says so).
   geometry::Status status;
   std::string planner,          ///< the planner's name, as requested
-      space;                    ///< the space searched: "single-vertex", "projected", "atlas" or "tangent-bundle"
+      space;                    ///< the space searched: "single-vertex", "driving", "projected", "atlas" or "tangent-bundle"
   double time = 0.0;            ///< seconds the planner ran
   double path_length = 0.0;     ///< Σ Euclidean joint-angle distance between waypoints, radians
   double max_closure_error = 0.0;  ///< largest loop error over the waypoints and the replay, radians

@@ -12,6 +12,7 @@
 
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/statespaces/closure_constraint.hpp"
+#include "foldkit/statespaces/driving_space.hpp"
 #include "foldkit/statespaces/single_vertex_space.hpp"
 #include "foldkit/statespaces/validity.hpp"
 
@@ -30,6 +31,7 @@ struct PlanSetup {
   ompl::base::SpaceInformationPtr si;  ///< its SpaceInformation, checkers set
   statespaces::StateReader reader;   ///< reads fold angles from a state of `space`
   std::shared_ptr<statespaces::SingleVertexStateSpace> single_vertex;  ///< the single-vertex space; null otherwise
+  std::shared_ptr<statespaces::DrivingStateSpace> driving;            ///< the driving-crease space; null otherwise
   statespaces::ConstrainedSetup constrained;                          ///< constrained spaces only
   bool joint_space = false;  ///< a pattern without loops: a plain box over the fold angles
   std::string blocked;       ///< not empty: the way out of the start collides (no plan)
@@ -43,7 +45,7 @@ struct PlanSetup {
 };
 
 /// Checks the request as plan() does and builds the space: SpaceKind::Auto picks the
-/// single-vertex space for a pattern with one interior vertex and no hole, else the projected
+/// single-vertex space for a pattern with one interior vertex and no hole, else the driving-crease
 /// one. A singular start (such as the flat sheet) is left along geometry::lead_in, giving the
 /// prefix.
 /// @param request         the planning problem

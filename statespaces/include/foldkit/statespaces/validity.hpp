@@ -22,6 +22,9 @@ namespace foldkit::statespaces {
 using StateReader = std::function<bool(const ompl::base::State*, geometry::FoldState&)>;
 /// The reader of SingleVertexStateSpace states: false for a state that is not closed.
 StateReader single_vertex_reader(std::shared_ptr<const SingleVertexStateSpace> space);
+class DrivingStateSpace;
+/// The reader of DrivingStateSpace states: false for a state that is not closed.
+StateReader driving_reader(std::shared_ptr<const DrivingStateSpace> space);
 /// The reader of states of a constrained space (ompl::base::ConstrainedStateSpace); never false.
 StateReader constrained_reader();
 
