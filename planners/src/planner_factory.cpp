@@ -102,8 +102,15 @@ void set_planner_params(ompl::base::Planner& planner, const std::string& name,
       for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
       throw std::invalid_argument("planner " + name + " has no parameter '" + key + "' (it has: " + (known.empty() ? "none" : known) + ")");
     }
-    // ParamSet::setParam answers false for a value the parameter's setter cannot parse or refuses.
-    if (!set.setParam(key, value))
+    // ParamSet::setParam answers false for a value the setter refuses, and OMPL's conversion
+    // throws for one it cannot parse as the parameter's type.
+    bool accepted = false;
+    try {
+      accepted = set.setParam(key, value);
+    } catch (const std::exception&) {
+      accepted = false;
+    }
+    if (!accepted)
       throw std::invalid_argument("planner " + name + ": parameter '" + key + "' refuses the value '" + value + "'");
   }
 }
