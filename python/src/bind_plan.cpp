@@ -14,7 +14,7 @@ void bind_result(py::module_& m) {
       .def_readonly("status", &PlanResult::status, "'success' when solved (and the replay is valid).")
       .def_property_readonly("solved", [](const PlanResult& r) { return r.status.ok(); }, "Whether a valid plan was found.")
       .def_readonly("planner", &PlanResult::planner, "The planner's name.")
-      .def_readonly("space", &PlanResult::space, "The space searched: 'single-vertex', 'projected', 'atlas' or 'tangent-bundle'.")
+      .def_readonly("space", &PlanResult::space, "The space searched: 'single-vertex', 'driving', 'projected', 'atlas' or 'tangent-bundle'.")
       .def_readonly("time", &PlanResult::time, "Seconds the planner ran.")
       .def_readonly("path_length", &PlanResult::path_length, "Σ joint-angle distance between waypoints, radians.")
       .def_readonly("max_closure_error", &PlanResult::max_closure_error, "Largest loop error over waypoints and replay, radians.")
@@ -76,7 +76,7 @@ void bind_plan(py::module_& m) {
       "the plan's sequence begins with it, as the CLI's --start CMML), or a closed state: then the plan's sequence reaches "
       "it from flat in one straight event, which the replay accepts only where that line stays closed (pass the "
       "FoldSequence otherwise). Planning runs "
-      "an OMPL planner by name, as `foldkit plan`: space 'auto', 'single-vertex', 'projected', 'atlas' or "
+      "an OMPL planner by name, as `foldkit plan`: space 'auto', 'single-vertex', 'driving', 'projected', 'atlas' or "
       "'tangent-bundle'; `time` seconds at most; the same seed gives the same plan. Returns a PlanResult (check `solved`).");
   m.def("planners", &planners::planner_names, "The planner names plan() accepts.");
 }
