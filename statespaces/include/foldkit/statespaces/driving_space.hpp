@@ -49,7 +49,7 @@ class DrivingStateSpace : public ompl::base::StateSpace {
   ///         has no driving crease
   DrivingStateSpace(std::shared_ptr<const geometry::ClosureSystem> system, geometry::DrivingChart chart, AngleBounds bounds,
                     Eigen::VectorXd driving_lower, Eigen::VectorXd driving_upper, geometry::PassiveSolverOptions options = {});
-  ~DrivingStateSpace() override;
+  ~DrivingStateSpace() override;  ///< Frees the pooled solvers.
 
   /// The chart whose driving creases are the coordinates.
   const geometry::DrivingChart& chart() const { return chart_; }
