@@ -114,6 +114,25 @@ Eigen::VectorXd assignment_signs(const CreasePattern& p) {
   return s;
 }
 
+// Miura-ori rows × cols (the generator's default angle) folded along its rigid mode with every
+// zig-zag crease at ±zigzag and every straight crease by the closed form of docs/GENERATORS.md,
+// tan(ρ/2) = cos(angle)·tan(ρ_z/2) in magnitude, signs from the assignment; polished by the
+// projection, which must move no crease more than 1e-6 rad (else the closed form is wrong).
+FoldState miura_folded(const CreasePattern& p, int rows, int cols, double zigzag) {
+  const double angle = M_PI / 3;  // gen::miura's default
+  const std::size_t straight = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols - 1);
+  const double rho = 2.0 * std::atan(std::cos(angle) * std::tan(zigzag / 2.0));
+  const Eigen::VectorXd sign = assignment_signs(p);
+  Eigen::VectorXd g(sign.size());
+  for (Eigen::Index j = 0; j < g.size(); ++j) g[j] = sign[j] * (static_cast<std::size_t>(j) < straight ? rho : zigzag);
+  geometry::ProjectionOptions po;
+  po.tolerance = 1e-12;
+  const auto r = geometry::project(geometry::ClosureSystem(p), FoldState{g}, po);
+  if (!r.status.ok() || (r.state.angles - g).cwiseAbs().maxCoeff() > 1e-6)
+    throw std::runtime_error("bench: the Miura closed form does not close (" + r.status.message + ")");
+  return r.state;
+}
+
 unsigned int scene_seed(const std::string& name, unsigned int seed) {
   unsigned int h = 2166136261u;  // FNV-1a: stable across compilers, unlike std::hash
   for (unsigned char c : name) h = (h ^ c) * 16777619u;
@@ -140,7 +159,9 @@ std::vector<std::string> bench_scene_names() {
     names.push_back("vertex" + std::to_string(d) + "-random");
     names.push_back("vertex" + std::to_string(d) + "-symmetric");
   }
-  for (const char* n : {"boat", "miura4x4", "miura10x10", "waterbomb", "cube-sheet", "corner-cube"}) names.emplace_back(n);
+  for (const char* n : {"boat", "miura4x4", "miura10x10", "waterbomb", "cube-sheet", "corner-cube", "miura10x10-80",
+                        "miura20x20-80", "miura40x40-80"})
+    names.emplace_back(n);
   return names;
 }
 
@@ -175,6 +196,15 @@ BenchScene make_bench_scene(const std::string& name, unsigned int seed) {
     s.request.goal = projected_goal(s.request, rng, [dir](std::mt19937& r) {
       return Eigen::VectorXd(dir * std::uniform_real_distribution<double>(0.3, 0.9)(r));
     }, name);
+    return s;
+  }
+  for (int n : {10, 20, 40}) {
+    if (name != "miura" + std::to_string(n) + "x" + std::to_string(n) + "-80") continue;
+    BenchScene s = scene_of(name, gen::miura(n, n), "Miura-ori " + std::to_string(n) + "×" + std::to_string(n) +
+                                                       ", flat to every zig-zag crease at ±80° (issue 16); the goal "
+                                                       "does not depend on the seed");
+    s.request.use_assignment = true;
+    s.request.goal = miura_folded(*s.pattern, n, n, 80.0 * M_PI / 180.0);
     return s;
   }
   if (name == "waterbomb") {
@@ -225,10 +255,15 @@ const std::vector<BenchSuite>& bench_suites() {
     std::vector<BenchSuite> s;
     s.push_back({"quick", "three small scenes, two planners: seconds (tests, CI)",
                  {"vertex4-random", "vertex8-random", "boat"}, {"RRTConnect", "ProjectedLine"}});
-    BenchSuite full{"full", "every scene, sampling planners beside the deterministic ones", bench_scene_names(),
+    std::vector<std::string> small;  // every scene but the large Miura sheets of "miura-scale"
+    for (const auto& n : bench_scene_names())
+      if (n.size() < 3 || n.compare(n.size() - 3, 3, "-80") != 0) small.push_back(n);
+    BenchSuite full{"full", "every scene but the large Miura sheets, sampling planners beside the deterministic ones", small,
                     {"RRTConnect", "KPIECE1", "BiTRRT", "PRM", "BKPIECE1", "EST", "RRT"}};
     for (const auto& d : deterministic_planner_names()) full.planners.push_back(d);
     s.push_back(full);
+    s.push_back({"miura-scale", "Miura 10x10, 20x20 and 40x40 from flat to zig-zags at ±80° (issue 16's targets), RRTConnect",
+                 {"miura10x10-80", "miura20x20-80", "miura40x40-80"}, {"RRTConnect"}});
     return s;
   }();
   return suites;
