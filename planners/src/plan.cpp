@@ -87,6 +87,14 @@ void PlanSetup::set_start_and_goal(og::SimpleSetup& ss, const FoldState& goal) c
 
 namespace {
 
+// The SpaceInformation of setup.space (setup.reader set first), with the motion validator every
+// space but the constrained ones uses (those bring their own).
+void use_space(PlanSetup& setup, const PlanRequest& req) {
+  setup.si = std::make_shared<ob::SpaceInformation>(setup.space);
+  setup.si->setMotionValidator(std::make_shared<statespaces::FoldMotionValidator>(setup.si, setup.validity, setup.reader,
+                                                                                   req.resolution, 2.5 * req.resolution));
+}
+
 // The joint-angle box: a pattern without a closed loop, where every state is closed.
 void set_up_joint_space(PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) {
   const auto n = static_cast<Eigen::Index>(req.pattern->joints().size());
@@ -98,13 +106,11 @@ void set_up_joint_space(PlanSetup& setup, const PlanRequest& req, const statespa
   }
   box->setBounds(b);
   setup.space = box;
-  setup.si = std::make_shared<ob::SpaceInformation>(box);
   setup.reader = [n](const ob::State* s, FoldState& f) {
     f.angles = Eigen::Map<const Eigen::VectorXd>(s->as<ob::RealVectorStateSpace::StateType>()->values, n);
     return true;
   };
-  setup.si->setMotionValidator(std::make_shared<statespaces::FoldMotionValidator>(setup.si, setup.validity, setup.reader,
-                                                                                   req.resolution, 2.5 * req.resolution));
+  use_space(setup, req);
 }
 
 // The exact single-vertex space (n − 3 active angles, the rest in closed form).
@@ -113,10 +119,8 @@ void set_up_single_vertex_space(PlanSetup& setup, const PlanRequest& req, const 
   auto sv = std::make_shared<statespaces::SingleVertexStateSpace>(chain, bounds);
   setup.single_vertex = sv;
   setup.space = sv;
-  setup.si = std::make_shared<ob::SpaceInformation>(setup.space);
   setup.reader = statespaces::single_vertex_reader(sv);
-  setup.si->setMotionValidator(std::make_shared<statespaces::FoldMotionValidator>(setup.si, setup.validity, setup.reader,
-                                                                                   req.resolution, 2.5 * req.resolution));
+  use_space(setup, req);
   ob::ScopedState<> probe_state(setup.space);
   if (!sv->from_fold_state(setup.start, probe_state.get())) {
     // The start is singular for the closed form (e.g. a flat vertex whose passive axes line up):
@@ -159,10 +163,8 @@ void set_up_driving_space(PlanSetup& setup, const PlanRequest& req, const states
   if (!space->add_anchor(req.goal)) throw std::invalid_argument("plan: the goal is a singular state of the driving space (try --space projected)");
   setup.driving = space;
   setup.space = space;
-  setup.si = std::make_shared<ob::SpaceInformation>(setup.space);
   setup.reader = statespaces::driving_reader(space);
-  setup.si->setMotionValidator(std::make_shared<statespaces::FoldMotionValidator>(setup.si, setup.validity, setup.reader,
-                                                                                   req.resolution, 2.5 * req.resolution));
+  use_space(setup, req);
 }
 
 // OMPL's Projected, Atlas or TangentBundle space on the closure constraint.
