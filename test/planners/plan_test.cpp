@@ -278,3 +278,45 @@ TEST(Plan, PlannerParametersByName) {
 }
 
 }  // namespace
+
+namespace {
+
+// Start anywhere (issue 16, item 2) in the driving space: flat → A, then A → B (folded further)
+// and B → C (unfolded part way), each plan continuing the previous one's CMML; every replay valid,
+// every waypoint closed.
+TEST(Plan, DrivingSpaceFromOneFoldedStateToAnother) {
+  const CreasePattern p = build_or_throw(gen::miura(6, 6));
+  auto folded = [&](double a) {
+    Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
+    for (std::size_t j = 0; j < p.joints().size(); ++j)
+      g[static_cast<Eigen::Index>(j)] = p.joints()[j].assignment == foldkit::geometry::Assignment::Mountain ? a : -a;
+    return projected_goal(p, g);
+  };
+  const ClosureSystem sys(p);
+  PlanRequest req;
+  req.pattern = &p;
+  req.time = 20.0;
+  req.seed = 2;
+  req.goal = folded(0.6);
+  const PlanResult first = plan(req);
+  ASSERT_TRUE(first.status.ok()) << first.status.message;
+  foldkit::geometry::FoldSequence so_far = first.sequence;
+  FoldState at = first.waypoints.back();
+  for (double next : {1.4, 0.3}) {
+    SCOPED_TRACE(next);
+    req.start = at;
+    req.start_sequence = so_far;
+    req.goal = folded(next);
+    const PlanResult r = plan(req);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_EQ(r.space, "driving");
+    ASSERT_TRUE(r.replay && r.replay->status.ok());
+    EXPECT_LT((r.waypoints.front().angles - at.angles).cwiseAbs().maxCoeff(), 1e-9);
+    EXPECT_LT((r.waypoints.back().angles - req.goal.angles).cwiseAbs().maxCoeff(), 1e-6);
+    for (const FoldState& w : r.waypoints) EXPECT_LE(sys.max_error(w), 1e-10);
+    so_far = r.sequence;
+    at = r.waypoints.back();
+  }
+}
+
+}  // namespace
