@@ -7,6 +7,7 @@
 #include <utility>
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/util/Console.h>
 #include <ompl/geometric/planners/est/BiEST.h>
 #include <ompl/geometric/planners/est/EST.h>
 #include <ompl/geometric/planners/est/ProjEST.h>
@@ -124,6 +125,13 @@ std::pair<std::string, std::string> parse_planner_param(const std::string& text)
 
 void check_planner_params(const std::string& planner, const std::vector<std::string>& params) {
   if (params.empty()) return;
+  // OMPL announces each parameter set at its debug level, on stdout: silent here, where nothing
+  // is planned (a CLI's --json owns stdout).
+  struct Quiet {
+    ompl::msg::LogLevel before = ompl::msg::getLogLevel();
+    Quiet() { ompl::msg::setLogLevel(ompl::msg::LOG_NONE); }
+    ~Quiet() { ompl::msg::setLogLevel(before); }
+  } quiet;
   auto box = std::make_shared<ompl::base::RealVectorStateSpace>(1);
   box->setBounds(0.0, 1.0);
   auto si = std::make_shared<ompl::base::SpaceInformation>(box);

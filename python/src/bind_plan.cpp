@@ -37,7 +37,8 @@ void bind_plan(py::module_& m) {
       "plan",
       [](const geometry::CreasePattern& p, const Eigen::VectorXd& goal, const py::object& start, const std::string& space,
          const std::string& planner, double time, unsigned seed, bool collisions, bool use_assignment, bool simplify,
-         double search_margin, double waypoint_step, double velocity, bool replay) {
+         double search_margin, double waypoint_step, double velocity, bool replay,
+         const std::map<std::string, std::string>& params) {
         require_positive(time, "time");
         require_positive(waypoint_step, "waypoint_step");
         require_positive(velocity, "velocity");
@@ -65,6 +66,7 @@ void bind_plan(py::module_& m) {
         req.waypoint_step = waypoint_step;
         req.velocity = velocity;
         req.replay = replay;
+        req.params.assign(params.begin(), params.end());
         py::gil_scoped_release release;
         return planners::plan(req);
       },
@@ -72,12 +74,14 @@ void bind_plan(py::module_& m) {
       py::arg("planner") = "RRTConnect", py::arg("time") = 5.0, py::arg("seed") = 1u, py::arg("collisions") = true,
       py::arg("use_assignment") = true, py::arg("simplify") = true, py::arg("search_margin") = -1.0,
       py::arg("waypoint_step") = 0.02, py::arg("velocity") = 1.0, py::arg("replay") = true,
+      py::arg("params") = std::map<std::string, std::string>{},
       "Plans from `start` to the closed state `goal`. `start` is None (flat), a FoldSequence (its end state is the start; "
       "the plan's sequence begins with it, as the CLI's --start CMML), or a closed state: then the plan's sequence reaches "
       "it from flat in one straight event, which the replay accepts only where that line stays closed (pass the "
       "FoldSequence otherwise). Planning runs "
       "an OMPL planner by name, as `foldkit plan`: space 'auto', 'single-vertex', 'driving', 'projected', 'atlas' or "
-      "'tangent-bundle'; `time` seconds at most; the same seed gives the same plan. Returns a PlanResult (check `solved`).");
+      "'tangent-bundle'; `time` seconds at most; the same seed gives the same plan. `params` sets planner parameters by "
+      "OMPL's names, e.g. {'range': '0.3'} (ValueError for one the planner does not have). Returns a PlanResult (check `solved`).");
   m.def("planners", &planners::planner_names, "The planner names plan() accepts.");
 }
 

@@ -143,6 +143,7 @@ TEST(PlanCli, PlannerParametersByName) {
   const auto ok = foldkit({"plan", c.pattern, "--goal", c.goal, "--param", "range=0.3", "--param", "intermediate_states=1",
                            "--time", "2", "--seed", "4", "-o", out, "--json"});
   ASSERT_EQ(ok.exit, 0) << ok.err;
+  EXPECT_TRUE(nlohmann::json::parse(ok.out)["solved"].get<bool>()) << ok.out;  // stdout holds the JSON alone
   EXPECT_TRUE(std::filesystem::exists(out));
   std::filesystem::remove(out);
   const auto unknown = foldkit({"plan", c.pattern, "--goal", c.goal, "--param", "nonsense=1", "-o", out});

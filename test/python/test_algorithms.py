@@ -59,6 +59,26 @@ def test_plan_single_vertex_matches_cli(cli, tmp_path):
     assert r.replay.valid
 
 
+def test_plan_miura_in_the_driving_space_matches_cli(cli, tmp_path):
+    p = foldkit.generators.miura(6, 6)
+    goal = foldkit.fold(p, fraction=0.5).states[-1]
+    pmml, goal_cmml = tmp_path / "m.pmml", tmp_path / "goal.cmml"
+    foldkit.write_pmml(str(pmml), p)
+    foldkit.write_cmml(str(goal_cmml), foldkit.sequence_to(p, goal))
+    goal = foldkit.read_state(p, str(goal_cmml))
+    rc, expected, err = cli("plan", pmml, "--goal", goal_cmml, "--param", "range=0.3", "--time", 10, "--seed", 3,
+                            "-o", tmp_path / "plan.cmml")
+    assert rc == 0, err
+    r = foldkit.plan(p, goal, time=10, seed=3, params={"range": "0.3"})
+    assert r.solved and r.space == expected["space"] == "driving"
+    assert len(r.waypoints) == expected["waypoints"]
+    system = foldkit.ClosureSystem(p)
+    assert max(system.max_error(s) for s in r.waypoints) <= 1e-10
+    assert r.replay.valid
+    with pytest.raises(ValueError, match="range"):
+        foldkit.plan(p, goal, params={"nonsense": "1"})
+
+
 def test_plan_is_seeded_and_starts_anywhere():
     p, goal = single_vertex_goal()
     a = foldkit.plan(p, goal, seed=7, time=5)
