@@ -320,3 +320,28 @@ TEST(Plan, DrivingSpaceFromOneFoldedStateToAnother) {
 }
 
 }  // namespace
+
+namespace {
+
+// PRM and PRM* check and interpolate from several threads: the driving space hands each thread a
+// solver of its own (scripts/test-tsan.sh runs this under ThreadSanitizer).
+TEST(Plan, ThreadedPlannersInTheDrivingSpace) {
+  const CreasePattern p = build_or_throw(gen::miura(4, 4));
+  Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
+  for (std::size_t j = 0; j < p.joints().size(); ++j)
+    g[static_cast<Eigen::Index>(j)] = p.joints()[j].assignment == foldkit::geometry::Assignment::Mountain ? 1.0 : -1.0;
+  for (const char* planner : {"PRM", "PRMstar"}) {
+    PlanRequest req;
+    req.pattern = &p;
+    req.goal = projected_goal(p, g);
+    req.space = SpaceKind::Driving;
+    req.planner = planner;
+    req.time = 2.0;
+    req.seed = 5;
+    const PlanResult r = plan(req);
+    SCOPED_TRACE(planner);
+    expect_valid_plan(p, req, r);
+  }
+}
+
+}  // namespace
