@@ -109,19 +109,16 @@ int list(bool json) {
   return kOk;
 }
 
-}  // namespace
+struct BenchArgs {
+  std::string suite, output, shard = "1/1", planners, scenes, error_vs_time, space = "auto";
+  std::vector<std::string> params;
+  double time = 1.0;
+  unsigned int runs = 10, seed = 1;
+  bool json = false, list = false, simplify = false;
+};
 
-Command add_bench(CLI::App& root) {
-  struct Options {
-    std::string suite, output, shard = "1/1", planners, scenes, error_vs_time, space = "auto";
-    std::vector<std::string> params;
-    double time = 1.0;
-    unsigned int runs = 10, seed = 1;
-    bool json = false, list = false, simplify = false;
-  };
-  auto opt = std::make_shared<Options>();
-  CLI::App* app = root.add_subcommand("bench", "Benchmark planners on built-in scenes (OMPL benchmark logs)");
-  app->add_option("suite", opt->suite, "Suite: quick or full (see --list)");
+void add_bench_options(CLI::App* app, const std::shared_ptr<BenchArgs>& opt) {
+  app->add_option("suite", opt->suite, "Suite: quick, full or miura-scale (see --list)");
   app->add_option("--time", opt->time, "Seconds per run")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_option("--runs", opt->runs, "Runs per planner and scene (per time limit with --error-vs-time)")
       ->check(CLI::PositiveNumber)
@@ -141,6 +138,14 @@ Command add_bench(CLI::App& root) {
   app->add_option("-o,--output", opt->output, "Output folder");
   app->add_flag("--list", opt->list, "List suites, scenes and planners");
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+}
+
+}  // namespace
+
+Command add_bench(CLI::App& root) {
+  auto opt = std::make_shared<BenchArgs>();
+  CLI::App* app = root.add_subcommand("bench", "Benchmark planners on built-in scenes (OMPL benchmark logs)");
+  add_bench_options(app, opt);
   return {app, [opt]() -> int {
             if (opt->list) return list(opt->json);
             if (opt->suite.empty()) throw UsageError("name a suite (quick, full; see --list)");

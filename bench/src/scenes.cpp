@@ -4,6 +4,7 @@
 // single vertex, as benchmarks/measure_planning.cpp does; projected onto the closure manifold
 // for the other patterns) is closed, within the bounds and free of crossing facets.
 #include <cmath>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
@@ -151,6 +152,33 @@ BenchScene scene_of(const std::string& name, geometry::PatternSpec spec, std::st
   return s;
 }
 
+// The Miura scenes: miura4x4 and miura10x10 (random partly folded goals), miuraNxN-80 (every
+// zig-zag at ±80°); nothing for another name.
+std::optional<BenchScene> miura_scene(const std::string& name, std::mt19937& rng) {
+  if (name == "miura4x4" || name == "miura10x10") {
+    const int n = name == "miura4x4" ? 4 : 10;
+    BenchScene s = scene_of(name, gen::miura(n, n), "Miura-ori " + std::to_string(n) + "×" + std::to_string(n) +
+                                                       ", flat to partly folded along its rigid-folding mode");
+    s.request.use_assignment = true;
+    s.request.search_margin = 0.2;  // see plan_test: Miura's many branches through flat
+    const Eigen::VectorXd dir = assignment_signs(*s.pattern);
+    s.request.goal = projected_goal(s.request, rng, [dir](std::mt19937& r) {
+      return Eigen::VectorXd(dir * std::uniform_real_distribution<double>(0.3, 0.9)(r));
+    }, name);
+    return s;
+  }
+  for (int n : {10, 20, 40}) {
+    if (name != "miura" + std::to_string(n) + "x" + std::to_string(n) + "-80") continue;
+    BenchScene s = scene_of(name, gen::miura(n, n), "Miura-ori " + std::to_string(n) + "×" + std::to_string(n) +
+                                                       ", flat to every zig-zag crease at ±80° (issue 16); the goal "
+                                                       "does not depend on the seed");
+    s.request.use_assignment = true;
+    s.request.goal = miura_folded(*s.pattern, n, n, 80.0 * M_PI / 180.0);
+    return s;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::vector<std::string> bench_scene_names() {
@@ -186,27 +214,7 @@ BenchScene make_bench_scene(const std::string& name, unsigned int seed) {
     }, name);
     return s;
   }
-  if (name == "miura4x4" || name == "miura10x10") {
-    const int n = name == "miura4x4" ? 4 : 10;
-    BenchScene s = scene_of(name, gen::miura(n, n), "Miura-ori " + std::to_string(n) + "×" + std::to_string(n) +
-                                                       ", flat to partly folded along its rigid-folding mode");
-    s.request.use_assignment = true;
-    s.request.search_margin = 0.2;  // see plan_test: Miura's many branches through flat
-    const Eigen::VectorXd dir = assignment_signs(*s.pattern);
-    s.request.goal = projected_goal(s.request, rng, [dir](std::mt19937& r) {
-      return Eigen::VectorXd(dir * std::uniform_real_distribution<double>(0.3, 0.9)(r));
-    }, name);
-    return s;
-  }
-  for (int n : {10, 20, 40}) {
-    if (name != "miura" + std::to_string(n) + "x" + std::to_string(n) + "-80") continue;
-    BenchScene s = scene_of(name, gen::miura(n, n), "Miura-ori " + std::to_string(n) + "×" + std::to_string(n) +
-                                                       ", flat to every zig-zag crease at ±80° (issue 16); the goal "
-                                                       "does not depend on the seed");
-    s.request.use_assignment = true;
-    s.request.goal = miura_folded(*s.pattern, n, n, 80.0 * M_PI / 180.0);
-    return s;
-  }
+  if (auto s = miura_scene(name, rng)) return *s;
   if (name == "waterbomb") {
     BenchScene s = scene_of(name, gen::waterbomb(2, 2), "waterbomb tessellation, 2 units × 2 rows, flat to partly folded");
     s.request.use_assignment = true;
