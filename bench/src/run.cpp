@@ -190,6 +190,11 @@ Resolved resolve(const BenchOptions& o) {
   for (const auto& p : o.planners.empty() ? r.suite->planners : o.planners) r.planners.push_back(canonical_bench_planner(p));
   if (!(o.time > 0.0) || !std::isfinite(o.time)) throw std::invalid_argument("the time per run must be positive");
   if (o.runs == 0) throw std::invalid_argument("at least one run per planner");
+  if (o.space != "auto") planners::parse_space(o.space);  // throws, naming the spaces
+  std::vector<std::string> params;  // checked against every sampling planner before anything is written
+  for (const auto& [k, v] : o.params) params.push_back(k + "=" + v);
+  for (const auto& p : r.planners)
+    if (!is_deterministic_planner(p)) planners::check_planner_params(p, params);
   if (o.shards == 0 || o.shard == 0 || o.shard > o.shards)
     throw std::invalid_argument("--shard " + std::to_string(o.shard) + "/" + std::to_string(o.shards) +
                                 " is not K/N with 1 <= K <= N");

@@ -198,6 +198,9 @@ TEST(BenchCli, BadArgumentsExitTwo) {
            {"bench", "quick", "--time", "-1", "-o", out},
            {"bench", "quick", "--error-vs-time", "0.1,0", "-o", out},
            {"bench", "quick", "--error-vs-time", "0.1", "--shard", "1/2", "-o", out},
+           {"bench", "quick", "--space", "nowhere", "-o", out},
+           {"bench", "quick", "--scenes", "boat", "--planners", "RRTConnect", "--param", "nonsense=1", "-o", out},
+           {"bench", "quick", "--param", "range", "-o", out},
            {"bench-merge", "-o", out},
            {"bench-merge", out + "/missing", "-o", out},
        }) {
@@ -214,7 +217,8 @@ TEST(BenchCli, ListNamesSuitesScenesAndPlanners) {
   ASSERT_EQ(r.exit, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["suites"][0]["name"], "quick");
-  EXPECT_EQ(j["scenes"].size(), 14u);
+  EXPECT_EQ(j["scenes"].size(), 17u);
+  EXPECT_EQ(j["suites"][2]["name"], "miura-scale");
   EXPECT_NE(std::find(j["planners"]["deterministic"].begin(), j["planners"]["deterministic"].end(), "ProjectedLine"),
             j["planners"]["deterministic"].end());
 }
