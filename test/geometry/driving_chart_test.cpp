@@ -86,7 +86,7 @@ TEST(DrivingChart, SeveralDrivingCreases) {
     FoldState goal = p.interior_vertices().size() == 1 ? FoldState::flat(p) : folded(p, 0.4);
     if (p.interior_vertices().size() == 1) {  // no assignment: alternate the signs
       Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
-      for (Eigen::Index j = 0; j < g.size(); ++j) g[j] = (j % 2 ? -0.3 : 0.4) + 0.02 * j;
+      for (Eigen::Index j = 0; j < g.size(); ++j) g[j] = (j % 2 ? -0.3 : 0.4) + 0.02 * static_cast<double>(j);
       ProjectionOptions po;
       po.tolerance = 1e-12;
       const auto r = project(sys, FoldState{g}, po);
