@@ -18,6 +18,7 @@
 #include "foldkit/bench/log.hpp"
 #include "foldkit/bench/run.hpp"
 #include "foldkit/bench/scenes.hpp"
+#include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 
 namespace foldkit::apps {
@@ -127,8 +128,8 @@ void add_bench_options(CLI::App* app, const std::shared_ptr<BenchArgs>& opt) {
   app->add_option("--seed", opt->seed, "Seed of the scenes' goals and of OMPL")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_option("--planners", opt->planners, "Planners, comma-separated (default: the suite's)");
   app->add_option("--scenes", opt->scenes, "Scenes, comma-separated (default: the suite's)");
-  app->add_option("--space", opt->space, "Space of every scene: auto (each scene's own), single-vertex, driving, projected, atlas, tangent-bundle")
-      ->check(CLI::IsMember({"auto", "single-vertex", "driving", "projected", "atlas", "tangent-bundle"}))
+  app->add_option("--space", opt->space, "Space of every scene (auto: each scene's own)")
+      ->check(CLI::IsMember(planners::space_names()))
       ->capture_default_str();
   app->add_option("--param", opt->params, "NAME=VALUE: a sampling planner's parameter by OMPL's name (repeatable)");
   app->add_option("--error-vs-time", opt->error_vs_time,

@@ -38,8 +38,8 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
   goal->excludes(goal_angles);
   goal_angles->excludes(goal);
   app->add_option("--start", opt.start, "CMML whose end state is the start (default: flat)");
-  app->add_option("--space", opt.space, "auto, single-vertex, driving, projected, atlas, tangent-bundle")
-      ->check(CLI::IsMember({"auto", "single-vertex", "driving", "projected", "atlas", "tangent-bundle"}))
+  app->add_option("--space", opt.space, "Space to search (auto: single-vertex for one vertex, else driving)")
+      ->check(CLI::IsMember(planners::space_names()))
       ->capture_default_str();
   app->add_option("--planner", opt.planner, "OMPL geometric planner by name (RRTConnect, RRT*, PRM, KPIECE1, BiTRRT, …)")
       ->capture_default_str();
@@ -93,7 +93,6 @@ void set_start_and_settings(const PlanArgs& opt, const geometry::CreasePattern& 
   }
   req.space = planners::parse_space(opt.space);
   req.planner = opt.planner;
-  for (const auto& p : opt.params) req.params.push_back(planners::parse_planner_param(p));
   req.time = opt.time;
   req.seed = opt.seed;
   req.collisions = !opt.no_collision;
@@ -124,9 +123,11 @@ int report(const PlanArgs& opt, const planners::PlanResult& r) {
 
 int run_plan(PlanArgs& opt) {
   if (kind_of(opt.output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt.output + "'");
+  std::vector<std::pair<std::string, std::string>> params;
   try {
     opt.planner = planners::canonical_planner(opt.planner);
-    planners::check_planner_params(opt.planner, opt.params);
+    for (const auto& p : opt.params) params.push_back(planners::parse_planner_param(p));
+    planners::check_planner_params(opt.planner, params);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
@@ -136,6 +137,7 @@ int run_plan(PlanArgs& opt) {
   if (opt.goal.empty() == opt.goal_angles.empty()) throw UsageError("give the goal as --goal CMML or --goal-angles ID:DEG,…");
   if (!set_goal(opt, pattern, req)) return kNoPlan;
   set_start_and_settings(opt, pattern, req);
+  req.params = params;
   planners::PlanResult r;
   try {
     ProgressLine progress("plan (replay)");

@@ -191,14 +191,19 @@ Resolved resolve(const BenchOptions& o) {
   if (!(o.time > 0.0) || !std::isfinite(o.time)) throw std::invalid_argument("the time per run must be positive");
   if (o.runs == 0) throw std::invalid_argument("at least one run per planner");
   if (o.space != "auto") planners::parse_space(o.space);  // throws, naming the spaces
-  std::vector<std::string> params;  // checked against every sampling planner before anything is written
-  for (const auto& [k, v] : o.params) params.push_back(k + "=" + v);
-  for (const auto& p : r.planners)
-    if (!is_deterministic_planner(p)) planners::check_planner_params(p, params);
+  for (const auto& p : r.planners)  // before anything is written
+    if (!is_deterministic_planner(p)) planners::check_planner_params(p, o.params);
   if (o.shards == 0 || o.shard == 0 || o.shard > o.shards)
     throw std::invalid_argument("--shard " + std::to_string(o.shard) + "/" + std::to_string(o.shards) +
                                 " is not K/N with 1 <= K <= N");
   return r;
+}
+
+// A scene of the run, in the options' space when they name one.
+BenchScene scene_for(const BenchOptions& o, const std::string& name) {
+  BenchScene scene = make_bench_scene(name, o.seed);
+  if (o.space != "auto") scene.request.space = planners::parse_space(o.space);
+  return scene;
 }
 
 // The scene's space, planner setup and way out of its start; a scene whose way out collides is
@@ -248,8 +253,7 @@ class SceneRun {
 
   BenchSceneResult run() {
     if (std::all_of(runs_of_.begin(), runs_of_.end(), [](const auto& v) { return v.empty(); })) return result_;
-    scene_ = make_bench_scene(result_.scene, o_.seed);
-    if (o_.space != "auto") scene_.request.space = planners::parse_space(o_.space);
+    scene_ = scene_for(o_, result_.scene);
     setup_ = scene_setup(scene_);
     // The planners, in the suite's order; those with as many runs in this shard share one
     // Benchmark (each Benchmark estimates the space's properties for its log header: seconds).
@@ -385,8 +389,7 @@ std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::
   std::size_t done = 0;
   std::vector<ErrorVsTimeRow> rows;
   for (const auto& scene_name : res.scenes) {
-    BenchScene scene = make_bench_scene(scene_name, o.seed);
-    if (o.space != "auto") scene.request.space = planners::parse_space(o.space);
+    const BenchScene scene = scene_for(o, scene_name);
     const PlanSetup setup = scene_setup(scene);
     const double start_distance = (setup.start.angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
     for (const auto& name : res.planners) {

@@ -121,9 +121,9 @@ Status PassiveSolver::follow(const FoldState& from, const Eigen::VectorXd& targe
     out = x;
     return {st.code, "the start does not close: " + st.message};
   }
-  // A fresh factorisation at the start, so that the first tangent is the start's own.
+  // A fresh factorisation at the start, so that the first tangent is the start's own (correct()
+  // ended by evaluating r_ and J_ there).
   Eigen::VectorXd unused;
-  evaluate_passive(x);
   factored_ = solver_.min_norm_step(J_, r_, unused) || factored_;
   if (path) path->push_back(x);
   const Eigen::VectorXd d0 = driving_of(x), D = target - d0;

@@ -15,10 +15,10 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include "foldkit/geometry/closure_path.hpp"
+#include "foldkit/geometry/driving_chart.hpp"
 #include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/planners/planner_factory.hpp"
-#include "foldkit/geometry/driving_chart.hpp"
 #include "foldkit/statespaces/closure_constraint.hpp"
 #include "foldkit/statespaces/driving_space.hpp"
 #include "foldkit/statespaces/single_vertex_space.hpp"
@@ -30,14 +30,25 @@ namespace ob = ompl::base;
 namespace og = ompl::geometric;
 using geometry::FoldState;
 
+namespace {
+
+constexpr SpaceKind kSpaceKinds[] = {SpaceKind::Auto,      SpaceKind::SingleVertex, SpaceKind::Driving,
+                                     SpaceKind::Projected, SpaceKind::Atlas,        SpaceKind::TangentBundle};
+
+}  // namespace
+
+std::vector<std::string> space_names() {
+  std::vector<std::string> names;
+  for (SpaceKind k : kSpaceKinds) names.emplace_back(to_string(k));
+  return names;
+}
+
 SpaceKind parse_space(const std::string& name) {
-  if (name == "auto") return SpaceKind::Auto;
-  if (name == "single-vertex") return SpaceKind::SingleVertex;
-  if (name == "driving") return SpaceKind::Driving;
-  if (name == "projected") return SpaceKind::Projected;
-  if (name == "atlas") return SpaceKind::Atlas;
-  if (name == "tangent-bundle") return SpaceKind::TangentBundle;
-  throw std::invalid_argument("unknown space '" + name + "' (auto, single-vertex, driving, projected, atlas, tangent-bundle)");
+  for (SpaceKind k : kSpaceKinds)
+    if (name == to_string(k)) return k;
+  std::string known;
+  for (const auto& n : space_names()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown space '" + name + "' (" + known + ")");
 }
 
 const char* to_string(SpaceKind kind) {

@@ -123,7 +123,7 @@ std::pair<std::string, std::string> parse_planner_param(const std::string& text)
   return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
-void check_planner_params(const std::string& planner, const std::vector<std::string>& params) {
+void check_planner_params(const std::string& planner, const std::vector<std::pair<std::string, std::string>>& params) {
   if (params.empty()) return;
   // OMPL announces each parameter set at its debug level, on stdout: silent here, where nothing
   // is planned (a CLI's --json owns stdout).
@@ -135,9 +135,7 @@ void check_planner_params(const std::string& planner, const std::vector<std::str
   auto box = std::make_shared<ompl::base::RealVectorStateSpace>(1);
   box->setBounds(0.0, 1.0);
   auto si = std::make_shared<ompl::base::SpaceInformation>(box);
-  std::vector<std::pair<std::string, std::string>> parsed;
-  for (const auto& p : params) parsed.push_back(parse_planner_param(p));
-  set_planner_params(*make_planner(planner, si), planner, parsed);
+  set_planner_params(*make_planner(planner, si), planner, params);
 }
 
 std::vector<std::string> planner_names() {

@@ -106,13 +106,6 @@ void DrivingStateSpace::give(std::unique_ptr<Worker> worker) const {
   pool_.push_back(std::move(worker));
 }
 
-long DrivingStateSpace::solver_iterations() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  long sum = 0;
-  for (const auto& w : pool_) sum += w->solver.iterations();
-  return sum;
-}
-
 bool DrivingStateSpace::add_anchor(const FoldState& state) {
   if (static_cast<std::size_t>(state.angles.size()) != n_) return false;
   FoldState corrected = state;

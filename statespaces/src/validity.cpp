@@ -1,6 +1,7 @@
 #include "foldkit/statespaces/validity.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/constraint/ConstrainedStateSpace.h>
@@ -11,22 +12,25 @@ namespace foldkit::statespaces {
 
 namespace ob = ompl::base;
 
-StateReader driving_reader(std::shared_ptr<const DrivingStateSpace> space) {
+namespace {
+
+// Both exact spaces hold every angle of a state and whether it closes.
+template <class Space>
+StateReader closed_angles_reader(std::shared_ptr<const Space> space) {
   return [space](const ob::State* state, geometry::FoldState& out) {
-    const auto* s = state->as<DrivingStateSpace::StateType>();
+    const auto* s = state->as<typename Space::StateType>();
     if (!s->closed) return false;
     out.angles = Eigen::Map<const Eigen::VectorXd>(s->angles, static_cast<Eigen::Index>(space->joints()));
     return true;
   };
 }
 
+}  // namespace
+
+StateReader driving_reader(std::shared_ptr<const DrivingStateSpace> space) { return closed_angles_reader(std::move(space)); }
+
 StateReader single_vertex_reader(std::shared_ptr<const SingleVertexStateSpace> space) {
-  return [space](const ob::State* state, geometry::FoldState& out) {
-    const auto* s = state->as<SingleVertexStateSpace::StateType>();
-    if (!s->closed) return false;
-    out.angles = Eigen::Map<const Eigen::VectorXd>(s->angles, static_cast<Eigen::Index>(space->joints()));
-    return true;
-  };
+  return closed_angles_reader(std::move(space));
 }
 
 StateReader constrained_reader() {

@@ -10,6 +10,7 @@
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/projection.hpp"
+#include "folded_state.hpp"
 #include "spec_helpers.hpp"
 
 namespace {
@@ -17,24 +18,14 @@ namespace {
 namespace gen = foldkit::geometry::generators;
 using namespace foldkit::geometry;
 
-// A closed folded state: the assignment's direction at `angle`, projected onto closure.
-FoldState folded(const CreasePattern& p, double angle) {
-  Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
-  for (std::size_t j = 0; j < p.joints().size(); ++j)
-    g[static_cast<Eigen::Index>(j)] = p.joints()[j].assignment == Assignment::Valley ? -angle : angle;
-  ProjectionOptions po;
-  po.tolerance = 1e-12;
-  const auto r = project(ClosureSystem(p), FoldState{g}, po);
-  EXPECT_TRUE(r.status.ok()) << r.status.message;
-  return r.state;
-}
+using foldkit::test::folded_along_assignment;
 
 TEST(DrivingChart, MiuraHasOneDrivingCreaseAndItsPassivesFollow) {
   for (int n : {2, 5, 12}) {
     SCOPED_TRACE("Miura " + std::to_string(n));
     const CreasePattern p = build_or_throw(gen::miura(n, n));
     const ClosureSystem sys(p);
-    const FoldState goal = folded(p, 0.7);
+    const FoldState goal = folded_along_assignment(p, 0.7);
     const Mobility m = mobility(sys, goal);
     ASSERT_EQ(m.dof, 1);
     const DrivingChart chart = choose_driving_chart(sys, goal, m.dof);
@@ -83,7 +74,7 @@ TEST(DrivingChart, SeveralDrivingCreases) {
   for (const PatternSpec& spec : {gen::single_vertex(gen::random_sectors(8, rng, 0.3)), gen::waterbomb(2, 2)}) {
     const CreasePattern p = build_or_throw(spec);
     const ClosureSystem sys(p);
-    FoldState goal = p.interior_vertices().size() == 1 ? FoldState::flat(p) : folded(p, 0.4);
+    FoldState goal = p.interior_vertices().size() == 1 ? FoldState::flat(p) : folded_along_assignment(p, 0.4);
     if (p.interior_vertices().size() == 1) {  // no assignment: alternate the signs
       Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
       for (Eigen::Index j = 0; j < g.size(); ++j) g[j] = (j % 2 ? -0.3 : 0.4) + 0.02 * static_cast<double>(j);
@@ -109,7 +100,7 @@ TEST(DrivingChart, SeveralDrivingCreases) {
 TEST(DrivingChart, RefusesAWrongDof) {
   const CreasePattern p = build_or_throw(gen::miura(3, 3));
   const ClosureSystem sys(p);
-  const FoldState goal = folded(p, 0.5);
+  const FoldState goal = folded_along_assignment(p, 0.5);
   EXPECT_THROW(choose_driving_chart(sys, goal, 3), std::invalid_argument);  // the null space has 1 dimension
   EXPECT_THROW(choose_driving_chart(sys, goal, -1), std::invalid_argument);
   EXPECT_TRUE(choose_driving_chart(sys, goal, 0).driving.empty());

@@ -16,6 +16,7 @@
 #include "foldkit/simulation/collision_world.hpp"
 #include "foldkit/statespaces/single_vertex_space.hpp"
 #include "foldkit/statespaces/validity.hpp"
+#include "folded_state.hpp"
 #include "spec_helpers.hpp"
 
 namespace {
@@ -30,6 +31,7 @@ using foldkit::planners::plan;
 using foldkit::planners::PlanRequest;
 using foldkit::planners::PlanResult;
 using foldkit::planners::SpaceKind;
+using foldkit::test::folded_along_assignment;
 
 // A random closed folded goal (active angles within `max_angle` of flat) that is reachable: the
 // straight way from flat in the active angles is closed and, when asked, collision-free.
@@ -232,12 +234,9 @@ TEST(Plan, MiuraSheetsInTheDrivingSpaceWithDefaultOptions) {
   for (int n : {4, 6, 10}) {
     SCOPED_TRACE("Miura " + std::to_string(n));
     const CreasePattern p = build_or_throw(gen::miura(n, n));
-    Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
-    for (std::size_t j = 0; j < p.joints().size(); ++j)
-      g[static_cast<Eigen::Index>(j)] = p.joints()[j].assignment == foldkit::geometry::Assignment::Mountain ? 1.2 : -1.2;
     PlanRequest req;
     req.pattern = &p;
-    req.goal = projected_goal(p, g);
+    req.goal = folded_along_assignment(p, 1.2);
     req.time = 20.0;  // generous for sanitizer builds; well under a second in Release
     req.seed = 3;
     const PlanResult r = plan(req);
@@ -254,12 +253,9 @@ TEST(Plan, MiuraSheetsInTheDrivingSpaceWithDefaultOptions) {
 // and an unknown one refused with the names the planner has.
 TEST(Plan, PlannerParametersByName) {
   const CreasePattern p = build_or_throw(gen::miura(4, 4));
-  Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
-  for (std::size_t j = 0; j < p.joints().size(); ++j)
-    g[static_cast<Eigen::Index>(j)] = p.joints()[j].assignment == foldkit::geometry::Assignment::Mountain ? 1.0 : -1.0;
   PlanRequest req;
   req.pattern = &p;
-  req.goal = projected_goal(p, g);
+  req.goal = folded_along_assignment(p, 1.0);
   req.time = 20.0;
   req.replay = false;
   req.simplify = false;
@@ -273,8 +269,11 @@ TEST(Plan, PlannerParametersByName) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("range"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(foldkit::planners::check_planner_params("RRTConnect", {"range"}), std::invalid_argument);
-  EXPECT_NO_THROW(foldkit::planners::check_planner_params("KPIECE1", {"range=0.2", "border_fraction=0.8"}));
+  EXPECT_THROW(foldkit::planners::parse_planner_param("range"), std::invalid_argument);
+  EXPECT_THROW(foldkit::planners::parse_planner_param("=0.3"), std::invalid_argument);
+  EXPECT_EQ(foldkit::planners::parse_planner_param("range=0.3"), std::make_pair(std::string("range"), std::string("0.3")));
+  EXPECT_THROW(foldkit::planners::check_planner_params("RRTConnect", {{"range", "fast"}}), std::invalid_argument);
+  EXPECT_NO_THROW(foldkit::planners::check_planner_params("KPIECE1", {{"range", "0.2"}, {"border_fraction", "0.8"}}));
 }
 
 }  // namespace
@@ -286,18 +285,12 @@ namespace {
 // every waypoint closed.
 TEST(Plan, DrivingSpaceFromOneFoldedStateToAnother) {
   const CreasePattern p = build_or_throw(gen::miura(6, 6));
-  auto folded = [&](double a) {
-    Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
-    for (std::size_t j = 0; j < p.joints().size(); ++j)
-      g[static_cast<Eigen::Index>(j)] = p.joints()[j].assignment == foldkit::geometry::Assignment::Mountain ? a : -a;
-    return projected_goal(p, g);
-  };
   const ClosureSystem sys(p);
   PlanRequest req;
   req.pattern = &p;
   req.time = 20.0;
   req.seed = 2;
-  req.goal = folded(0.6);
+  req.goal = folded_along_assignment(p, 0.6);
   const PlanResult first = plan(req);
   ASSERT_TRUE(first.status.ok()) << first.status.message;
   foldkit::geometry::FoldSequence so_far = first.sequence;
@@ -306,7 +299,7 @@ TEST(Plan, DrivingSpaceFromOneFoldedStateToAnother) {
     SCOPED_TRACE(next);
     req.start = at;
     req.start_sequence = so_far;
-    req.goal = folded(next);
+    req.goal = folded_along_assignment(p, next);
     const PlanResult r = plan(req);
     ASSERT_TRUE(r.status.ok()) << r.status.message;
     EXPECT_EQ(r.space, "driving");
@@ -327,13 +320,10 @@ namespace {
 // solver of its own (scripts/test-tsan.sh runs this under ThreadSanitizer).
 TEST(Plan, ThreadedPlannersInTheDrivingSpace) {
   const CreasePattern p = build_or_throw(gen::miura(4, 4));
-  Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
-  for (std::size_t j = 0; j < p.joints().size(); ++j)
-    g[static_cast<Eigen::Index>(j)] = p.joints()[j].assignment == foldkit::geometry::Assignment::Mountain ? 1.0 : -1.0;
   for (const char* planner : {"PRM", "PRMstar"}) {
     PlanRequest req;
     req.pattern = &p;
-    req.goal = projected_goal(p, g);
+    req.goal = folded_along_assignment(p, 1.0);
     req.space = SpaceKind::Driving;
     req.planner = planner;
     req.time = 2.0;

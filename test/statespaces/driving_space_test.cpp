@@ -15,6 +15,7 @@
 #include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/statespaces/driving_space.hpp"
+#include "folded_state.hpp"
 #include "spec_helpers.hpp"
 
 namespace {
@@ -39,12 +40,7 @@ Space make_space(const PatternSpec& spec, double angle) {
   s.pattern = std::make_shared<const CreasePattern>(build_or_throw(spec));
   s.system = std::make_shared<const ClosureSystem>(*s.pattern);
   const CreasePattern& p = *s.pattern;
-  Eigen::VectorXd g(static_cast<Eigen::Index>(p.joints().size()));
-  for (std::size_t j = 0; j < p.joints().size(); ++j)
-    g[static_cast<Eigen::Index>(j)] = p.joints()[j].assignment == Assignment::Valley ? -angle : angle;
-  ProjectionOptions po;
-  po.tolerance = 1e-12;
-  s.goal = project(*s.system, FoldState{g}, po).state;
+  s.goal = foldkit::test::folded_along_assignment(p, angle);
   const Mobility m = mobility(*s.system, s.goal);
   DrivingChart chart = choose_driving_chart(*s.system, s.goal, m.dof);
   const auto d = static_cast<Eigen::Index>(chart.driving.size());

@@ -28,6 +28,8 @@ enum class SpaceKind {
 /// The space named "auto", "single-vertex", "driving", "projected", "atlas" or "tangent-bundle".
 /// @throws std::invalid_argument for any other name
 SpaceKind parse_space(const std::string& name);
+/// The names parse_space() reads, in the order of SpaceKind ("auto" first): for command lines.
+std::vector<std::string> space_names();
 /// The kind's name, as parse_space() reads it.
 const char* to_string(SpaceKind kind);
 

@@ -27,11 +27,10 @@ void set_planner_params(ompl::base::Planner& planner, const std::string& name,
 /// Parses "NAME=VALUE" into its two parts.
 /// @throws std::invalid_argument when there is no '=' or the name is empty
 std::pair<std::string, std::string> parse_planner_param(const std::string& text);
-/// Checks "NAME=VALUE" parameters against the planner's ParamSet before there is a problem to
-/// plan (a planner made on a one-dimensional box): for command lines that answer a bad
-/// parameter as a usage error.
-/// @throws std::invalid_argument as parse_planner_param() and set_planner_params() do
-void check_planner_params(const std::string& planner, const std::vector<std::string>& params);
+/// Checks parameters against the planner's ParamSet before there is a problem to plan (a planner
+/// made on a one-dimensional box): for command lines that answer a bad parameter as a usage error.
+/// @throws std::invalid_argument as set_planner_params() does
+void check_planner_params(const std::string& planner, const std::vector<std::pair<std::string, std::string>>& params);
 /// The canonical names above, in that order.
 std::vector<std::string> planner_names();
 /// The canonical name of a planner.

@@ -83,8 +83,6 @@ class DrivingStateSpace : public ompl::base::StateSpace {
   void solve(const Eigen::VectorXd& driving, const geometry::FoldState* from, ompl::base::State* state) const;
   /// The driving angles of `state`, chart order.
   Eigen::VectorXd driving_of(const ompl::base::State* state) const;
-  /// Newton iterations of all solvers so far (benchmarks).
-  long solver_iterations() const;
 
   /// The number of driving creases (the degrees of freedom).
   unsigned int getDimension() const override;
@@ -145,7 +143,7 @@ class DrivingStateSpace : public ompl::base::StateSpace {
   std::size_t n_;
   std::vector<geometry::FoldState> anchors_;
   std::vector<Eigen::VectorXd> anchor_driving_;
-  mutable std::mutex mutex_;  // guards pool_ and retired_iterations_
+  mutable std::mutex mutex_;  // guards pool_
   mutable std::vector<std::unique_ptr<Worker>> pool_;
 };
 
