@@ -1,4 +1,5 @@
 // foldkit plan: a collision-free, closed fold sequence from a start to a goal, by an OMPL planner.
+#include <algorithm>
 #include <iostream>
 
 #include "cli_common.hpp"
@@ -63,11 +64,21 @@ geometry::FoldSequence read_sequence(const geometry::CreasePattern& pattern, con
   return seq;
 }
 
-// The goal from --goal or --goal-angles; false (after saying so) when no closed state holds the
-// angles asked for.
-bool set_goal(const PlanArgs& opt, const geometry::CreasePattern& pattern, planners::PlanRequest& req) {
+// The line of a sequence's end state in its file: its last fold's (0 when not read from a file).
+int end_line(const geometry::FoldSequence& seq) {
+  int line = 0;
+  if (!seq.events.empty())
+    for (const auto& f : seq.events.back().folds) line = std::max(line, f.line);
+  return line;
+}
+
+// The goal from --goal or --goal-angles (`goal_line`: where the goal CMML ends); false (after
+// saying so) when no closed state holds the angles asked for.
+bool set_goal(const PlanArgs& opt, const geometry::CreasePattern& pattern, planners::PlanRequest& req, int& goal_line) {
   if (!opt.goal.empty()) {
-    req.goal = geometry::end_state(pattern, read_sequence(pattern, opt.goal));
+    const geometry::FoldSequence seq = read_sequence(pattern, opt.goal);
+    req.goal = geometry::end_state(pattern, seq);
+    goal_line = end_line(seq);
     return true;
   }
   std::string why;
@@ -135,7 +146,8 @@ int run_plan(PlanArgs& opt) {
   planners::PlanRequest req;
   req.pattern = &pattern;
   if (opt.goal.empty() == opt.goal_angles.empty()) throw UsageError("give the goal as --goal CMML or --goal-angles ID:DEG,…");
-  if (!set_goal(opt, pattern, req)) return kNoPlan;
+  int goal_line = 0;
+  if (!set_goal(opt, pattern, req, goal_line)) return kNoPlan;
   set_start_and_settings(opt, pattern, req);
   req.params = params;
   planners::PlanResult r;
@@ -143,6 +155,11 @@ int run_plan(PlanArgs& opt) {
     ProgressLine progress("plan (replay)");
     req.progress = progress.callback();
     r = planners::plan(req);
+  } catch (const planners::PlanInputError& e) {
+    // The file the faulty end came from, at the line where its sequence ends.
+    if (e.end() == planners::PlanInputError::End::Start && !opt.start.empty())
+      throw io::ParseError(opt.start, end_line(req.start_sequence), e.what());
+    throw io::ParseError(opt.goal.empty() ? "--goal-angles" : opt.goal, opt.goal.empty() ? 0 : goal_line, e.what());
   } catch (const std::invalid_argument& e) {
     throw io::ParseError(opt.goal.empty() ? "--goal-angles" : opt.goal, 0, e.what());
   }

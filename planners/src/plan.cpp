@@ -86,7 +86,7 @@ void PlanSetup::set_start_and_goal(og::SimpleSetup& ss, const FoldState& goal) c
   ob::ScopedState<> s(space), g(space);
   write(prefix.back(), s.get());
   if (!write(goal, g.get()))
-    throw std::invalid_argument(std::string("plan: the goal is a singular state of the ") + (driving ? "driving" : "single-vertex") +
+    throw PlanInputError(PlanInputError::End::Goal, std::string("plan: the goal is a singular state of the ") + (driving ? "driving" : "single-vertex") +
                                 " space (try --space projected)");
   ss.setStartAndGoalStates(s, g, 1e-9);
   if (kind == SpaceKind::Atlas || kind == SpaceKind::TangentBundle) {
@@ -138,7 +138,7 @@ void set_up_single_vertex_space(PlanSetup& setup, const PlanRequest& req, const 
     // leave it along a short closed segment first.
     setup.prefix = geometry::lead_in(*setup.system, setup.start, req.goal, 3, req.waypoint_step);
     if (setup.prefix.empty() || !sv->from_fold_state(setup.prefix.back(), probe_state.get()))
-      throw std::invalid_argument("plan: no closed way out of the singular start state");
+      throw PlanInputError(PlanInputError::End::Start, "plan: no closed way out of the singular start state");
   }
 }
 
@@ -152,7 +152,7 @@ void set_up_driving_space(PlanSetup& setup, const PlanRequest& req, const states
   if (at_start.rank < rank) {
     // Flat (or another singular state): leave it along a short closed segment first.
     setup.prefix = geometry::lead_in(system, setup.start, req.goal, rank, req.waypoint_step);
-    if (setup.prefix.empty()) throw std::invalid_argument("plan: no closed way out of the singular start state");
+    if (setup.prefix.empty()) throw PlanInputError(PlanInputError::End::Start, "plan: no closed way out of the singular start state");
   }
   const FoldState& from = setup.prefix.back();
   const FoldState& chart_state = at_goal.rank >= rank ? req.goal : from;
@@ -170,8 +170,8 @@ void set_up_driving_space(PlanSetup& setup, const PlanRequest& req, const states
     if (req.goal.angles[j] < 0.0 && from.angles[j] < 0.0) hi[i] = std::min(hi[i], 0.0);
   }
   auto space = std::make_shared<statespaces::DrivingStateSpace>(setup.system, std::move(chart), bounds, lo, hi);
-  if (!space->add_anchor(from)) throw std::invalid_argument("plan: the start is a singular state of the driving space (try --space projected)");
-  if (!space->add_anchor(req.goal)) throw std::invalid_argument("plan: the goal is a singular state of the driving space (try --space projected)");
+  if (!space->add_anchor(from)) throw PlanInputError(PlanInputError::End::Start, "plan: the start is a singular state of the driving space (try --space projected)");
+  if (!space->add_anchor(req.goal)) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal is a singular state of the driving space (try --space projected)");
   setup.driving = space;
   setup.space = space;
   setup.reader = statespaces::driving_reader(space);
@@ -198,7 +198,7 @@ void set_up_constrained_space(PlanSetup& setup, const PlanRequest& req, const st
     // Flat (or another singular state): the Jacobian loses rank, charts cannot be anchored
     // and projections may flip branches; plan from a nearby regular state instead.
     setup.prefix = geometry::lead_in(*setup.system, start, req.goal, rank, req.waypoint_step);
-    if (setup.prefix.empty()) throw std::invalid_argument("plan: no closed way out of the singular start state");
+    if (setup.prefix.empty()) throw PlanInputError(PlanInputError::End::Start, "plan: no closed way out of the singular start state");
   }
 }
 
@@ -206,12 +206,12 @@ void set_up_constrained_space(PlanSetup& setup, const PlanRequest& req, const st
 void check_ends(const PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) {
   const FoldState& start = setup.start;
   const double start_error = setup.system->max_error(start), goal_error = setup.system->max_error(req.goal);
-  if (start_error > 1e-6) throw std::invalid_argument("plan: the start is not closed (error " + std::to_string(start_error) + " rad)");
-  if (goal_error > 1e-6) throw std::invalid_argument("plan: the goal is not closed (error " + std::to_string(goal_error) + " rad)");
-  if (!bounds.contains(start, 1e-9)) throw std::invalid_argument("plan: the start breaks the mountain/valley assignment");
-  if (!bounds.contains(req.goal, 1e-9)) throw std::invalid_argument("plan: the goal breaks the mountain/valley assignment");
-  if (!setup.validity->valid(start)) throw std::invalid_argument("plan: the start state is not valid (facets cross)");
-  if (!setup.validity->valid(req.goal)) throw std::invalid_argument("plan: the goal state is not valid (facets cross)");
+  if (start_error > 1e-6) throw PlanInputError(PlanInputError::End::Start, "plan: the start is not closed (error " + std::to_string(start_error) + " rad)");
+  if (goal_error > 1e-6) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal is not closed (error " + std::to_string(goal_error) + " rad)");
+  if (!bounds.contains(start, 1e-9)) throw PlanInputError(PlanInputError::End::Start, "plan: the start breaks the mountain/valley assignment");
+  if (!bounds.contains(req.goal, 1e-9)) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal breaks the mountain/valley assignment");
+  if (!setup.validity->valid(start)) throw PlanInputError(PlanInputError::End::Start, "plan: the start state is not valid (facets cross)");
+  if (!setup.validity->valid(req.goal)) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal state is not valid (facets cross)");
 }
 
 }  // namespace
@@ -220,10 +220,10 @@ PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
   if (!req.pattern) throw std::invalid_argument("plan: no pattern");
   const geometry::CreasePattern& pattern = *req.pattern;
   const auto n = static_cast<Eigen::Index>(pattern.joints().size());
-  if (req.goal.angles.size() != n) throw std::invalid_argument("plan: the goal does not hold one angle per joint");
+  if (req.goal.angles.size() != n) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal does not hold one angle per joint");
   PlanSetup setup;
   setup.start = req.start ? *req.start : FoldState::flat(pattern);
-  if (setup.start.angles.size() != n) throw std::invalid_argument("plan: the start does not hold one angle per joint");
+  if (setup.start.angles.size() != n) throw PlanInputError(PlanInputError::End::Start, "plan: the start does not hold one angle per joint");
   if (!(req.resolution > 0.0) || !(req.waypoint_step > 0.0) || !(req.velocity > 0.0))
     throw std::invalid_argument("plan: resolution, waypoint step and velocity must be positive");
 

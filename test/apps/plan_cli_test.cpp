@@ -1,5 +1,6 @@
 // foldkit plan: exit codes, JSON keys, byte-identical output for one seed, and the simulator's
 // verdict on the written CMML (oracle: `foldkit simulate`, a separate verb).
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -154,6 +155,30 @@ TEST(PlanCli, PlannerParametersByName) {
   EXPECT_EQ(refused.exit, 2) << refused.err;
   const auto malformed = foldkit({"plan", c.pattern, "--goal", c.goal, "--param", "range", "-o", out});
   EXPECT_EQ(malformed.exit, 2);
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+
+namespace {
+
+// A start or goal that does not close is named by its own file, at the line where its sequence
+// ends (the last fold of its last event), not always by the goal file at line 0; nothing written.
+TEST(PlanCli, AnEndThatDoesNotCloseIsNamedByItsFileAndLine) {
+  const Case c = make_case();
+  const std::string out = c.dir + "/never.cmml";
+  std::filesystem::remove(out);
+  // The line of the file's last <Fold> element, counted here from the text.
+  const std::string text = slurp(c.bad_goal);
+  const std::size_t at = text.rfind("<Fold>");
+  ASSERT_NE(at, std::string::npos);
+  const std::string where = c.bad_goal + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n')) + ":";
+  const auto goal = foldkit({"plan", c.pattern, "--goal", c.bad_goal, "-o", out});
+  EXPECT_EQ(goal.exit, 1);
+  EXPECT_NE(goal.err.find(where + " plan: the goal is not closed"), std::string::npos) << where << '\n' << goal.err;
+  const auto start = foldkit({"plan", c.pattern, "--goal", c.goal, "--start", c.bad_goal, "-o", out});
+  EXPECT_EQ(start.exit, 1);
+  EXPECT_NE(start.err.find(where + " plan: the start is not closed"), std::string::npos) << where << '\n' << start.err;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

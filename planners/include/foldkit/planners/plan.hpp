@@ -3,6 +3,7 @@
 /// Motion planning between two closed fold states with OMPL: the space, the planner, and the
 /// path turned into a CMML sequence the simulator replays (docs/PLANNING.md).
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,6 +33,22 @@ SpaceKind parse_space(const std::string& name);
 std::vector<std::string> space_names();
 /// The kind's name, as parse_space() reads it.
 const char* to_string(SpaceKind kind);
+
+/// A request plan() refuses because of its start or its goal (not closed, breaking the
+/// assignment, colliding, singular for the space): which one, so that a caller can point at the
+/// file it came from. Any other refusal is a plain std::invalid_argument.
+class PlanInputError : public std::invalid_argument {
+ public:
+  /// Which end of the plan is at fault.
+  enum class End { Start, Goal };
+  /// The error, at `end`, with its message.
+  PlanInputError(End end, const std::string& what) : std::invalid_argument(what), end_(end) {}
+  /// Which end of the plan is at fault.
+  End end() const { return end_; }
+
+ private:
+  End end_;
+};
 
 /// A planning problem: from a closed start (flat by default) to a closed goal.
 struct PlanRequest {
