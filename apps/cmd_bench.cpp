@@ -119,7 +119,7 @@ struct BenchArgs {
 };
 
 void add_bench_options(CLI::App* app, const std::shared_ptr<BenchArgs>& opt) {
-  app->add_option("suite", opt->suite, "Suite: quick, full or miura-scale (see --list)");
+  app->add_option("suite", opt->suite, "Suite: quick, full, spaces, vertex-complete or miura-scale (see --list)");
   app->add_option("--time", opt->time, "Seconds per run")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_option("--runs", opt->runs, "Runs per planner and scene (per time limit with --error-vs-time)")
       ->check(CLI::PositiveNumber)
@@ -128,8 +128,17 @@ void add_bench_options(CLI::App* app, const std::shared_ptr<BenchArgs>& opt) {
   app->add_option("--seed", opt->seed, "Seed of the scenes' goals and of OMPL")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_option("--planners", opt->planners, "Planners, comma-separated (default: the suite's)");
   app->add_option("--scenes", opt->scenes, "Scenes, comma-separated (default: the suite's)");
-  app->add_option("--space", opt->space, "Space of every scene (auto: each scene's own)")
-      ->check(CLI::IsMember(planners::space_names()))
+  app->add_option("--space", opt->space,
+                  "Space of every scene (auto: each scene's own); comma-separated spaces run every planner in each, "
+                  "side by side in one log (entries PLANNER@SPACE)")
+      ->check([](const std::string& value) {
+        try {
+          for (const auto& s : split_list(value, "--space")) planners::parse_space(s);
+        } catch (const std::exception& e) {
+          return std::string(e.what());
+        }
+        return std::string();
+      })
       ->capture_default_str();
   app->add_option("--param", opt->params, "NAME=VALUE: a sampling planner's parameter by OMPL's name (repeatable)");
   app->add_option("--error-vs-time", opt->error_vs_time,

@@ -27,7 +27,7 @@ struct PlanArgs {
   std::vector<std::string> params;
   double time = 5.0, search_margin = -1.0;
   unsigned int seed = 1;
-  bool no_collision = false, free_signs = false, json = false;
+  bool no_collision = false, free_signs = false, no_fallback = false, json = false;
 };
 
 void add_plan_options(CLI::App* app, PlanArgs& opt) {
@@ -52,6 +52,8 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
                   "Constrained spaces: sample only within the box of start and goal widened by this (radians)")
       ->check(CLI::NonNegativeNumber);
   app->add_flag("--free-signs", opt.free_signs, "Ignore the pattern's mountain/valley assignment");
+  app->add_flag("--no-fallback", opt.no_fallback,
+                "Single vertex: no spherical Carpenter path when the planner finds none in half of --time");
   app->add_option("-o,--output", opt.output, "Output CMML")->required();
   app->add_flag("--json", opt.json, "Print one JSON object on stdout");
 }
@@ -109,6 +111,7 @@ void set_start_and_settings(const PlanArgs& opt, const geometry::CreasePattern& 
   req.collisions = !opt.no_collision;
   req.search_margin = opt.search_margin;
   req.use_assignment = !opt.free_signs;
+  req.fallback = !opt.no_fallback;
 }
 
 int report(const PlanArgs& opt, const planners::PlanResult& r) {
@@ -122,6 +125,7 @@ int report(const PlanArgs& opt, const planners::PlanResult& r) {
     nlohmann::json j{{"solved", r.status.ok()},
                      {"planner", r.planner},
                      {"space", r.space},
+                     {"fallback", r.fallback},
                      {"time", r.time},
                      {"path_length", r.path_length},
                      {"max_closure_error", r.max_closure_error},

@@ -13,6 +13,7 @@
 #include "foldkit/geometry/closure_path.hpp"
 #include "foldkit/bench/deterministic_planner.hpp"
 #include "foldkit/bench/scenes.hpp"
+#include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 
 namespace foldkit::bench {
@@ -159,9 +160,26 @@ DeterministicMethod deterministic_method(const std::string& name) {
   throw std::invalid_argument("unknown deterministic planner '" + name + "'");
 }
 
-std::string canonical_bench_planner(const std::string& name) {
+std::string fallback_inner(const std::string& name) {
+  const std::string tail = "+carpenter";
+  const std::string l = lower(name);
+  if (l.size() <= tail.size() || l.compare(l.size() - tail.size(), tail.size(), tail) != 0) return {};
+  return name.substr(0, name.size() - tail.size());
+}
+
+std::pair<std::string, std::string> planner_and_space(const std::string& entry) {
+  const auto at = entry.rfind('@');
+  if (at == std::string::npos) return {entry, ""};
+  return {entry.substr(0, at), entry.substr(at + 1)};
+}
+
+std::string canonical_bench_planner(const std::string& entry) {
+  const auto [name, space] = planner_and_space(entry);
+  if (!space.empty()) return canonical_bench_planner(name) + "@" + planners::to_string(planners::parse_space(space));
   for (const Method& m : methods())
     if (lower(name) == lower(m.name)) return m.name;
+  const std::string inner = fallback_inner(name);
+  if (!inner.empty() && !is_deterministic_planner(inner)) return canonical_planner(inner) + "+Carpenter";
   try {
     return canonical_planner(name);
   } catch (const std::invalid_argument& e) {

@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -21,6 +22,7 @@
 #include "foldkit/bench/deterministic_planner.hpp"
 #include "foldkit/bench/log.hpp"
 #include "foldkit/bench/run.hpp"
+#include "foldkit/planners/carpenter_fallback.hpp"
 #include "foldkit/planners/plan_setup.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/simulation/clearance.hpp"
@@ -138,8 +140,31 @@ std::string clean(std::string v) {
   return v;
 }
 
+// The planner named `name` for the scene; "X+Carpenter" gives X half of `time` before the
+// single-vertex fallback (as plan() does).
 ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, const PlanSetup& setup,
-                             const std::vector<std::pair<std::string, std::string>>& params) {
+                             const std::vector<std::pair<std::string, std::string>>& params, double time);
+
+// The planner of a list entry, "NAME" or "NAME@SPACE" (`setup` is the scene's in that space),
+// named as the entry.
+ob::PlannerPtr entry_planner(const std::string& entry, const BenchScene& scene, const PlanSetup& setup,
+                             const std::vector<std::pair<std::string, std::string>>& params, double time) {
+  ob::PlannerPtr p = bench_planner(planner_and_space(entry).first, scene, setup, params, time);
+  p->setName(entry);
+  return p;
+}
+
+ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, const PlanSetup& setup,
+                             const std::vector<std::pair<std::string, std::string>>& params, double time) {
+  if (const std::string inner = fallback_inner(name); !inner.empty()) {
+    if (!setup.single_vertex)
+      throw std::invalid_argument("scene " + scene.name + ": " + name + " needs a single-vertex scene (the fallback is "
+                                  "Carpenter's rule on the sphere)");
+    ob::PlannerPtr p = make_planner(inner, setup.si);
+    planners::set_planner_params(*p, inner, params);
+    return std::make_shared<planners::CarpenterFallbackPlanner>(setup.si, p, 0.5 * time, *scene.pattern, setup.single_vertex,
+                                                               scene.request.waypoint_step);
+  }
   if (!is_deterministic_planner(name)) {
     ob::PlannerPtr p = make_planner(name, setup.si);
     planners::set_planner_params(*p, name, params);
@@ -187,23 +212,27 @@ Resolved resolve(const BenchOptions& o) {
   const auto known = bench_scene_names();
   for (const auto& s : r.scenes)
     if (std::find(known.begin(), known.end(), s) == known.end()) make_bench_scene(s, o.seed);  // throws, naming them
-  for (const auto& p : o.planners.empty() ? r.suite->planners : o.planners) r.planners.push_back(canonical_bench_planner(p));
+  std::vector<std::string> spaces;  // --space A,B,…: every planner in each, side by side in one log
+  for (std::size_t i = 0, j; i <= o.space.size(); i = j + 1) {
+    j = std::min(o.space.find(',', i), o.space.size());
+    spaces.push_back(o.space.substr(i, j - i));
+  }
+  for (const auto& sp : spaces) planners::parse_space(sp);  // throws, naming the spaces
+  for (const auto& p : o.planners.empty() ? r.suite->planners : o.planners) {
+    if (spaces.size() == 1) r.planners.push_back(canonical_bench_planner(p));
+    for (std::size_t k = 0; spaces.size() > 1 && k < spaces.size(); ++k)
+      r.planners.push_back(canonical_bench_planner(p + "@" + spaces[k]));
+  }
   if (!(o.time > 0.0) || !std::isfinite(o.time)) throw std::invalid_argument("the time per run must be positive");
   if (o.runs == 0) throw std::invalid_argument("at least one run per planner");
-  if (o.space != "auto") planners::parse_space(o.space);  // throws, naming the spaces
-  for (const auto& p : r.planners)  // before anything is written
-    if (!is_deterministic_planner(p)) planners::check_planner_params(p, o.params);
+  for (const auto& entry : r.planners) {  // before anything is written
+    const std::string p = planner_and_space(entry).first;
+    if (!is_deterministic_planner(p)) planners::check_planner_params(fallback_inner(p).empty() ? p : fallback_inner(p), o.params);
+  }
   if (o.shards == 0 || o.shard == 0 || o.shard > o.shards)
     throw std::invalid_argument("--shard " + std::to_string(o.shard) + "/" + std::to_string(o.shards) +
                                 " is not K/N with 1 <= K <= N");
   return r;
-}
-
-// A scene of the run, in the options' space when they name one.
-BenchScene scene_for(const BenchOptions& o, const std::string& name) {
-  BenchScene scene = make_bench_scene(name, o.seed);
-  if (o.space != "auto") scene.request.space = planners::parse_space(o.space);
-  return scene;
 }
 
 // The scene's space, planner setup and way out of its start; a scene whose way out collides is
@@ -213,6 +242,37 @@ PlanSetup scene_setup(const BenchScene& scene) {
   if (!setup.blocked.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.blocked);
   return setup;
 }
+
+// A scene of the run (its goal drawn once) and its setup in each space that the planner entries
+// name, made when first asked for.
+class SceneSpaces {
+ public:
+  /// The scene and its setup in one space.
+  struct InSpace {
+    BenchScene scene;
+    PlanSetup setup;
+  };
+  SceneSpaces(const BenchOptions& o, const std::string& name) : base_(make_bench_scene(name, o.seed)) {
+    if (o.space.find(',') == std::string::npos && o.space != "auto") base_.request.space = planners::parse_space(o.space);
+  }
+  const BenchScene& scene() const { return base_; }
+  // In the space of the planner entry ("NAME@SPACE"; the options' or the scene's own without '@').
+  const InSpace& for_entry(const std::string& entry) {
+    const std::string space = planner_and_space(entry).second;
+    auto it = spaces_.find(space);
+    if (it == spaces_.end()) {
+      InSpace in{base_, {}};
+      if (!space.empty()) in.scene.request.space = planners::parse_space(space);
+      in.setup = scene_setup(in.scene);
+      it = spaces_.emplace(space, std::move(in)).first;
+    }
+    return it->second;
+  }
+
+ private:
+  BenchScene base_;
+  std::map<std::string, InSpace> spaces_;
+};
 
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -253,32 +313,39 @@ class SceneRun {
 
   BenchSceneResult run() {
     if (std::all_of(runs_of_.begin(), runs_of_.end(), [](const auto& v) { return v.empty(); })) return result_;
-    scene_ = scene_for(o_, result_.scene);
-    setup_ = scene_setup(scene_);
-    // The planners, in the suite's order; those with as many runs in this shard share one
-    // Benchmark (each Benchmark estimates the space's properties for its log header: seconds).
-    for (const auto& name : res_.planners) {
-      objects_.push_back(bench_planner(name, scene_, setup_, o_.params));
+    scenes_.emplace(o_, result_.scene);
+    // The planners, in the suite's order; those of one space with as many runs in this shard
+    // share one Benchmark (each Benchmark estimates the space's properties for its log header).
+    std::string spaces;
+    for (const auto& entry : res_.planners) {
+      const SceneSpaces::InSpace& in = scenes_->for_entry(entry);
+      objects_.push_back(entry_planner(entry, in.scene, in.setup, o_.params, o_.time));
       names_ += (names_.empty() ? "" : ",") + objects_.back()->getName();
+      if (("," + spaces + ",").find("," + in.setup.space_name + ",") == std::string::npos)
+        spaces += (spaces.empty() ? "" : ",") + in.setup.space_name;
     }
-    std::map<std::size_t, std::vector<std::size_t>> groups;  // run count → planner indices
+    std::map<std::pair<std::string, std::size_t>, std::vector<std::size_t>> groups;  // (space, run count) → planners
     for (std::size_t pi = 0; pi < res_.planners.size(); ++pi)
-      if (!runs_of_[pi].empty()) groups[runs_of_[pi].size()].push_back(pi);
-    for (const auto& [count, members] : groups) add_part(run_group(count, members), members);
+      if (!runs_of_[pi].empty()) groups[{planner_and_space(res_.planners[pi]).second, runs_of_[pi].size()}].push_back(pi);
+    for (const auto& [key, members] : groups)
+      add_part(run_group(scenes_->for_entry(res_.planners[members.front()]), key.second, members, spaces), members);
     write_log();
     return result_;
   }
 
  private:
-  BenchLog run_group(std::size_t count, const std::vector<std::size_t>& members) {
-    BenchSetup ss(setup_.si);
-    setup_.set_start_and_goal(ss, scene_.request.goal);
-    ompl::tools::Benchmark bench(ss, scene_.name);
+  BenchLog run_group(const SceneSpaces::InSpace& in, std::size_t count, const std::vector<std::size_t>& members,
+                     const std::string& spaces) {
+    const BenchScene& scene = in.scene;
+    const PlanSetup& setup = in.setup;
+    BenchSetup ss(setup.si);
+    setup.set_start_and_goal(ss, scene.request.goal);
+    ompl::tools::Benchmark bench(ss, scene.name);
     bench.addExperimentParameter("suite", "STRING", clean(res_.suite->name));
-    bench.addExperimentParameter("scene", "STRING", clean(scene_.name));
-    bench.addExperimentParameter("description", "STRING", clean(scene_.description));
-    bench.addExperimentParameter("space", "STRING", setup_.space_name);
-    bench.addExperimentParameter("creases", "INTEGER", std::to_string(scene_.pattern->joints().size()));
+    bench.addExperimentParameter("scene", "STRING", clean(scene.name));
+    bench.addExperimentParameter("description", "STRING", clean(scene.description));
+    bench.addExperimentParameter("space", "STRING", spaces);
+    bench.addExperimentParameter("creases", "INTEGER", std::to_string(scene.pattern->joints().size()));
     bench.addExperimentParameter("scene_seed", "INTEGER", std::to_string(o_.seed));
     bench.addExperimentParameter("shard", "STRING", std::to_string(o_.shard) + "/" + std::to_string(o_.shards));
     bench.addExperimentParameter("planners", "STRING", names_);
@@ -293,16 +360,16 @@ class SceneRun {
       const auto& indices = runs_of_[pi];
       const unsigned int index = indices[std::min(next[planner.get()]++, indices.size() - 1)];
       run["run index INTEGER"] = std::to_string(index);
-      add_path_properties(setup_, scene_, planner, run);
+      add_path_properties(setup, scene, planner, run);
       ++done_;
-      if (o_.progress) o_.progress({done_, work_.size(), scene_.name, res_.planners[pi], since(t0_), false});
+      if (o_.progress) o_.progress({done_, work_.size(), scene.name, res_.planners[pi], since(t0_), false});
     });
     const ompl::tools::Benchmark::Request req(o_.time, 4096.0, static_cast<unsigned int>(count), 0.05, false, false,
                                               o_.simplify);
     bench.benchmark(req);
     std::ostringstream text;
     bench.saveResultsToStream(text);
-    return parse_bench_log(text.str(), scene_.name);
+    return parse_bench_log(text.str(), scene.name);
   }
 
   // Counts the part's runs and solutions, and adds its planners to the scene's log (the first
@@ -339,11 +406,11 @@ class SceneRun {
       return std::find(order.begin(), order.end(), x.name) < std::find(order.begin(), order.end(), y.name);
     });
     const std::string file =
-        o_.shards == 1 ? scene_.name + ".log"
-                       : scene_.name + ".shard-" + std::to_string(o_.shard) + "-of-" + std::to_string(o_.shards) + ".log";
+        o_.shards == 1 ? scenes_->scene().name + ".log"
+                       : scenes_->scene().name + ".shard-" + std::to_string(o_.shard) + "-of-" + std::to_string(o_.shards) + ".log";
     result_.log = (std::filesystem::path(o_.output_dir) / file).string();
     io::write_file_atomic(result_.log, write_bench_log(log_));
-    if (o_.progress) o_.progress({done_, work_.size(), scene_.name, "", since(t0_), true});
+    if (o_.progress) o_.progress({done_, work_.size(), scenes_->scene().name, "", since(t0_), true});
   }
 
   const BenchOptions& o_;
@@ -353,8 +420,7 @@ class SceneRun {
   std::size_t& done_;
   std::vector<std::vector<unsigned int>> runs_of_;  // per planner: the run indices of this shard
   BenchSceneResult result_;
-  BenchScene scene_;
-  PlanSetup setup_;
+  std::optional<SceneSpaces> scenes_;
   std::vector<ob::PlannerPtr> objects_;
   std::string names_;
   BenchLog log_;
@@ -389,15 +455,16 @@ std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::
   std::size_t done = 0;
   std::vector<ErrorVsTimeRow> rows;
   for (const auto& scene_name : res.scenes) {
-    const BenchScene scene = scene_for(o, scene_name);
-    const PlanSetup setup = scene_setup(scene);
-    const double start_distance = (setup.start.angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
+    SceneSpaces scenes(o, scene_name);
     for (const auto& name : res.planners) {
+      const BenchScene& scene = scenes.for_entry(name).scene;
+      const PlanSetup& setup = scenes.for_entry(name).setup;
+      const double start_distance = (setup.start.angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
       for (double limit : limits)
         for (unsigned int run = 0; run < o.runs; ++run) {
           og::SimpleSetup ss(setup.si);
           setup.set_start_and_goal(ss, scene.request.goal);
-          ss.setPlanner(bench_planner(name, scene, setup, o.params));
+          ss.setPlanner(entry_planner(name, scene, setup, o.params, limit));
           ss.setup();
           const auto t1 = std::chrono::steady_clock::now();
           ss.solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(limit),
@@ -430,7 +497,7 @@ std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::
           if (o.progress) o.progress({done, total, scene.name, name, since(t0), false});
         }
     }
-    if (o.progress) o.progress({done, total, scene.name, "", since(t0), true});
+    if (o.progress) o.progress({done, total, scene_name, "", since(t0), true});
   }
   return rows;
 }

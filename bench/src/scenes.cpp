@@ -16,6 +16,8 @@
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/bench/deterministic_planner.hpp"
 #include "foldkit/bench/scenes.hpp"
+#include "foldkit/io/fold_format.hpp"
+#include "fold_fixtures.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/statespaces/single_vertex_space.hpp"
 #include "foldkit/statespaces/validity.hpp"
@@ -32,6 +34,8 @@ using geometry::FoldState;
 namespace {
 
 constexpr int kDegrees[] = {4, 8, 16, 32};
+// The "-any" scenes: random sectors, goals not filtered for reachability (issue 16, item 4).
+constexpr int kAnyDegrees[] = {6, 8, 12, 32};
 
 
 // Mirror-symmetric sectors: all equal, except degree 4, whose equal sectors fold only about one
@@ -45,7 +49,9 @@ std::vector<double> symmetric_sectors(int n) {
 // degree, so that roots stay likely), largest |angle| ≥ a/4, a random branch; reachable from
 // flat along the straight segment in the active angles (the motion validator checks closure,
 // jumps and, here, crossing facets).
-FoldState single_vertex_goal(const CreasePattern& p, std::mt19937& rng, int degree) {
+// With `reachable` false (the "-any" scenes of issue 16's completeness target) the segment is not
+// checked: any closed, collision-free state within the bounds is a goal.
+FoldState single_vertex_goal(const CreasePattern& p, std::mt19937& rng, int degree, bool reachable = true) {
   const statespaces::AngleBounds bounds = statespaces::AngleBounds::of(p, false);
   auto space = std::make_shared<statespaces::SingleVertexStateSpace>(std::make_shared<statespaces::SingleVertexChain>(p), bounds);
   auto si = std::make_shared<ob::SpaceInformation>(space);
@@ -72,7 +78,7 @@ FoldState single_vertex_goal(const CreasePattern& p, std::mt19937& rng, int degr
     const FoldState f = space->to_fold_state(g);
     const double largest = f.angles.cwiseAbs().maxCoeff();
     if (largest > 2.0 || largest < 0.25 * a) continue;
-    if (!validity->valid(f) || !motion.checkMotion(from.get(), goal.get())) continue;
+    if (!validity->valid(f) || (reachable && !motion.checkMotion(from.get(), goal.get()))) continue;
     return f;
   }
   throw std::runtime_error("bench: no reachable goal for the degree-" + std::to_string(degree) + " vertex");
@@ -140,11 +146,11 @@ unsigned int scene_seed(const std::string& name, unsigned int seed) {
   return h ^ (seed * 2654435761u);
 }
 
-BenchScene scene_of(const std::string& name, geometry::PatternSpec spec, std::string description) {
+BenchScene scene_of(const std::string& name, CreasePattern pattern, std::string description) {
   BenchScene s;
   s.name = name;
   s.description = std::move(description);
-  s.pattern = std::make_shared<const CreasePattern>(geometry::build_or_throw(spec));
+  s.pattern = std::make_shared<const CreasePattern>(std::move(pattern));
   s.request.pattern = s.pattern.get();
   s.request.collisions = true;
   s.request.use_assignment = false;
@@ -152,11 +158,40 @@ BenchScene scene_of(const std::string& name, geometry::PatternSpec spec, std::st
   return s;
 }
 
-// The Miura scenes: miura4x4 and miura10x10 (random partly folded goals), miuraNxN-80 (every
+BenchScene scene_of(const std::string& name, const geometry::PatternSpec& spec, std::string description) {
+  return scene_of(name, geometry::build_or_throw(spec), std::move(description));
+}
+
+// Flat to a goal near the assignment's direction, each crease scaled by its own draw from
+// [lo, hi] (the waterbomb and imported scenes).
+BenchScene assignment_scene(BenchScene s, std::mt19937& rng, double lo, double hi) {
+  s.request.use_assignment = true;
+  s.request.search_margin = 0.2;  // for the constrained spaces (see the Miura scenes)
+  const Eigen::VectorXd dir = assignment_signs(*s.pattern);
+  s.request.goal = projected_goal(s.request, rng, [dir, lo, hi](std::mt19937& r) {
+    std::uniform_real_distribution<double> u(lo, hi);
+    Eigen::VectorXd g = dir;
+    for (Eigen::Index j = 0; j < g.size(); ++j) g[j] *= u(r);
+    return g;
+  }, s.name);
+  return s;
+}
+
+// The imported FOLD patterns (bench/data): bird-base and resch; nothing for another name.
+std::optional<BenchScene> imported_scene(const std::string& name, std::mt19937& rng) {
+  const char* text = name == "bird-base" ? detail::bird_base_fold() : name == "resch" ? detail::resch_fold() : nullptr;
+  if (!text) return std::nullopt;
+  const std::string description =
+      name == "bird-base" ? "bird base imported from FOLD (osbo/rigid-origami, 5 DOF), flat to partly folded"
+                          : "Resch tessellation imported from FOLD (robbykraft/Origami, 10 DOF), flat to partly folded";
+  return assignment_scene(scene_of(name, io::parse_fold(text, name + ".fold").pattern, description), rng, 0.2, 0.6);
+}
+
+// The Miura scenes: miura4x4, miura10x10 and miura20x20 (random partly folded goals), miuraNxN-80 (every
 // zig-zag at ±80°); nothing for another name.
 std::optional<BenchScene> miura_scene(const std::string& name, std::mt19937& rng) {
-  if (name == "miura4x4" || name == "miura10x10") {
-    const int n = name == "miura4x4" ? 4 : 10;
+  if (name == "miura4x4" || name == "miura10x10" || name == "miura20x20") {
+    const int n = name == "miura4x4" ? 4 : name == "miura10x10" ? 10 : 20;
     BenchScene s = scene_of(name, gen::miura(n, n), "Miura-ori " + std::to_string(n) + "×" + std::to_string(n) +
                                                        ", flat to partly folded along its rigid-folding mode");
     s.request.use_assignment = true;
@@ -187,8 +222,9 @@ std::vector<std::string> bench_scene_names() {
     names.push_back("vertex" + std::to_string(d) + "-random");
     names.push_back("vertex" + std::to_string(d) + "-symmetric");
   }
-  for (const char* n : {"boat", "miura4x4", "miura10x10", "waterbomb", "cube-sheet", "corner-cube", "miura10x10-80",
-                        "miura20x20-80", "miura40x40-80"})
+  for (int d : kAnyDegrees) names.push_back("vertex" + std::to_string(d) + "-any");
+  for (const char* n : {"boat", "miura4x4", "miura10x10", "waterbomb", "cube-sheet", "corner-cube", "miura20x20",
+                        "waterbomb4x4", "bird-base", "resch", "miura10x10-80", "miura20x20-80", "miura40x40-80"})
     names.emplace_back(n);
   return names;
 }
@@ -205,6 +241,15 @@ BenchScene make_bench_scene(const std::string& name, unsigned int seed) {
     s.request.goal = single_vertex_goal(*s.pattern, rng, d);
     return s;
   }
+  for (int d : kAnyDegrees) {
+    if (name != "vertex" + std::to_string(d) + "-any") continue;
+    BenchScene s = scene_of(name, gen::single_vertex(gen::random_sectors(d, rng, std::min(0.2, M_PI / d))),
+                            "single vertex of degree " + std::to_string(d) +
+                                ", random sectors, flat to a random closed collision-free state (not filtered for "
+                                "reachability)");
+    s.request.goal = single_vertex_goal(*s.pattern, rng, d, false);
+    return s;
+  }
   if (name == "boat") {
     BenchScene s = scene_of(name, gen::boat(), "the boat of the paper's Fig. 3: keel folded, bow and stern diagonals valley");
     s.request.goal = projected_goal(s.request, rng, [](std::mt19937& r) {
@@ -215,19 +260,13 @@ BenchScene make_bench_scene(const std::string& name, unsigned int seed) {
     return s;
   }
   if (auto s = miura_scene(name, rng)) return *s;
-  if (name == "waterbomb") {
-    BenchScene s = scene_of(name, gen::waterbomb(2, 2), "waterbomb tessellation, 2 units × 2 rows, flat to partly folded");
-    s.request.use_assignment = true;
-    s.request.search_margin = 0.2;
-    const Eigen::VectorXd dir = assignment_signs(*s.pattern);
-    s.request.goal = projected_goal(s.request, rng, [dir](std::mt19937& r) {
-      std::uniform_real_distribution<double> u(0.2, 0.6);
-      Eigen::VectorXd g = dir;
-      for (Eigen::Index j = 0; j < g.size(); ++j) g[j] *= u(r);
-      return g;
-    }, name);
-    return s;
+  if (name == "waterbomb" || name == "waterbomb4x4") {
+    const int n = name == "waterbomb" ? 2 : 4;
+    const std::string size = std::to_string(n) + " units × " + std::to_string(n) + " rows";
+    return assignment_scene(scene_of(name, gen::waterbomb(n, n), "waterbomb tessellation, " + size + ", flat to partly folded"),
+                            rng, 0.2, 0.6);
   }
+  if (auto s = imported_scene(name, rng)) return *s;
   if (name == "cube-sheet") {
     BenchScene s = scene_of(name, gen::cube_sheet(1), "one cube net (Fig. 8a), flat to most of the way to the cube");
     const Eigen::VectorXd dir = assignment_signs(*s.pattern);
@@ -263,13 +302,25 @@ const std::vector<BenchSuite>& bench_suites() {
     std::vector<BenchSuite> s;
     s.push_back({"quick", "three small scenes, two planners: seconds (tests, CI)",
                  {"vertex4-random", "vertex8-random", "boat"}, {"RRTConnect", "ProjectedLine"}});
-    std::vector<std::string> small;  // every scene but the large Miura sheets of "miura-scale"
+    // Every scene but those of "miura-scale" and "vertex-complete", whose suites measure issue
+    // 16's targets (and keep "full" comparable with its earlier runs).
+    const auto ends_with = [](const std::string& n, const std::string& tail) {
+      return n.size() >= tail.size() && n.compare(n.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    std::vector<std::string> small;
     for (const auto& n : bench_scene_names())
-      if (n.size() < 3 || n.compare(n.size() - 3, 3, "-80") != 0) small.push_back(n);
-    BenchSuite full{"full", "every scene but the large Miura sheets, sampling planners beside the deterministic ones", small,
+      if (!ends_with(n, "-80") && !ends_with(n, "-any")) small.push_back(n);
+    BenchSuite full{"full", "every scene but those of miura-scale and vertex-complete, sampling planners beside the deterministic ones", small,
                     {"RRTConnect", "KPIECE1", "BiTRRT", "PRM", "BKPIECE1", "EST", "RRT"}};
     for (const auto& d : deterministic_planner_names()) full.planners.push_back(d);
     s.push_back(full);
+    s.push_back({"spaces", "Miura 4x4, 10x10 and 20x20, waterbomb 4x4 and the boat, RRTConnect: run with --space "
+                 "driving,projected,atlas,tangent-bundle for every space side by side in one log per scene (issue 16)",
+                 {"miura4x4", "miura10x10", "miura20x20", "waterbomb4x4", "boat"}, {"RRTConnect"}});
+    s.push_back({"vertex-complete", "single vertices of degree 6, 8, 12 and 32, random goals not filtered for reachability "
+                 "(issue 16's completeness target): RRTConnect alone, with the Carpenter fallback, and the spherical Carpenter alone",
+                 {"vertex6-any", "vertex8-any", "vertex12-any", "vertex32-any"},
+                 {"RRTConnect", "RRTConnect+Carpenter", "SphericalCarpenter"}});
     s.push_back({"miura-scale", "Miura 10x10, 20x20 and 40x40 from flat to zig-zags at ±80° (issue 16's targets), RRTConnect",
                  {"miura10x10-80", "miura20x20-80", "miura40x40-80"}, {"RRTConnect"}});
     return s;

@@ -18,6 +18,7 @@
 #include "foldkit/geometry/driving_chart.hpp"
 #include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/projection.hpp"
+#include "foldkit/planners/carpenter_fallback.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/statespaces/closure_constraint.hpp"
 #include "foldkit/statespaces/driving_space.hpp"
@@ -331,8 +332,15 @@ PlanResult plan(const PlanRequest& req) {
   }
 
   og::SimpleSetup ss(setup.si);
-  ss.setPlanner(make_planner(req.planner, setup.si));
-  set_planner_params(*ss.getPlanner(), req.planner, req.params);
+  ob::PlannerPtr planner = make_planner(req.planner, setup.si);
+  set_planner_params(*planner, req.planner, req.params);
+  std::shared_ptr<CarpenterFallbackPlanner> fallback;
+  if (setup.single_vertex && req.fallback) {
+    fallback = std::make_shared<CarpenterFallbackPlanner>(setup.si, planner, 0.5 * req.time, pattern, setup.single_vertex,
+                                                          req.waypoint_step);
+    planner = fallback;
+  }
+  ss.setPlanner(planner);
   setup.set_start_and_goal(ss, req.goal);
   ss.setup();
 
@@ -341,6 +349,13 @@ PlanResult plan(const PlanRequest& req) {
       ss.solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(req.time),
                                                  ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition())));
   result.time = elapsed(t0);
+  result.fallback = fallback && fallback->used_fallback();
+  if (status != ob::PlannerStatus::EXACT_SOLUTION && fallback && !fallback->fallback_message().empty()) {
+    result.status = {geometry::StatusCode::NoProgress, "no plan: " + req.planner + " found none in " +
+                                                           std::to_string(0.5 * req.time) + " s, and " +
+                                                           fallback->fallback_message()};
+    return result;
+  }
   if (status != ob::PlannerStatus::EXACT_SOLUTION) {
     // The time ran out (OMPL's TIMEOUT, or only an approximate path in that time); anything else
     // OMPL reports is named as it says it.
@@ -388,7 +403,10 @@ PlanResult plan(const PlanRequest& req) {
       return result;
     }
   }
-  result.status = {geometry::StatusCode::Success, "solved"};
+  result.status = {geometry::StatusCode::Success,
+                   result.fallback ? "solved by the Carpenter fallback (" + req.planner + " found no plan in " +
+                                         std::to_string(0.5 * req.time) + " s)"
+                                   : std::string("solved")};
   return result;
 }
 

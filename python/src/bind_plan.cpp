@@ -15,7 +15,9 @@ void bind_result(py::module_& m) {
       .def_property_readonly("solved", [](const PlanResult& r) { return r.status.ok(); }, "Whether a valid plan was found.")
       .def_readonly("planner", &PlanResult::planner, "The planner's name.")
       .def_readonly("space", &PlanResult::space, "The space searched: 'single-vertex', 'driving', 'projected', 'atlas' or 'tangent-bundle'.")
-      .def_readonly("time", &PlanResult::time, "Seconds the planner ran.")
+      .def_readonly("time", &PlanResult::time, "Seconds the planner ran (the fallback included).")
+      .def_readonly("fallback", &PlanResult::fallback,
+                    "Whether the path came from the single-vertex fallback (Carpenter's rule on the sphere).")
       .def_readonly("path_length", &PlanResult::path_length, "Σ joint-angle distance between waypoints, radians.")
       .def_readonly("max_closure_error", &PlanResult::max_closure_error, "Largest loop error over waypoints and replay, radians.")
       .def_property_readonly(
@@ -38,7 +40,7 @@ void bind_plan(py::module_& m) {
       [](const geometry::CreasePattern& p, const Eigen::VectorXd& goal, const py::object& start, const std::string& space,
          const std::string& planner, double time, unsigned seed, bool collisions, bool use_assignment, bool simplify,
          double search_margin, double waypoint_step, double velocity, bool replay,
-         const std::map<std::string, std::string>& params) {
+         const std::map<std::string, std::string>& params, bool fallback) {
         require_positive(time, "time");
         require_positive(waypoint_step, "waypoint_step");
         require_positive(velocity, "velocity");
@@ -67,6 +69,7 @@ void bind_plan(py::module_& m) {
         req.velocity = velocity;
         req.replay = replay;
         req.params.assign(params.begin(), params.end());
+        req.fallback = fallback;
         py::gil_scoped_release release;
         return planners::plan(req);
       },
@@ -74,14 +77,16 @@ void bind_plan(py::module_& m) {
       py::arg("planner") = "RRTConnect", py::arg("time") = 5.0, py::arg("seed") = 1u, py::arg("collisions") = true,
       py::arg("use_assignment") = true, py::arg("simplify") = true, py::arg("search_margin") = -1.0,
       py::arg("waypoint_step") = 0.02, py::arg("velocity") = 1.0, py::arg("replay") = true,
-      py::arg("params") = std::map<std::string, std::string>{},
+      py::arg("params") = std::map<std::string, std::string>{}, py::arg("fallback") = true,
       "Plans from `start` to the closed state `goal`. `start` is None (flat), a FoldSequence (its end state is the start; "
       "the plan's sequence begins with it, as the CLI's --start CMML), or a closed state: then the plan's sequence reaches "
       "it from flat in one straight event, which the replay accepts only where that line stays closed (pass the "
       "FoldSequence otherwise). Planning runs "
       "an OMPL planner by name, as `foldkit plan`: space 'auto', 'single-vertex', 'driving', 'projected', 'atlas' or "
       "'tangent-bundle'; `time` seconds at most; the same seed gives the same plan. `params` sets planner parameters by "
-      "OMPL's names, e.g. {'range': '0.3'} (ValueError for one the planner does not have). Returns a PlanResult (check `solved`).");
+      "OMPL's names, e.g. {'range': '0.3'} (ValueError for one the planner does not have). On a single "
+      "vertex, `fallback` takes the path of Carpenter's rule on the sphere (start, flat, goal) when the planner finds none "
+      "in half of `time`; the result's `fallback` says so. Returns a PlanResult (check `solved`).");
   m.def("planners", &planners::planner_names, "The planner names plan() accepts.");
 }
 

@@ -70,17 +70,27 @@ TEST(BenchSuite, MiuraScaleGoalsFollowTheClosedForm) {
 
 TEST(BenchSuite, SuitesNameKnownScenesAndPlanners) {
   const auto scenes = fp::bench_scene_names();
-  EXPECT_EQ(scenes.size(), 17u);
+  EXPECT_EQ(scenes.size(), 25u);
   for (const auto& suite : fp::bench_suites()) {
     for (const auto& s : suite.scenes) EXPECT_NE(std::find(scenes.begin(), scenes.end(), s), scenes.end()) << s;
     for (const auto& p : suite.planners) EXPECT_EQ(fp::canonical_bench_planner(p), p);
   }
-  std::vector<std::string> small(scenes.begin(), scenes.end() - 3);  // all but the three large Miura sheets
+  std::vector<std::string> small;  // all but the three large Miura sheets and the unfiltered vertices
+  for (const auto& s : scenes)
+    if (s.find("-80") == std::string::npos && s.find("-any") == std::string::npos) small.push_back(s);
+  EXPECT_EQ(small.size(), 18u);
   EXPECT_EQ(fp::bench_suite("full").scenes, small);
+  EXPECT_EQ(fp::bench_suite("vertex-complete").scenes,
+            (std::vector<std::string>{"vertex6-any", "vertex8-any", "vertex12-any", "vertex32-any"}));
   EXPECT_EQ(fp::bench_suite("miura-scale").scenes, std::vector<std::string>(scenes.end() - 3, scenes.end()));
   EXPECT_THROW(fp::bench_suite("nope"), std::invalid_argument);
   EXPECT_THROW(fp::canonical_bench_planner("nope"), std::invalid_argument);
   EXPECT_EQ(fp::canonical_bench_planner("projectedline"), "ProjectedLine");
+  EXPECT_EQ(fp::canonical_bench_planner("rrtconnect+carpenter"), "RRTConnect+Carpenter");
+  EXPECT_EQ(fp::canonical_bench_planner("rrtconnect@projected"), "RRTConnect@projected");
+  EXPECT_EQ(fp::canonical_bench_planner("kpiece1+carpenter@single-vertex"), "KPIECE1+Carpenter@single-vertex");
+  EXPECT_THROW(fp::canonical_bench_planner("RRTConnect@nowhere"), std::invalid_argument);
+  EXPECT_THROW(fp::canonical_bench_planner("ProjectedLine+Carpenter"), std::invalid_argument);
 }
 
 TEST(BenchSuite, ShardsPartitionTheWorkList) {
@@ -191,6 +201,58 @@ TEST(BenchSuite, QuickSuiteOnTheBoatWritesLogsWithOurProperties) {
   EXPECT_LT(std::atof(column(line, "goal distance REAL")[0].c_str()), 1e-6);
   EXPECT_GT(std::atof(column(line, "min clearance REAL")[0].c_str()), 0.0);
   EXPECT_GT(std::atof(column(line, "joint path length REAL")[0].c_str()), 0.5);
+}
+
+// Issue 16: several spaces side by side in ONE log per scene (entries PLANNER@SPACE), each run
+// in its own space on the same goal, and the unfiltered single-vertex scenes with the fallback.
+TEST(BenchSuite, SpacesSideBySideInOneLog) {
+  fp::BenchOptions o;
+  o.suite = "spaces";
+  o.scenes = {"boat"};
+  o.space = "driving,projected";
+  o.time = 2.0;
+  o.runs = 2;
+  o.output_dir = temp_folder("bench_spaces");
+  const auto results = fp::run_bench(o);
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].runs, 4u);
+  EXPECT_EQ(results[0].planners.count("RRTConnect@driving"), 1u);
+  EXPECT_EQ(results[0].planners.count("RRTConnect@projected"), 1u);
+  const fp::BenchLog log = fp::parse_bench_log(foldkit::io::read_file(results[0].log), results[0].log);
+  ASSERT_EQ(log.planners.size(), 2u);
+  EXPECT_EQ(log.planners[0].name, "geometric_RRTConnect@driving");
+  EXPECT_EQ(log.planners[1].name, "geometric_RRTConnect@projected");
+  for (const auto& p : log.planners) {
+    EXPECT_EQ(column(p, "solved BOOLEAN"), (std::vector<std::string>{"1", "1"})) << p.name;
+    EXPECT_EQ(column(p, "replay valid BOOLEAN"), (std::vector<std::string>{"1", "1"})) << p.name;
+    for (const auto& g : column(p, "goal distance REAL")) EXPECT_LT(std::atof(g.c_str()), 1e-6) << p.name;
+  }
+  o.space = "driving,nowhere";
+  EXPECT_THROW(fp::run_bench(o), std::invalid_argument);
+}
+
+TEST(BenchSuite, UnfilteredVertexScenesArePlannedWithTheFallback) {
+  fp::BenchOptions o;
+  o.suite = "vertex-complete";
+  o.scenes = {"vertex8-any"};
+  o.planners = {"RRTConnect+Carpenter", "SphericalCarpenter"};
+  o.time = 1.0;
+  o.runs = 2;
+  o.output_dir = temp_folder("bench_vertex_complete");
+  const auto results = fp::run_bench(o);
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].solved, 4u);
+  const fp::BenchLog log = fp::parse_bench_log(foldkit::io::read_file(results[0].log), results[0].log);
+  ASSERT_EQ(log.planners.size(), 2u);
+  EXPECT_EQ(log.planners[0].name, "geometric_RRTConnect+Carpenter");
+  for (const auto& p : log.planners) {
+    EXPECT_EQ(column(p, "replay valid BOOLEAN"), (std::vector<std::string>{"1", "1"})) << p.name;
+    for (const auto& g : column(p, "goal distance REAL")) EXPECT_LT(std::atof(g.c_str()), 1e-6) << p.name;
+  }
+  // The fallback is Carpenter's rule on the sphere: a scene of several vertices is refused.
+  o.scenes = {"boat"};
+  o.planners = {"RRTConnect+Carpenter"};
+  EXPECT_THROW(fp::run_bench(o), std::invalid_argument);
 }
 
 TEST(BenchSuite, ErrorVersusTimeRecordsEveryLimit) {

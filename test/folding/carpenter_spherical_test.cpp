@@ -15,6 +15,7 @@
 #include "foldkit/simulation/collision_world.hpp"
 #include "foldkit/simulation/simulate.hpp"
 #include "foldkit/statespaces/single_vertex_chain.hpp"
+#include "random_vertex_state.hpp"
 #include "spec_helpers.hpp"
 
 namespace {
@@ -81,33 +82,13 @@ void expect_valid_flattening(const CreasePattern& p, const FoldState& folded, co
   EXPECT_LT((report.final_state.angles - folded.angles).cwiseAbs().maxCoeff(), 1e-9);
 }
 
-// A random closed, non-crossing folded state: random active angles, the passive ones solved in
-// closed form (statespaces::SingleVertexChain), crossing states rejected by the FCL world.
-FoldState random_folded(const CreasePattern& p, unsigned seed) {
-  const foldkit::statespaces::SingleVertexChain chain(p);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> angle(-2.5, 2.5);
-  foldkit::simulation::CollisionWorld world(p);
-  const auto tree = foldkit::geometry::make_tree(p);
-  for (int k = 0; k < 100000; ++k) {
-    FoldState f = FoldState::flat(p);
-    for (int j : chain.active_joints()) f.angles[j] = angle(rng);
-    if (!chain.solve(f, rng() % 2 == 0 ? 1 : -1)) continue;
-    if (f.angles.cwiseAbs().maxCoeff() < 0.8 || f.angles.cwiseAbs().maxCoeff() > M_PI - 0.05) continue;
-    world.reset();
-    if (!world.check(foldkit::geometry::facet_poses(p, tree, f), f).empty()) continue;
-    return f;
-  }
-  throw std::runtime_error("no non-crossing folded state found");
-}
-
 TEST(CarpenterSpherical, RandomVerticesOfDegree4To12FlattenExpansively) {
   std::mt19937 rng(606);
   for (int n = 4; n <= 12; ++n) {
     const CreasePattern p = build_or_throw(gen::single_vertex(foldkit::test::random_sectors(n, rng, 0.25)));
     for (unsigned k = 0; k < 2; ++k) {
       SCOPED_TRACE("degree " + std::to_string(n) + " sample " + std::to_string(k));
-      const FoldState folded = random_folded(p, static_cast<unsigned>(1000 * n + k));
+      const FoldState folded = foldkit::test::random_vertex_state(p, static_cast<unsigned>(1000 * n + k));
       ASSERT_LT(ClosureSystem(p).max_error(folded), 1e-9);
       const CarpenterSphericalResult r = flatten_single_vertex(p, folded);
       expect_valid_flattening(p, folded, r);
@@ -195,7 +176,7 @@ TEST(CarpenterSpherical, RefusesWhatItCannotFlatten) {
   const CreasePattern v6 = build_or_throw(gen::single_vertex(foldkit::test::random_sectors(6, rng, 0.3)));
   CarpenterSphericalOptions one;
   one.max_steps = 1;
-  const CarpenterSphericalResult r = flatten_single_vertex(v6, random_folded(v6, 5), one);
+  const CarpenterSphericalResult r = flatten_single_vertex(v6, foldkit::test::random_vertex_state(v6, 5), one);
   EXPECT_FALSE(r.status.ok());
   EXPECT_NE(r.status.message.find("max_steps"), std::string::npos) << r.status.message;
   EXPECT_EQ(r.steps, 1);

@@ -4,6 +4,7 @@
 /// ompl::tools::Benchmark as OMPL planners, so that they are measured like the sampling planners.
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <ompl/base/Planner.h>
@@ -76,8 +77,15 @@ bool is_deterministic_planner(const std::string& name);
 /// The deterministic method named `name` (case-insensitive).
 /// @throws std::invalid_argument for an unknown name
 DeterministicMethod deterministic_method(const std::string& name);
-/// The canonical name of a planner given by name, case-insensitive: a deterministic method or an
-/// OMPL planner (planners::canonical_planner).
+/// The OMPL planner X of a name "X+Carpenter" (case-insensitive): X with the single-vertex
+/// fallback (planners::CarpenterFallbackPlanner); empty for any other name.
+std::string fallback_inner(const std::string& name);
+/// A planner entry "NAME@SPACE" split into NAME and SPACE (planners::parse_space), for runs of
+/// several spaces side by side in one log; SPACE is empty for an entry without '@'.
+std::pair<std::string, std::string> planner_and_space(const std::string& entry);
+/// The canonical name of a planner given by name, case-insensitive: a deterministic method, an
+/// OMPL planner (planners::canonical_planner), or an OMPL planner followed by "+Carpenter"; each
+/// optionally followed by "@SPACE" (the space's name as planners::to_string() gives it).
 /// @throws std::invalid_argument for an unknown name (the message lists the known ones)
 std::string canonical_bench_planner(const std::string& name);
 

@@ -43,7 +43,8 @@ struct BenchOptions {
   std::vector<std::string> scenes,  ///< scenes to run instead of the suite's; empty: the suite's
       planners;                     ///< planners to run instead of the suite's; empty: the suite's
   /// The space every scene is planned in (planners::parse_space: auto, single-vertex, driving,
-  /// projected, atlas, tangent-bundle); "auto" keeps each scene's own.
+  /// projected, atlas, tangent-bundle); "auto" keeps each scene's own. Several, comma-separated:
+  /// every planner runs in each, as the entry "PLANNER@SPACE", side by side in the scene's log.
   std::string space = "auto";
   /// Parameters of the sampling planners by OMPL's names ("range", "0.3"), set through each
   /// planner's ParamSet; a planner without one of them is an error.

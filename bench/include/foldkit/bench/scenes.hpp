@@ -25,20 +25,25 @@ struct BenchScene {
 
 /// A named set of scenes and planners run together.
 struct BenchSuite {
-  std::string name,         ///< "quick" or "full"
+  std::string name,         ///< the suite's name: "quick", "full", "spaces", "vertex-complete" or "miura-scale"
       description;          ///< what it is for, in words
   std::vector<std::string> scenes,  ///< scene names (bench_scene_names())
       planners;                     ///< planner names: OMPL planners and deterministic methods
 };
 
-/// The suites: "quick" (three small scenes, RRTConnect and ProjectedLine: seconds) and "full"
-/// (every scene, seven sampling planners and every deterministic method).
+/// The suites: "quick" (three small scenes, RRTConnect and ProjectedLine: seconds), "full"
+/// (every scene but those of the issue-16 suites, seven sampling planners and every
+/// deterministic method), "spaces" (the scenes of the side-by-side comparison of spaces),
+/// "vertex-complete" (unfiltered single-vertex goals: RRTConnect, RRTConnect+Carpenter,
+/// SphericalCarpenter) and "miura-scale" (Miura 10x10 … 40x40 to zig-zags at ±80°).
 const std::vector<BenchSuite>& bench_suites();
 /// The suite named `name`.
 /// @throws std::invalid_argument naming the known suites for any other name
 const BenchSuite& bench_suite(const std::string& name);
-/// Every built-in scene: vertex4-random … vertex32-symmetric, boat, miura4x4, miura10x10,
-/// waterbomb, cube-sheet, corner-cube.
+/// Every built-in scene: vertex4-random … vertex32-symmetric, vertex6-any … vertex32-any (goals
+/// not filtered for reachability), boat, miura4x4, miura10x10, waterbomb, cube-sheet,
+/// corner-cube, miura20x20, waterbomb4x4, bird-base and resch (imported FOLD files), and
+/// miura10x10-80 … miura40x40-80.
 std::vector<std::string> bench_scene_names();
 /// The scene with its goal drawn from `seed` and the scene's name (std::mt19937, seeded by a
 /// hash that does not depend on the compiler; the distributions drawn from it are the standard

@@ -72,6 +72,10 @@ struct PlanRequest {
   bool use_assignment = true;  ///< mountain/valley assignments of the pattern become angle bounds
   bool numerical_jacobian = false;  ///< constrained spaces: OMPL's finite differences (a baseline)
   bool simplify = true;       ///< shorten the path with OMPL's PathSimplifier (reduce vertices, shortcut)
+  /// Single-vertex space: when the planner finds no plan in half of `time`, take the path of
+  /// Carpenter's rule on the sphere (start → flat → goal, CarpenterFallbackPlanner), which
+  /// reaches every closed, non-crossing state. Off: the planner has all of `time`.
+  bool fallback = true;
   /// Constrained spaces: when ≥ 0, the ambient box the sampler draws from (and the plan stays in)
   /// is narrowed to [min(start, goal) − margin, max(start, goal) + margin] per crease (within the
   /// bounds; radians). On patterns whose closure variety has many branches through flat (Miura)
@@ -94,11 +98,15 @@ struct PlanResult {
   /// StatusCode::Success: a valid plan, replayed by the simulator when requested. Otherwise
   /// StatusCode::LimitReached (no plan within the time), StatusCode::Collision (the way out of
   /// the start collides, or the replay found one), StatusCode::ClosureViolated (the path leaves
-  /// the closure manifold, or the replay says so).
+  /// the closure manifold, or the replay says so), StatusCode::NoProgress (the planner found
+  /// nothing and the single-vertex fallback failed: the message says why).
   geometry::Status status;
   std::string planner,          ///< the planner's name, as requested
       space;                    ///< the space searched: "single-vertex", "driving", "projected", "atlas" or "tangent-bundle"
-  double time = 0.0;            ///< seconds the planner ran
+  double time = 0.0;            ///< seconds the planner ran (the fallback included)
+  /// Whether the path came from the single-vertex fallback (PlanRequest::fallback) rather than
+  /// the planner.
+  bool fallback = false;
   double path_length = 0.0;     ///< Σ Euclidean joint-angle distance between waypoints, radians
   double max_closure_error = 0.0;  ///< largest loop error over the waypoints and the replay, radians
   std::vector<geometry::FoldState> waypoints;  ///< start … goal, dense (at most waypoint_step apart per joint)

@@ -1,0 +1,123 @@
+#include "foldkit/planners/carpenter_fallback.hpp"
+
+#include <stdexcept>
+
+#include <ompl/base/PlannerData.h>
+#include <ompl/base/PlannerTerminationCondition.h>
+#include <ompl/base/goals/GoalState.h>
+#include <ompl/geometric/PathGeometric.h>
+
+#include "foldkit/folding/carpenter_spherical.hpp"
+
+namespace foldkit::planners {
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+using geometry::FoldState;
+
+std::vector<FoldState> carpenter_path(const geometry::CreasePattern& pattern, const FoldState& start, const FoldState& goal,
+                                      double step, std::string* why) {
+  folding::CarpenterSphericalOptions options;
+  options.frame_step = step;
+  // An end → flat (the end itself when it is flat already).
+  const auto flatten = [&](const FoldState& end, const char* which) -> std::vector<FoldState> {
+    if (end.angles.cwiseAbs().maxCoeff() == 0.0) return {end};
+    try {
+      folding::CarpenterSphericalResult r = folding::flatten_single_vertex(pattern, end, options);
+      if (r.status.ok()) return std::move(r.frames);
+      if (why) *why = std::string("Carpenter's rule does not flatten the ") + which + ": " + r.status.message;
+    } catch (const std::invalid_argument& e) {
+      if (why) *why = std::string("Carpenter's rule does not take the ") + which + ": " + e.what();
+    }
+    return {};
+  };
+  std::vector<FoldState> way = flatten(start, "start");
+  if (way.empty()) return {};
+  const std::vector<FoldState> back = flatten(goal, "goal");
+  if (back.empty()) return {};
+  way.insert(way.end(), back.rbegin() + 1, back.rend());  // both end exactly flat: one flat frame
+  return way;
+}
+
+CarpenterFallbackPlanner::CarpenterFallbackPlanner(const ob::SpaceInformationPtr& si, ob::PlannerPtr inner, double inner_time,
+                                                   const geometry::CreasePattern& pattern,
+                                                   std::shared_ptr<const statespaces::SingleVertexStateSpace> space,
+                                                   double step)
+    : ob::Planner(si, inner ? inner->getName() + "+Carpenter" : std::string("+Carpenter")),
+      inner_(std::move(inner)),
+      inner_time_(inner_time),
+      step_(step),
+      pattern_(&pattern),
+      space_(std::move(space)) {
+  if (!inner_) throw std::invalid_argument("CarpenterFallbackPlanner: no inner planner");
+  if (!(inner_time_ > 0.0) || !(step_ > 0.0))
+    throw std::invalid_argument("CarpenterFallbackPlanner: the inner planner's time and the step must be positive");
+  specs_ = inner_->getSpecs();
+}
+
+void CarpenterFallbackPlanner::clear() {
+  ob::Planner::clear();
+  inner_->clear();
+  used_fallback_ = false;
+  fallback_message_.clear();
+}
+
+void CarpenterFallbackPlanner::setup() {
+  ob::Planner::setup();
+  inner_->setup();
+}
+
+void CarpenterFallbackPlanner::setProblemDefinition(const ob::ProblemDefinitionPtr& pdef) {
+  ob::Planner::setProblemDefinition(pdef);
+  inner_->setProblemDefinition(pdef);
+}
+
+void CarpenterFallbackPlanner::getPlannerData(ob::PlannerData& data) const { inner_->getPlannerData(data); }
+
+ob::PlannerStatus CarpenterFallbackPlanner::solve(const ob::PlannerTerminationCondition& ptc) {
+  checkValidity();
+  used_fallback_ = false;
+  fallback_message_.clear();
+  const ob::PlannerStatus status =
+      inner_->solve(ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(inner_time_)));
+  if (status == ob::PlannerStatus::EXACT_SOLUTION || ptc()) return status;
+  if (status == ob::PlannerStatus::INVALID_START || status == ob::PlannerStatus::INVALID_GOAL ||
+      status == ob::PlannerStatus::UNRECOGNIZED_GOAL_TYPE)
+    return status;
+  if (!fallback()) return ob::PlannerStatus::ABORT;
+  used_fallback_ = true;
+  return ob::PlannerStatus::EXACT_SOLUTION;
+}
+
+bool CarpenterFallbackPlanner::fallback() {
+  const auto* goal = dynamic_cast<const ob::GoalState*>(pdef_->getGoal().get());
+  if (!goal || pdef_->getStartStateCount() == 0) {
+    fallback_message_ = "the fallback needs one start state and a goal state";
+    return false;
+  }
+  const ob::State* start = pdef_->getStartState(0);
+  const std::vector<FoldState> frames =
+      carpenter_path(*pattern_, space_->to_fold_state(start), space_->to_fold_state(goal->getState()), step_, &fallback_message_);
+  if (frames.empty()) return false;
+  // Frames the closed form cannot hold (flat, where the passive axes may line up) are skipped:
+  // the motion validator judges the longer motion across them like any other.
+  auto path = std::make_shared<og::PathGeometric>(si_, start);
+  ob::State* next = si_->allocState();
+  bool ok = true;
+  for (std::size_t i = 1; i + 1 < frames.size() && ok; ++i) {
+    if (!space_->from_fold_state(frames[i], next)) continue;
+    ok = si_->isValid(next) && si_->checkMotion(path->getStates().back(), next);
+    if (ok) path->append(next);
+  }
+  si_->freeState(next);
+  ok = ok && si_->checkMotion(path->getStates().back(), goal->getState());
+  if (!ok) {
+    fallback_message_ = "the Carpenter path leaves the space (a bound, a jump or a collision on the way)";
+    return false;
+  }
+  path->append(goal->getState());
+  pdef_->addSolutionPath(path, false, 0.0, getName());
+  return true;
+}
+
+}  // namespace foldkit::planners
