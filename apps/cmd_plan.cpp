@@ -53,7 +53,7 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
       ->check(CLI::NonNegativeNumber);
   app->add_flag("--free-signs", opt.free_signs, "Ignore the pattern's mountain/valley assignment");
   app->add_flag("--no-fallback", opt.no_fallback,
-                "Single vertex: no spherical Carpenter path when the planner finds none in half of --time");
+                "Single vertex: no spherical Carpenter path when the planner finds none in a quarter of --time");
   app->add_option("-o,--output", opt.output, "Output CMML")->required();
   app->add_flag("--json", opt.json, "Print one JSON object on stdout");
 }

@@ -140,8 +140,8 @@ std::string clean(std::string v) {
   return v;
 }
 
-// The planner named `name` for the scene; "X+Carpenter" gives X half of `time` before the
-// single-vertex fallback (as plan() does).
+// The planner named `name` for the scene; "X+Carpenter" gives X a quarter of `time`
+// (planners::kSamplerShare) before the single-vertex fallback, as plan() does.
 ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, const PlanSetup& setup,
                              const std::vector<std::pair<std::string, std::string>>& params, double time);
 
@@ -162,8 +162,8 @@ ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, c
                                   "Carpenter's rule on the sphere)");
     ob::PlannerPtr p = make_planner(inner, setup.si);
     planners::set_planner_params(*p, inner, params);
-    return std::make_shared<planners::CarpenterFallbackPlanner>(setup.si, p, 0.5 * time, *scene.pattern, setup.single_vertex,
-                                                               scene.request.waypoint_step);
+    return std::make_shared<planners::CarpenterFallbackPlanner>(setup.si, p, planners::kSamplerShare * time, *scene.pattern,
+                                                               setup.single_vertex, setup.validity, scene.request.waypoint_step);
   }
   if (!is_deterministic_planner(name)) {
     ob::PlannerPtr p = make_planner(name, setup.si);

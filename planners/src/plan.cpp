@@ -336,8 +336,8 @@ PlanResult plan(const PlanRequest& req) {
   set_planner_params(*planner, req.planner, req.params);
   std::shared_ptr<CarpenterFallbackPlanner> fallback;
   if (setup.single_vertex && req.fallback) {
-    fallback = std::make_shared<CarpenterFallbackPlanner>(setup.si, planner, 0.5 * req.time, pattern, setup.single_vertex,
-                                                          req.waypoint_step);
+    fallback = std::make_shared<CarpenterFallbackPlanner>(setup.si, planner, kSamplerShare * req.time, pattern,
+                                                          setup.single_vertex, setup.validity, req.waypoint_step);
     planner = fallback;
   }
   ss.setPlanner(planner);
@@ -352,7 +352,7 @@ PlanResult plan(const PlanRequest& req) {
   result.fallback = fallback && fallback->used_fallback();
   if (status != ob::PlannerStatus::EXACT_SOLUTION && fallback && !fallback->fallback_message().empty()) {
     result.status = {geometry::StatusCode::NoProgress, "no plan: " + req.planner + " found none in " +
-                                                           std::to_string(0.5 * req.time) + " s, and " +
+                                                           std::to_string(kSamplerShare * req.time) + " s, and " +
                                                            fallback->fallback_message()};
     return result;
   }
@@ -405,7 +405,7 @@ PlanResult plan(const PlanRequest& req) {
   }
   result.status = {geometry::StatusCode::Success,
                    result.fallback ? "solved by the Carpenter fallback (" + req.planner + " found no plan in " +
-                                         std::to_string(0.5 * req.time) + " s)"
+                                         std::to_string(kSamplerShare * req.time) + " s)"
                                    : std::string("solved")};
   return result;
 }

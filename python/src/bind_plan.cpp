@@ -86,7 +86,7 @@ void bind_plan(py::module_& m) {
       "'tangent-bundle'; `time` seconds at most; the same seed gives the same plan. `params` sets planner parameters by "
       "OMPL's names, e.g. {'range': '0.3'} (ValueError for one the planner does not have). On a single "
       "vertex, `fallback` takes the path of Carpenter's rule on the sphere (start, flat, goal) when the planner finds none "
-      "in half of `time`; the result's `fallback` says so. Returns a PlanResult (check `solved`).");
+      "in a quarter of `time`; the result's `fallback` says so. Returns a PlanResult (check `solved`).");
   m.def("planners", &planners::planner_names, "The planner names plan() accepts.");
 }
 

@@ -53,9 +53,10 @@ TEST(PlanCli, PlansFromFlatAndTheSimulatorAcceptsThePlan) {
                           "-o", out, "--json"});
   ASSERT_EQ(r.exit, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"solved", "planner", "time", "path_length", "max_closure_error", "waypoints"})
+  for (const char* key : {"solved", "planner", "space", "fallback", "time", "path_length", "max_closure_error", "waypoints"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_TRUE(j["solved"].get<bool>());
+  EXPECT_FALSE(j["fallback"].get<bool>());
   EXPECT_LT(j["max_closure_error"].get<double>(), 1e-3);
   const auto sim = foldkit({"simulate", c.pattern, out, "--json"});
   EXPECT_EQ(sim.exit, 0) << sim.err;
@@ -179,6 +180,29 @@ TEST(PlanCli, AnEndThatDoesNotCloseIsNamedByItsFileAndLine) {
   const auto start = foldkit({"plan", c.pattern, "--goal", c.goal, "--start", c.bad_goal, "-o", out});
   EXPECT_EQ(start.exit, 1);
   EXPECT_NE(start.err.find(where + " plan: the start is not closed"), std::string::npos) << where << '\n' << start.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// The single-vertex fallback (issue 16, item 4): RRT held to steps of 1e-7 rad finds nothing in
+// its quarter of --time (RRTConnect would not do: its connect loop does not look at the clock), and Carpenter's path is the plan, which the simulator accepts;
+// --no-fallback turns it off (exit 4, nothing written).
+TEST(PlanCli, SingleVertexFallbackAndNoFallback) {
+  const Case c = make_case();
+  const std::string out = c.dir + "/fallback.cmml";
+  std::filesystem::remove(out);
+  const auto r = foldkit(
+      {"plan", c.pattern, "--goal", c.goal, "--planner", "RRT", "--param", "range=1e-7", "--time", "0.4", "-o", out, "--json"});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["fallback"].get<bool>());
+  EXPECT_NE(j["message"].get<std::string>().find("Carpenter"), std::string::npos);
+  EXPECT_EQ(foldkit({"simulate", c.pattern, out}).exit, 0);
+  std::filesystem::remove(out);
+  const auto none = foldkit(
+      {"plan", c.pattern, "--goal", c.goal, "--planner", "RRT", "--param", "range=1e-7", "--time", "0.4", "--no-fallback", "-o",
+       out, "--json"});
+  EXPECT_EQ(none.exit, 4) << none.err;
+  EXPECT_FALSE(nlohmann::json::parse(none.out)["fallback"].get<bool>());
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

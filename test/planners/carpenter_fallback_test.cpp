@@ -67,7 +67,9 @@ TEST(CarpenterFallback, PathGoesFromStartThroughFlatToGoal) {
   int flat = 0;
   for (std::size_t i = 0; i < way.size(); ++i) {
     EXPECT_LT(sys.max_error(way[i]), 1e-9) << "frame " << i;
-    if (i > 0) EXPECT_LE((way[i].angles - way[i - 1].angles).cwiseAbs().maxCoeff(), 0.02 + 1e-9) << "frame " << i;
+    if (i > 0) {
+      EXPECT_LE((way[i].angles - way[i - 1].angles).cwiseAbs().maxCoeff(), 0.02 + 1e-9) << "frame " << i;
+    }
     flat += way[i].angles.cwiseAbs().maxCoeff() == 0.0;
   }
   EXPECT_EQ(flat, 1);
@@ -105,8 +107,9 @@ TEST(CarpenterFallback, UnfilteredRandomGoalsAreAllPlanned) {
   RecordProperty("fallbacks", fallbacks);
 }
 
-// A planner that cannot get anywhere in its time (steps of 1e-7 rad): the fallback's path is the
-// plan, through flat when the ends are on different branches; without the fallback, no plan.
+// A planner that cannot get anywhere in its time (RRT with steps of 1e-7 rad; not RRTConnect,
+// whose connect loop does not look at the clock): the fallback's path is the plan, through flat
+// when the ends are on different branches; without the fallback, no plan.
 TEST(CarpenterFallback, TakesOverWhenThePlannerCannot) {
   const CreasePattern p = random_vertex(8, 77);
   const FoldState start = random_vertex_state(p, 11), goal = random_vertex_state(p, 12);
@@ -116,6 +119,7 @@ TEST(CarpenterFallback, TakesOverWhenThePlannerCannot) {
   req.start_sequence = foldkit::geometry::path_sequence(
       p, foldkit::planners::carpenter_path(p, FoldState::flat(p), start, 0.02, nullptr), 1.0, "start");
   req.time = 0.4;
+  req.planner = "RRT";
   req.params = {{"range", "1e-7"}};
   const PlanResult r = plan(req);
   expect_valid(p, req, r);
@@ -139,11 +143,13 @@ TEST(CarpenterFallback, RefusesBadSettings) {
       chain, foldkit::statespaces::AngleBounds::of(p, false));
   auto si = std::make_shared<ompl::base::SpaceInformation>(space);
   auto inner = foldkit::planners::make_planner("RRTConnect", si);
+  auto validity = std::make_shared<foldkit::statespaces::FoldValidity>(p, foldkit::statespaces::AngleBounds::of(p, false), true);
   using foldkit::planners::CarpenterFallbackPlanner;
-  EXPECT_THROW(CarpenterFallbackPlanner(si, nullptr, 1.0, p, space), std::invalid_argument);
-  EXPECT_THROW(CarpenterFallbackPlanner(si, inner, 0.0, p, space), std::invalid_argument);
-  EXPECT_THROW(CarpenterFallbackPlanner(si, inner, 1.0, p, space, -0.02), std::invalid_argument);
-  EXPECT_EQ(CarpenterFallbackPlanner(si, inner, 1.0, p, space).getName(), "RRTConnect+Carpenter");
+  EXPECT_THROW(CarpenterFallbackPlanner(si, nullptr, 1.0, p, space, validity), std::invalid_argument);
+  EXPECT_THROW(CarpenterFallbackPlanner(si, inner, 1.0, p, space, nullptr), std::invalid_argument);
+  EXPECT_THROW(CarpenterFallbackPlanner(si, inner, 0.0, p, space, validity), std::invalid_argument);
+  EXPECT_THROW(CarpenterFallbackPlanner(si, inner, 1.0, p, space, validity, -0.02), std::invalid_argument);
+  EXPECT_EQ(CarpenterFallbackPlanner(si, inner, 1.0, p, space, validity).getName(), "RRTConnect+Carpenter");
 }
 
 }  // namespace

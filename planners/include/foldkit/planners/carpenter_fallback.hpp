@@ -14,6 +14,7 @@
 #include "foldkit/geometry/crease_pattern.hpp"
 #include "foldkit/geometry/fold_state.hpp"
 #include "foldkit/statespaces/single_vertex_space.hpp"
+#include "foldkit/statespaces/validity.hpp"
 
 namespace foldkit::planners {
 
@@ -29,13 +30,19 @@ namespace foldkit::planners {
 std::vector<geometry::FoldState> carpenter_path(const geometry::CreasePattern& pattern, const geometry::FoldState& start,
                                                 const geometry::FoldState& goal, double step, std::string* why);
 
+/// The share of a time limit that plan() and `foldkit bench` give the sampling planner before the
+/// fallback: a quarter, so that the fallback (≈ 0.6 s at degree 32: LPs and checks) still fits
+/// into a limit of 1 s; sampling that succeeds at all mostly does so in milliseconds.
+constexpr double kSamplerShare = 0.25;
+
 /// A sampling planner with the spherical Carpenter path as its fallback, on the single-vertex
 /// space. solve() gives the inner planner `inner_time` seconds (or less, when the caller's
 /// condition fires first); when it ends without an exact solution and the caller's condition
-/// has not fired, the fallback path is written into the space, every state and motion is checked
-/// by the SpaceInformation (validity checker and motion validator: bounds, closure, jumps,
-/// collisions), and the path is added as the exact solution when all pass. The planner's name is
-/// the inner planner's followed by "+Carpenter".
+/// has not fired, the fallback path is written into the space and checked in order, as one
+/// motion, by `validity` (bounds, closure, crossing facets); a gap larger than the motion
+/// validator's jump limit (a frame the space cannot hold was skipped) goes through the
+/// SpaceInformation's motion validator instead. The path is added as the exact solution when all
+/// pass. The planner's name is the inner planner's followed by "+Carpenter".
 class CarpenterFallbackPlanner : public ompl::base::Planner {
  public:
   /// Wraps `inner` (made for `si`) for the single-vertex space `space` of `pattern`.
@@ -44,11 +51,15 @@ class CarpenterFallbackPlanner : public ompl::base::Planner {
   /// @param inner_time  seconds the inner planner may run before the fallback (positive)
   /// @param pattern     the single-vertex pattern (must outlive the planner)
   /// @param space       the single-vertex space the states belong to
-  /// @param step        largest change of a fold angle between the fallback's states, radians (positive)
-  /// @throws std::invalid_argument when inner is null, or inner_time or step is not positive
+  /// @param validity    what a valid state is (the one behind si's validity checker)
+  /// @param step        largest change of a fold angle between the fallback's states, radians
+  ///                    (positive; at most half the motion validator's jump limit)
+  /// @throws std::invalid_argument when inner or validity is null, or inner_time or step is not
+  ///         positive
   CarpenterFallbackPlanner(const ompl::base::SpaceInformationPtr& si, ompl::base::PlannerPtr inner, double inner_time,
                            const geometry::CreasePattern& pattern,
-                           std::shared_ptr<const statespaces::SingleVertexStateSpace> space, double step = 0.02);
+                           std::shared_ptr<const statespaces::SingleVertexStateSpace> space,
+                           std::shared_ptr<const statespaces::FoldValidity> validity, double step = 0.02);
   /// Runs the inner planner, then the fallback (see the class comment).
   /// @return the inner planner's EXACT_SOLUTION; else EXACT_SOLUTION from the fallback; else the
   ///         inner planner's status when the caller's condition fired, or ABORT (the fallback
@@ -76,6 +87,7 @@ class CarpenterFallbackPlanner : public ompl::base::Planner {
   double inner_time_, step_;
   const geometry::CreasePattern* pattern_;
   std::shared_ptr<const statespaces::SingleVertexStateSpace> space_;
+  std::shared_ptr<const statespaces::FoldValidity> validity_;
   bool used_fallback_ = false;
   std::string fallback_message_;
 };

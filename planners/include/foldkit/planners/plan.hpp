@@ -72,9 +72,10 @@ struct PlanRequest {
   bool use_assignment = true;  ///< mountain/valley assignments of the pattern become angle bounds
   bool numerical_jacobian = false;  ///< constrained spaces: OMPL's finite differences (a baseline)
   bool simplify = true;       ///< shorten the path with OMPL's PathSimplifier (reduce vertices, shortcut)
-  /// Single-vertex space: when the planner finds no plan in half of `time`, take the path of
-  /// Carpenter's rule on the sphere (start → flat → goal, CarpenterFallbackPlanner), which
-  /// reaches every closed, non-crossing state. Off: the planner has all of `time`.
+  /// Single-vertex space: when the planner finds no plan in a quarter of `time` (kSamplerShare),
+  /// take the path of Carpenter's rule on the sphere (start → flat → goal,
+  /// CarpenterFallbackPlanner), which reaches every closed, non-crossing state. Off: the planner
+  /// has all of `time`.
   bool fallback = true;
   /// Constrained spaces: when ≥ 0, the ambient box the sampler draws from (and the plan stays in)
   /// is narrowed to [min(start, goal) − margin, max(start, goal) + margin] per crease (within the
