@@ -240,6 +240,7 @@ Resolved resolve(const BenchOptions& o) {
 PlanSetup scene_setup(const BenchScene& scene) {
   PlanSetup setup = make_plan_setup(scene.request, true);
   if (!setup.blocked.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.blocked);
+  if (!setup.unreachable.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.unreachable);
   return setup;
 }
 

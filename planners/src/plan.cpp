@@ -143,6 +143,30 @@ void set_up_single_vertex_space(PlanSetup& setup, const PlanRequest& req, const 
   }
 }
 
+// Why the driving space cannot reach `goal` from `from`, or "" when it may. With one degree of
+// freedom the closed states near `from` are one curve, a graph over the driving crease while the
+// chart stays regular, and every motion of the space is a continuation along it. Following it to
+// the goal's driving angle either reaches the goal, stops at a singular state (then nothing is
+// known: the planner searches as usual), or reaches another closed state: the goal is on another
+// branch (another mode of folding), and the planner would only run out its time.
+std::string other_branch(const geometry::ClosureSystem& system, const geometry::DrivingChart& chart, const FoldState& from,
+                         const FoldState& goal) {
+  if (chart.driving.size() != 1) return {};
+  geometry::PassiveSolver solver(system, chart);
+  FoldState reached;
+  if (!solver.follow(from, solver.driving_of(goal), reached).ok()) return {};
+  Eigen::Index worst = 0;
+  const double gap = (reached.angles - goal.angles).cwiseAbs().maxCoeff(&worst);
+  if (gap <= 1e-6) return {};
+  const auto& joints = system.pattern().joints();
+  const int driving = joints[static_cast<std::size_t>(chart.driving[0])].id, id = joints[static_cast<std::size_t>(worst)].id;
+  return "the goal is on another branch than the start: the start's one-DOF motion reaches the goal's driving angle "
+         "(crease " + std::to_string(driving) + ") with crease " + std::to_string(id) + " at " +
+         std::to_string(reached.angles[worst] * 180.0 / M_PI) + " deg instead of the goal's " +
+         std::to_string(goal.angles[worst] * 180.0 / M_PI) + " deg; the branches meet only at a singular state "
+         "(flat, for a Miura sheet), which no motion of the driving space passes: plan each end from flat instead";
+}
+
 // The driving-crease space: the chart is chosen at the goal (or, when the goal is singular, at
 // the end of the way out of the start), DOF-many coordinates, the rest by closure.
 void set_up_driving_space(PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) {
@@ -170,6 +194,7 @@ void set_up_driving_space(PlanSetup& setup, const PlanRequest& req, const states
     if (req.goal.angles[j] > 0.0 && from.angles[j] > 0.0) lo[i] = std::max(lo[i], 0.0);
     if (req.goal.angles[j] < 0.0 && from.angles[j] < 0.0) hi[i] = std::min(hi[i], 0.0);
   }
+  setup.unreachable = other_branch(system, chart, from, req.goal);
   auto space = std::make_shared<statespaces::DrivingStateSpace>(setup.system, std::move(chart), bounds, lo, hi);
   if (!space->add_anchor(from)) throw PlanInputError(PlanInputError::End::Start, "plan: the start is a singular state of the driving space (try --space projected)");
   if (!space->add_anchor(req.goal)) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal is a singular state of the driving space (try --space projected)");
@@ -328,6 +353,10 @@ PlanResult plan(const PlanRequest& req) {
   result.space = setup.space_name;
   if (!setup.blocked.empty()) {
     result.status = {geometry::StatusCode::Collision, setup.blocked};
+    return result;
+  }
+  if (!setup.unreachable.empty()) {
+    result.status = {geometry::StatusCode::NoProgress, "no plan: " + setup.unreachable};
     return result;
   }
 

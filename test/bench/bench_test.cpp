@@ -255,6 +255,25 @@ TEST(BenchSuite, UnfilteredVertexScenesArePlannedWithTheFallback) {
   EXPECT_THROW(fp::run_bench(o), std::invalid_argument);
 }
 
+// Issue 16, item 3: the imported FOLD patterns (bird base, 5 DOF; Resch, 10 DOF) and the 13-DOF
+// waterbomb 4x4, planned from flat to their scene goals with default options and replayed by the
+// simulator with collisions on.
+TEST(BenchSuite, SeveralDofScenesPlanAndReplay) {
+  for (const char* name : {"bird-base", "resch", "waterbomb4x4"}) {
+    SCOPED_TRACE(name);
+    fp::BenchScene s = fp::make_bench_scene(name, 1);
+    s.request.replay = true;
+    s.request.time = 20.0;
+    const auto r = foldkit::planners::plan(s.request);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_EQ(r.space, "driving");
+    ASSERT_TRUE(r.replay.has_value());
+    EXPECT_TRUE(r.replay->collisions.empty());
+    const ClosureSystem sys(*s.pattern);
+    for (const auto& w : r.waypoints) EXPECT_LE(sys.max_error(w), 1e-10);
+  }
+}
+
 TEST(BenchSuite, ErrorVersusTimeRecordsEveryLimit) {
   fp::BenchOptions o;
   o.scenes = {"vertex4-random"};

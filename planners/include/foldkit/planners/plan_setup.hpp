@@ -35,6 +35,9 @@ struct PlanSetup {
   statespaces::ConstrainedSetup constrained;                          ///< constrained spaces only
   bool joint_space = false;  ///< a pattern without loops: a plain box over the fold angles
   std::string blocked;       ///< not empty: the way out of the start collides (no plan)
+  /// Not empty: the space cannot reach the goal from the start, and why (a 1-DOF pattern whose
+  /// start continues to another state at the goal's driving angle: the goal is on another branch).
+  std::string unreachable;
 
   /// Writes a closed fold state into a state of `space`.
   /// @return false when the space cannot hold it (a singular state of the single-vertex space)
