@@ -5,12 +5,16 @@ that the simulator accepted, the largest closure error along a returned path, an
 median time to that of a reference entry of the same scene.
 
     bench_table.py DIR_OR_LOG... [--reference ENTRY] [--csv FILE]
+    bench_table.py DIR/error_vs_time.csv
+
 
 Several folders (one per seed, say) are pooled: a scene's runs are summed over them. An exact
 solution is a run whose `status ENUM` is OMPL's EXACT_SOLUTION; a run stopped by the time limit,
 or with only an approximate path, is not. The ratio column (ENTRY's median / this median; > 1:
 this entry is faster) needs --reference, e.g. RRTConnect@driving; it is empty where either has no
-exact run. Standard library only.
+exact run. Given the CSV of `foldkit bench … --error-vs-time`, it prints per scene, entry and
+time limit the exact solutions, the median distance to the goal reached (radians) and the largest
+closure error along an exact path. Standard library only.
 """
 import argparse
 import csv
@@ -106,12 +110,34 @@ def fmt(v, spec):
     return "–" if v is None else format(v, spec)
 
 
+def error_vs_time(path):
+    """Rows (scene, entry, limit, exact, runs, median goal distance, largest path closure error)
+    of an error_vs_time.csv (`foldkit bench … --error-vs-time`)."""
+    groups = defaultdict(list)
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            groups[(row["scene"], row["planner"], float(row["time_limit_s"]))].append(row)
+    out = []
+    for (scene, entry, limit), rows in groups.items():
+        errors = [number(r["max_closure_error_rad"]) for r in rows if r["solution"] == "exact"]
+        errors = [e for e in errors if e is not None and e == e]
+        out.append([scene, entry, limit, sum(r["solution"] == "exact" for r in rows), len(rows),
+                    statistics.median(number(r["goal_distance_rad"]) for r in rows), max(errors) if errors else None])
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("paths", nargs="+")
     ap.add_argument("--reference", help="the entry the ratio column compares with (e.g. RRTConnect@driving)")
     ap.add_argument("--csv", help="also write the table as CSV")
     a = ap.parse_args()
+    if len(a.paths) == 1 and a.paths[0].endswith(".csv"):
+        print("| scene | entry | time limit (s) | exact | median goal distance (rad) | max closure error (rad) |")
+        print("|---|---|---|---|---|---|")
+        for scene, entry, limit, exact, runs, distance, error in error_vs_time(a.paths[0]):
+            print(f"| {scene} | {entry} | {limit:g} | {exact}/{runs} | {distance:.3g} | {fmt(error, '.2g')} |")
+        return
     table = summarise(log_files(a.paths))
     add_ratios(table, a.reference)
     header = ["scene", "entry", "runs", "exact", "median (s)", "slowest (s)", "replay valid", "max closure error (rad)"]

@@ -2,6 +2,7 @@
 #include "foldkit/planners/plan_setup.hpp"
 
 #include <chrono>
+#include <optional>
 #include <cmath>
 #include <stdexcept>
 
@@ -340,32 +341,17 @@ geometry::FoldSequence plan_sequence(const PlanRequest& req, const PlanSetup& se
   return seq;
 }
 
-PlanResult plan(const PlanRequest& req) {
-  if (!req.pattern) throw std::invalid_argument("plan: no pattern");
-  if (!(req.time > 0.0) || !std::isfinite(req.time)) throw std::invalid_argument("plan: the time limit must be positive");
-  if (req.quiet) ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-  ompl::RNG::setSeed(std::max(1u, req.seed));
+namespace {
 
-  const PlanSetup setup = make_plan_setup(req);
-  const geometry::CreasePattern& pattern = *req.pattern;
-  PlanResult result;
-  result.planner = req.planner;
-  result.space = setup.space_name;
-  if (!setup.blocked.empty()) {
-    result.status = {geometry::StatusCode::Collision, setup.blocked};
-    return result;
-  }
-  if (!setup.unreachable.empty()) {
-    result.status = {geometry::StatusCode::NoProgress, "no plan: " + setup.unreachable};
-    return result;
-  }
-
+// Runs the request's planner (with the single-vertex fallback where it applies) until its first
+// exact solution or the time limit; the solution path, or nothing with result.status set.
+std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanRequest& req, PlanResult& result) {
   og::SimpleSetup ss(setup.si);
   ob::PlannerPtr planner = make_planner(req.planner, setup.si);
   set_planner_params(*planner, req.planner, req.params);
   std::shared_ptr<CarpenterFallbackPlanner> fallback;
   if (setup.single_vertex && req.fallback) {
-    fallback = std::make_shared<CarpenterFallbackPlanner>(setup.si, planner, kSamplerShare * req.time, pattern,
+    fallback = std::make_shared<CarpenterFallbackPlanner>(setup.si, planner, kSamplerShare * req.time, *req.pattern,
                                                           setup.single_vertex, setup.validity, req.waypoint_step);
     planner = fallback;
   }
@@ -379,31 +365,51 @@ PlanResult plan(const PlanRequest& req) {
                                                  ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition())));
   result.time = elapsed(t0);
   result.fallback = fallback && fallback->used_fallback();
-  if (status != ob::PlannerStatus::EXACT_SOLUTION && fallback && !fallback->fallback_message().empty()) {
+  if (status == ob::PlannerStatus::EXACT_SOLUTION) return ss.getSolutionPath();
+  // The fallback failed (its reason), or the time ran out (OMPL's TIMEOUT, or only an approximate
+  // path in that time); anything else OMPL reports is named as it says it.
+  if (fallback && !fallback->fallback_message().empty())
     result.status = {geometry::StatusCode::NoProgress, "no plan: " + req.planner + " found none in " +
                                                            std::to_string(kSamplerShare * req.time) + " s, and " +
                                                            fallback->fallback_message()};
+  else if (status == ob::PlannerStatus::TIMEOUT || status == ob::PlannerStatus::APPROXIMATE_SOLUTION)
+    result.status = {geometry::StatusCode::LimitReached, "no plan found within " + std::to_string(req.time) + " s"};
+  else if (status == ob::PlannerStatus::INVALID_START || status == ob::PlannerStatus::INVALID_GOAL)
+    result.status = {geometry::StatusCode::InvalidInput, "no plan: OMPL reports " + status.asString()};
+  else
+    result.status = {geometry::StatusCode::NoProgress, "no plan: OMPL reports " + status.asString()};
+  return std::nullopt;
+}
+
+}  // namespace
+
+PlanResult plan(const PlanRequest& req) {
+  if (!req.pattern) throw std::invalid_argument("plan: no pattern");
+  if (!(req.time > 0.0) || !std::isfinite(req.time)) throw std::invalid_argument("plan: the time limit must be positive");
+  if (req.quiet) ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  ompl::RNG::setSeed(std::max(1u, req.seed));
+
+  const PlanSetup setup = make_plan_setup(req);
+  PlanResult result;
+  result.planner = req.planner;
+  result.space = setup.space_name;
+  if (!setup.blocked.empty()) {
+    result.status = {geometry::StatusCode::Collision, setup.blocked};
     return result;
   }
-  if (status != ob::PlannerStatus::EXACT_SOLUTION) {
-    // The time ran out (OMPL's TIMEOUT, or only an approximate path in that time); anything else
-    // OMPL reports is named as it says it.
-    if (status == ob::PlannerStatus::TIMEOUT || status == ob::PlannerStatus::APPROXIMATE_SOLUTION)
-      result.status = {geometry::StatusCode::LimitReached, "no plan found within " + std::to_string(req.time) + " s"};
-    else if (status == ob::PlannerStatus::INVALID_START || status == ob::PlannerStatus::INVALID_GOAL)
-      result.status = {geometry::StatusCode::InvalidInput, "no plan: OMPL reports " + status.asString()};
-    else
-      result.status = {geometry::StatusCode::NoProgress, "no plan: OMPL reports " + status.asString()};
+  if (!setup.unreachable.empty()) {
+    result.status = {geometry::StatusCode::NoProgress, "no plan: " + setup.unreachable};
     return result;
   }
-  og::PathGeometric path = ss.getSolutionPath();
+  std::optional<og::PathGeometric> path = solve(setup, req, result);
+  if (!path) return result;
   if (req.simplify) {
     og::PathSimplifier simplifier(setup.si);
-    simplifier.reduceVertices(path);
-    simplifier.shortcutPath(path);
+    simplifier.reduceVertices(*path);
+    simplifier.shortcutPath(*path);
   }
   std::string why;
-  const auto dense = path_waypoints(setup, path, req, true, &why);
+  const auto dense = path_waypoints(setup, *path, req, true, &why);
   if (!dense) {
     result.status = {geometry::StatusCode::ClosureViolated, why};
     return result;
@@ -425,7 +431,7 @@ PlanResult plan(const PlanRequest& req) {
     simulation::SimulationOptions so;
     so.collisions = req.collisions;
     so.progress = req.progress;
-    result.replay = simulation::simulate(pattern, result.sequence, so);
+    result.replay = simulation::simulate(*req.pattern, result.sequence, so);
     result.max_closure_error = std::max(result.max_closure_error, result.replay->max_closure_error);
     if (!result.replay->status) {
       result.status = {result.replay->status.code, "the simulator rejects the plan: " + result.replay->status.message};
