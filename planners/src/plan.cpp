@@ -144,6 +144,10 @@ void set_up_single_vertex_space(PlanSetup& setup, const PlanRequest& req, const 
   }
 }
 
+// The driving space's focus box: the box of the plan's start and goal, widened by this (radians),
+// receives this share of the uniform samples (docs/PLANNING.md: measured at 0.5 and 0.9).
+constexpr double kFocusMargin = 0.2, kFocusShare = 0.9;
+
 // Why the driving space cannot reach `goal` from `from`, or "" when it may. With one degree of
 // freedom the closed states near `from` are one curve, a graph over the driving crease while the
 // chart stays regular, and every motion of the space is a continuation along it. Following it to
@@ -196,7 +200,18 @@ void set_up_driving_space(PlanSetup& setup, const PlanRequest& req, const states
     if (req.goal.angles[j] < 0.0 && from.angles[j] < 0.0) hi[i] = std::min(hi[i], 0.0);
   }
   setup.unreachable = other_branch(system, chart, from, req.goal);
+  // Most uniform samples in the box of start and goal, widened by kFocusMargin: a box of many
+  // driving creases is mostly out of reach, and RRTConnect's extensions towards such samples
+  // each cost a continuation (waterbomb 4x4, 13 DOF: 20x faster). The other samples keep the
+  // whole box covered.
+  Eigen::VectorXd focus_lo(dof), focus_hi(dof);
+  for (int i = 0; i < dof; ++i) {
+    const int j = chart.driving[static_cast<std::size_t>(i)];
+    focus_lo[i] = std::min(req.goal.angles[j], from.angles[j]) - kFocusMargin;
+    focus_hi[i] = std::max(req.goal.angles[j], from.angles[j]) + kFocusMargin;
+  }
   auto space = std::make_shared<statespaces::DrivingStateSpace>(setup.system, std::move(chart), bounds, lo, hi);
+  space->set_focus(focus_lo, focus_hi, kFocusShare);
   if (!space->add_anchor(from)) throw PlanInputError(PlanInputError::End::Start, "plan: the start is a singular state of the driving space (try --space projected)");
   if (!space->add_anchor(req.goal)) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal is a singular state of the driving space (try --space projected)");
   setup.driving = space;

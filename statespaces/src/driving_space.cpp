@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 #include <ostream>
+#include <stdexcept>
 #include <utility>
 
 #include <ompl/base/ProjectionEvaluator.h>
@@ -85,6 +86,8 @@ DrivingStateSpace::DrivingStateSpace(std::shared_ptr<const geometry::ClosureSyst
     throw ompl::Exception("DrivingStateSpace: bounds do not hold one range per joint");
   if (driving_lower_.size() != d || driving_upper_.size() != d || (driving_lower_.array() > driving_upper_.array()).any())
     throw ompl::Exception("DrivingStateSpace: the driving bounds do not hold one range per driving crease");
+  focus_lower_ = driving_lower_;
+  focus_upper_ = driving_upper_;
 }
 
 DrivingStateSpace::~DrivingStateSpace() = default;
@@ -169,6 +172,15 @@ Eigen::VectorXd DrivingStateSpace::driving_of(const ob::State* state) const {
 }
 
 unsigned int DrivingStateSpace::getDimension() const { return static_cast<unsigned int>(chart_.driving.size()); }
+
+void DrivingStateSpace::set_focus(const Eigen::VectorXd& lower, const Eigen::VectorXd& upper, double share) {
+  if (lower.size() != driving_lower_.size() || upper.size() != driving_lower_.size() || (lower.array() > upper.array()).any())
+    throw std::invalid_argument("DrivingStateSpace::set_focus: one lower ≤ upper pair per driving crease");
+  if (!(share >= 0.0 && share <= 1.0)) throw std::invalid_argument("DrivingStateSpace::set_focus: the share must be in [0, 1]");
+  focus_lower_ = lower.cwiseMax(driving_lower_).cwiseMin(driving_upper_);
+  focus_upper_ = upper.cwiseMax(driving_lower_).cwiseMin(driving_upper_);
+  focus_share_ = share;
+}
 
 double DrivingStateSpace::getMaximumExtent() const { return (driving_upper_ - driving_lower_).norm(); }
 
@@ -315,8 +327,9 @@ bool DrivingSampler::draw_about(ob::State* state, const ob::State* about, Draw d
 }
 
 void DrivingSampler::sampleUniform(ob::State* state) {
-  const Eigen::VectorXd& lo = space_->driving_lower();
-  const Eigen::VectorXd& hi = space_->driving_upper();
+  const bool focus = space_->focus_share() > 0.0 && rng_.uniform01() < space_->focus_share();
+  const Eigen::VectorXd& lo = focus ? space_->focus_lower() : space_->driving_lower();
+  const Eigen::VectorXd& hi = focus ? space_->focus_upper() : space_->driving_upper();
   draw_about(state, nullptr, [&] {
     Eigen::VectorXd d(lo.size());
     for (Eigen::Index i = 0; i < d.size(); ++i) d[i] = rng_.uniformReal(lo[i], hi[i]);

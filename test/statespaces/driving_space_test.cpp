@@ -126,3 +126,44 @@ TEST(DrivingSpace, StatesOutOfBoundsOrWithoutRootsAreRejected) {
 }
 
 }  // namespace
+
+namespace {
+
+// The focus box (set_focus): with share 1 every closed uniform sample lies in it, with share 0
+// the samples cover the rest of the driving box too; bad boxes and shares are refused.
+TEST(DrivingSpace, FocusBoxTakesItsShareOfTheSamples) {
+  ompl::RNG::setSeed(13);
+  Space s = make_space(gen::waterbomb(2, 2), 0.4);
+  s.space->setup();
+  const Eigen::VectorXd lo = s.space->driving_lower(), hi = s.space->driving_upper();
+  const Eigen::VectorXd mid = 0.5 * (lo + hi), quarter = 0.25 * (hi - lo);
+  s.space->set_focus(mid - quarter, mid + quarter, 1.0);
+  auto sampler = s.space->allocDefaultStateSampler();
+  ob::ScopedState<> x(s.space);
+  const auto inside = [&] {
+    const Eigen::VectorXd d = s.space->driving_of(x.get());
+    return ((d - mid).cwiseAbs().array() <= quarter.array() + 1e-12).all();
+  };
+  int closed = 0, in = 0;
+  for (int k = 0; k < 100; ++k) {
+    sampler->sampleUniform(x.get());
+    if (!x->as<DrivingStateSpace::StateType>()->closed) continue;
+    ++closed;
+    in += inside();
+  }
+  EXPECT_GT(closed, 50);
+  EXPECT_EQ(in, closed);
+  s.space->set_focus(mid - quarter, mid + quarter, 0.0);
+  int outside = 0;
+  for (int k = 0; k < 100; ++k) {
+    sampler->sampleUniform(x.get());
+    outside += x->as<DrivingStateSpace::StateType>()->closed && !inside();
+  }
+  EXPECT_GT(outside, 0);
+  EXPECT_THROW(s.space->set_focus(mid + quarter, mid - quarter, 0.5), std::invalid_argument);
+  EXPECT_THROW(s.space->set_focus(mid, mid, 1.5), std::invalid_argument);
+  EXPECT_THROW(s.space->set_focus(Eigen::VectorXd::Zero(lo.size() + 1), Eigen::VectorXd::Zero(lo.size() + 1), 0.5),
+               std::invalid_argument);
+}
+
+}  // namespace

@@ -64,6 +64,24 @@ class DrivingStateSpace : public ompl::base::StateSpace {
   /// Number of joints of the pattern: the length of StateType::angles.
   std::size_t joints() const { return n_; }
 
+  /// Makes a share of the uniform samples fall in a smaller box of driving angles (clamped into
+  /// the driving bounds), e.g. around the plan's start and goal: uniform samples of a box of many
+  /// driving creases mostly lie where no continuation from an anchor reaches, while the rest of
+  /// the samples still cover the whole box (the sampler stays probabilistically complete). Not
+  /// thread-safe: set it before planning.
+  /// @param lower  lower corner, chart order, radians
+  /// @param upper  upper corner, chart order, radians
+  /// @param share  the probability that a uniform sample is drawn in the box, in [0, 1]
+  /// @throws std::invalid_argument for corners of the wrong size or out of order, or a share
+  ///         outside [0, 1]
+  void set_focus(const Eigen::VectorXd& lower, const Eigen::VectorXd& upper, double share);
+  /// The focus box's lower corner (the driving bounds' when none was set).
+  const Eigen::VectorXd& focus_lower() const { return focus_lower_; }
+  /// The focus box's upper corner (the driving bounds' when none was set).
+  const Eigen::VectorXd& focus_upper() const { return focus_upper_; }
+  /// The probability that a uniform sample is drawn in the focus box (0 when none was set).
+  double focus_share() const { return focus_share_; }
+
   /// Adds a closed state that sampled states are continued from (the nearest one, by driving
   /// distance). Not thread-safe: add anchors before planning.
   /// @return false (nothing added) when `state` does not close in this chart
@@ -138,7 +156,8 @@ class DrivingStateSpace : public ompl::base::StateSpace {
   std::shared_ptr<const geometry::ClosureSystem> system_;
   geometry::DrivingChart chart_;
   AngleBounds bounds_;
-  Eigen::VectorXd driving_lower_, driving_upper_;
+  Eigen::VectorXd driving_lower_, driving_upper_, focus_lower_, focus_upper_;
+  double focus_share_ = 0.0;
   geometry::PassiveSolverOptions options_;
   std::size_t n_;
   std::vector<geometry::FoldState> anchors_;
@@ -147,8 +166,9 @@ class DrivingStateSpace : public ompl::base::StateSpace {
   mutable std::vector<std::unique_ptr<Worker>> pool_;
 };
 
-/// Uniform driving angles within the driving bounds, the passives continued from the nearest
-/// anchor; redrawn (up to kMaxTries) until the state closes within the bounds. Near and Gaussian
+/// Uniform driving angles within the driving bounds (within the focus box, with the space's
+/// focus share: DrivingStateSpace::set_focus), the passives continued from the nearest anchor;
+/// redrawn (up to kMaxTries) until the state closes within the bounds. Near and Gaussian
 /// samples are continued from the state they are drawn about.
 class DrivingSampler : public ompl::base::StateSampler {
  public:
