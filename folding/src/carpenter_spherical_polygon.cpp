@@ -32,6 +32,8 @@ constexpr double kGapFloor = 1e-12;  // radians
 constexpr std::size_t kSeedStruts = 4;
 constexpr double kStrutSlack = 1e-12;
 constexpr int kMaxRounds = 50;
+// A generated LP whose optimum t is at most this is solved again whole, from scratch.
+constexpr double kRetryRate = 1e-9;
 // Rounding in a distance: a crease locked on a bar close to π is placed by dividing by sin(bar),
 // which puts a few 1e-13 of noise into its distances.
 constexpr double kShrinkTolerance = 1e-11;
@@ -258,8 +260,10 @@ Velocity Polygon::expansive_velocity() const {
   // that keeps every strut is the optimum of the whole LP. On the degree-32 goals of
   // bench_vertex_fallback the LPs with 30+ creases kept 114 of their 432 struts on average, after
   // 0.85 extra rounds; the flattening took 1.4x less CPU.
-  std::vector<bool> in(struts.size(), false);
-  {
+  // Small LPs (up to twice the seed) are solved whole at once: the rounds would cost more.
+  const bool whole = struts.size() <= 2 * kSeedStruts * m;
+  std::vector<bool> in(struts.size(), whole);
+  if (!whole) {
     std::vector<std::vector<std::pair<double, std::size_t>>> near(m);
     for (std::size_t i = 0; i < struts.size(); ++i) {
       near[struts[i].k].emplace_back(struts[i].d, i);
@@ -276,6 +280,7 @@ Velocity Polygon::expansive_velocity() const {
     row.emplace_back(t, st.t_coefficient);
     return row;
   };
+  const LinearProgram base = lp;  // without struts
   for (std::size_t i = 0; i < struts.size(); ++i)
     if (in[i]) lp.add_row(strut_row(struts[i]), -std::numeric_limits<double>::infinity(), 0.0);
   IncrementalLp model(lp);
@@ -300,6 +305,14 @@ Velocity Polygon::expansive_velocity() const {
       sol = model.solve();
       break;
     }
+  }
+  if (sol.status != LpSolution::Status::Optimal || !(sol.x[static_cast<std::size_t>(t)] > kRetryRate)) {
+    // Clp's dual simplex, warm-started after rows were added, has answered t = 0 where the whole
+    // LP has t > 0 (a degenerate basis: u̇ = 0 is always feasible). Only the whole LP, solved
+    // from scratch, may say that no strictly expansive motion exists.
+    LinearProgram full = base;
+    for (const Strut& st : struts) full.add_row(strut_row(st), -std::numeric_limits<double>::infinity(), 0.0);
+    sol = solve(full);
   }
   if (sol.status != LpSolution::Status::Optimal) {
     v.message = std::string("the expansion LP is ") + to_string(sol.status);

@@ -19,6 +19,7 @@
 #include "foldkit/bench/log.hpp"
 #include "foldkit/bench/run.hpp"
 #include "foldkit/bench/scenes.hpp"
+#include "foldkit/planners/carpenter_fallback.hpp"
 #include "foldkit/simulation/collision_world.hpp"
 #include "foldkit/statespaces/single_vertex_space.hpp"
 #include "test_paths.hpp"
@@ -272,6 +273,17 @@ TEST(BenchSuite, SeveralDofScenesPlanAndReplay) {
     const ClosureSystem sys(*s.pattern);
     for (const auto& w : r.waypoints) EXPECT_LE(sys.max_error(w), 1e-10);
   }
+}
+
+// Regression: with the spherical LP by constraint generation, Clp's warm-started dual simplex
+// answered t = 0 at the first step of this goal (the whole LP has t > 0), and Carpenter's rule
+// stopped with "no strictly expansive motion"; such an answer is now checked on the whole LP.
+TEST(BenchSuite, CarpenterFlattensTheDegree32GoalOfSeed11) {
+  const fp::BenchScene s = fp::make_bench_scene("vertex32-any", 11);
+  std::string why;
+  const auto way = foldkit::planners::carpenter_path(*s.pattern, FoldState::flat(*s.pattern), s.request.goal, 0.02, &why);
+  ASSERT_FALSE(way.empty()) << why;
+  EXPECT_LT((way.back().angles - s.request.goal.angles).cwiseAbs().maxCoeff(), 1e-12);
 }
 
 TEST(BenchSuite, ErrorVersusTimeRecordsEveryLimit) {
