@@ -259,7 +259,7 @@ Velocity Polygon::expansive_velocity() const {
   // breaks and re-solves from the last basis, until none is broken. An optimum of the relaxation
   // that keeps every strut is the optimum of the whole LP. On the degree-32 goals of
   // bench_vertex_fallback the LPs with 30+ creases kept 114 of their 432 struts on average, after
-  // 0.85 extra rounds; the flattening took 1.4x less CPU.
+  // 0.85 extra rounds; flattening took 1.5x less time (docs/CARPENTER.md).
   // Small LPs (up to twice the seed) are solved whole at once: the rounds would cost more.
   const bool whole = struts.size() <= 2 * kSeedStruts * m;
   std::vector<bool> in(struts.size(), whole);
