@@ -34,6 +34,103 @@ constexpr double kStrutSlack = 1e-12;
 constexpr int kMaxRounds = 50;
 // A generated LP whose optimum t is at most this is solved again whole, from scratch.
 constexpr double kRetryRate = 1e-9;
+
+// One strut of the expansion LP: unlocked creases k < l (Polygon::active order), their distance,
+// and the coefficient of t in its row.
+struct Strut {
+  std::size_t k, l;
+  double d, t_coefficient;
+};
+
+// Every strut of the polygon whose unlocked creases are `points`, `bars` apart.
+std::vector<Strut> strut_list(const std::vector<Vector3d>& points, const std::vector<double>& bars) {
+  const std::size_t m = points.size();
+  // Arc from the first unlocked crease to each one, along the polygon.
+  std::vector<double> along(m, 0.0);
+  for (std::size_t k = 1; k < m; ++k) along[k] = along[k - 1] + bars[k - 1];
+  std::vector<Strut> struts;
+  for (std::size_t k = 0; k < m; ++k)
+    for (std::size_t l = k + 2; l < m; ++l) {
+      if (k == 0 && l == m - 1) continue;
+      // No distance can exceed its value in the flat state, min(arc, 2π − arc); near it a pair
+      // can only grow as fast as the square root of its gap (gap ~ fold angle²). Asking each pair
+      // for growth ≥ t·min(1, √gap / kGapScale) lets creases straighten and the sheet reach flat
+      // in finite time instead of slowing down exponentially.
+      const double d = distance(points[k], points[l]);
+      const double a = along[l] - along[k];
+      const double gap = std::max(0.0, std::min(a, 2.0 * M_PI - a) - d);
+      // Below kGapFloor the gap is rounding: the pair is at its largest (across a straight crease
+      // that cannot be merged) and may only keep its distance.
+      const double weight = gap < kGapFloor ? 0.0 : std::min(1.0, std::sqrt(gap) / kGapScale);
+      // −d(cos d)/dt = sin d · ḋ ≥ t · weight · sin d.
+      struts.push_back({k, l, d, weight * std::sin(d)});
+    }
+  return struts;
+}
+
+// The struts of the first LP: each crease's kSeedStruts nearest (the pairs that bind), or all of
+// them when there are at most twice as many (the rounds would cost more than they save).
+std::vector<bool> seed_struts(const std::vector<Strut>& struts, std::size_t m) {
+  const bool whole = struts.size() <= 2 * kSeedStruts * m;
+  std::vector<bool> in(struts.size(), whole);
+  if (whole) return in;
+  std::vector<std::vector<std::pair<double, std::size_t>>> near(m);
+  for (std::size_t i = 0; i < struts.size(); ++i) {
+    near[struts[i].k].emplace_back(struts[i].d, i);
+    near[struts[i].l].emplace_back(struts[i].d, i);
+  }
+  for (auto& list : near) {
+    const std::size_t keep = std::min(list.size(), kSeedStruts);
+    std::partial_sort(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(keep), list.end());
+    for (std::size_t j = 0; j < keep; ++j) in[list[j].second] = true;
+  }
+  return in;
+}
+
+// The optimum of `base` with every strut's row (`strut_row`), by constraint generation, as the
+// planar rule does: the LP starts with the struts `in` holds, then takes the struts the solution
+// breaks and re-solves from the last basis, until none is broken. An optimum of the relaxation
+// that keeps every strut is the optimum of the whole LP. On the degree-32 goals of
+// bench_vertex_fallback the LPs with 30+ creases kept 114 of their 432 struts on average, after
+// 0.85 extra rounds; flattening took 1.5x less time (docs/CARPENTER.md).
+template <class Row>
+LpSolution solve_with_struts(const LinearProgram& base, const std::vector<Strut>& struts, std::vector<bool> in, int t,
+                             Row strut_row) {
+  constexpr double free_below = -std::numeric_limits<double>::infinity();
+  LinearProgram lp = base;
+  for (std::size_t i = 0; i < struts.size(); ++i)
+    if (in[i]) lp.add_row(strut_row(struts[i]), free_below, 0.0);
+  IncrementalLp model(lp);
+  LpSolution sol;
+  for (int round = 0;; ++round) {
+    sol = model.solve();
+    if (sol.status != LpSolution::Status::Optimal) break;
+    bool added = false;
+    for (std::size_t i = 0; i < struts.size(); ++i) {
+      if (in[i]) continue;
+      double value = 0.0;
+      for (const auto& [c, a] : strut_row(struts[i])) value += a * sol.x[static_cast<std::size_t>(c)];
+      if (value <= kStrutSlack) continue;
+      model.add_row(strut_row(struts[i]), free_below, 0.0);
+      in[i] = true;
+      added = true;
+    }
+    if (!added) break;
+    if (round == kMaxRounds) {  // never seen; the whole LP settles it
+      for (std::size_t i = 0; i < struts.size(); ++i)
+        if (!in[i]) model.add_row(strut_row(struts[i]), free_below, 0.0);
+      sol = model.solve();
+      break;
+    }
+  }
+  if (sol.status == LpSolution::Status::Optimal && sol.x[static_cast<std::size_t>(t)] > kRetryRate) return sol;
+  // Clp's dual simplex, warm-started after rows were added, has answered t = 0 where the whole LP
+  // has t > 0 (a degenerate basis: u̇ = 0 is always feasible). Only the whole LP, solved from
+  // scratch, may say that no strictly expansive motion exists.
+  LinearProgram full = base;
+  for (const Strut& st : struts) full.add_row(strut_row(st), free_below, 0.0);
+  return solve(full);
+}
 // Rounding in a distance: a crease locked on a bar close to π is placed by dividing by sin(bar),
 // which puts a few 1e-13 of noise into its distances.
 constexpr double kShrinkTolerance = 1e-11;
@@ -230,90 +327,15 @@ Velocity Polygon::expansive_velocity() const {
     lp.add_row(tangent, 0.0, 0.0);
     lp.add_row(rate(k, (k + 1) % m), 0.0, 0.0);
   }
-  // Arc from the first unlocked crease to each one, along the polygon.
-  std::vector<double> along(m, 0.0);
-  for (std::size_t k = 1; k < m; ++k) along[k] = along[k - 1] + bars_[k - 1];
-  struct Strut {
-    std::size_t k, l;
-    double d, t_coefficient;
-  };
-  std::vector<Strut> struts;
-  for (std::size_t k = 0; k < m; ++k)
-    for (std::size_t l = k + 2; l < m; ++l) {
-      if (k == 0 && l == m - 1) continue;
-      // No distance can exceed its value in the flat state, min(arc, 2π − arc); near it a pair
-      // can only grow as fast as the square root of its gap (gap ~ fold angle²). Asking each pair
-      // for growth ≥ t·min(1, √gap / kGapScale) lets creases straighten and the sheet reach flat
-      // in finite time instead of slowing down exponentially.
-      const double d = distance(point(k), point(l));
-      const double a = along[l] - along[k];
-      const double gap = std::max(0.0, std::min(a, 2.0 * M_PI - a) - d);
-      // Below kGapFloor the gap is rounding: the pair is at its largest (across a straight crease
-      // that cannot be merged) and may only keep its distance.
-      const double weight = gap < kGapFloor ? 0.0 : std::min(1.0, std::sqrt(gap) / kGapScale);
-      // −d(cos d)/dt = sin d · ḋ ≥ t · weight · sin d.
-      struts.push_back({k, l, d, weight * std::sin(d)});
-    }
-  // Constraint generation, as the planar rule does: the LP starts with each crease's struts to
-  // its kSeedStruts nearest creases (the pairs that bind), then takes the struts the solution
-  // breaks and re-solves from the last basis, until none is broken. An optimum of the relaxation
-  // that keeps every strut is the optimum of the whole LP. On the degree-32 goals of
-  // bench_vertex_fallback the LPs with 30+ creases kept 114 of their 432 struts on average, after
-  // 0.85 extra rounds; flattening took 1.5x less time (docs/CARPENTER.md).
-  // Small LPs (up to twice the seed) are solved whole at once: the rounds would cost more.
-  const bool whole = struts.size() <= 2 * kSeedStruts * m;
-  std::vector<bool> in(struts.size(), whole);
-  if (!whole) {
-    std::vector<std::vector<std::pair<double, std::size_t>>> near(m);
-    for (std::size_t i = 0; i < struts.size(); ++i) {
-      near[struts[i].k].emplace_back(struts[i].d, i);
-      near[struts[i].l].emplace_back(struts[i].d, i);
-    }
-    for (auto& list : near) {
-      const std::size_t keep = std::min(list.size(), kSeedStruts);
-      std::partial_sort(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(keep), list.end());
-      for (std::size_t j = 0; j < keep; ++j) in[list[j].second] = true;
-    }
-  }
+  std::vector<Vector3d> points(m);
+  for (std::size_t k = 0; k < m; ++k) points[k] = point(k);
+  const std::vector<Strut> struts = strut_list(points, bars_);
   const auto strut_row = [&](const Strut& st) {
     auto row = rate(st.k, st.l);
     row.emplace_back(t, st.t_coefficient);
     return row;
   };
-  const LinearProgram base = lp;  // without struts
-  for (std::size_t i = 0; i < struts.size(); ++i)
-    if (in[i]) lp.add_row(strut_row(struts[i]), -std::numeric_limits<double>::infinity(), 0.0);
-  IncrementalLp model(lp);
-  LpSolution sol;
-  for (int round = 0;; ++round) {
-    sol = model.solve();
-    if (sol.status != LpSolution::Status::Optimal) break;
-    bool added = false;
-    for (std::size_t i = 0; i < struts.size(); ++i) {
-      if (in[i]) continue;
-      double value = 0.0;
-      for (const auto& [c, a] : strut_row(struts[i])) value += a * sol.x[static_cast<std::size_t>(c)];
-      if (value <= kStrutSlack) continue;
-      model.add_row(strut_row(struts[i]), -std::numeric_limits<double>::infinity(), 0.0);
-      in[i] = true;
-      added = true;
-    }
-    if (!added) break;
-    if (round == kMaxRounds) {  // never seen; the whole LP settles it
-      for (std::size_t i = 0; i < struts.size(); ++i)
-        if (!in[i]) model.add_row(strut_row(struts[i]), -std::numeric_limits<double>::infinity(), 0.0);
-      sol = model.solve();
-      break;
-    }
-  }
-  if (sol.status != LpSolution::Status::Optimal || !(sol.x[static_cast<std::size_t>(t)] > kRetryRate)) {
-    // Clp's dual simplex, warm-started after rows were added, has answered t = 0 where the whole
-    // LP has t > 0 (a degenerate basis: u̇ = 0 is always feasible). Only the whole LP, solved
-    // from scratch, may say that no strictly expansive motion exists.
-    LinearProgram full = base;
-    for (const Strut& st : struts) full.add_row(strut_row(st), -std::numeric_limits<double>::infinity(), 0.0);
-    sol = solve(full);
-  }
+  const LpSolution sol = solve_with_struts(lp, struts, seed_struts(struts, m), t, strut_row);
   if (sol.status != LpSolution::Status::Optimal) {
     v.message = std::string("the expansion LP is ") + to_string(sol.status);
     return v;
