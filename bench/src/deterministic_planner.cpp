@@ -8,11 +8,11 @@
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/geometric/PathGeometric.h>
 
-#include "foldkit/folding/carpenter_spherical.hpp"
 #include "foldkit/folding/projected_folding.hpp"
 #include "foldkit/geometry/closure_path.hpp"
 #include "foldkit/bench/deterministic_planner.hpp"
 #include "foldkit/bench/scenes.hpp"
+#include "foldkit/planners/carpenter_fallback.hpp"
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 
@@ -118,18 +118,11 @@ const std::vector<Method>& methods() {
            return {};
          }
        }},
-      // Carpenter's rule on the sphere (single vertices): the goal flattened, the frames reversed.
+      // Carpenter's rule on the sphere (single vertices): the goal flattened, the frames reversed
+      // (planners::carpenter_path from flat, as the fallback of plan() uses it).
       {"SphericalCarpenter",
        [](const DeterministicProblem& p, const ob::PlannerTerminationCondition&) -> std::vector<FoldState> {
-         folding::CarpenterSphericalOptions o;
-         o.frame_step = p.step;
-         try {
-           const folding::CarpenterSphericalResult r = folding::flatten_single_vertex(*p.pattern, p.goal, o);
-           if (!r.status.ok()) return {};
-           return from_flat(p, std::vector<FoldState>(r.frames.rbegin(), r.frames.rend()));
-         } catch (const std::invalid_argument&) {
-           return {};
-         }
+         return from_flat(p, planners::carpenter_path(*p.pattern, FoldState::flat(*p.pattern), p.goal, p.step, nullptr));
        }},
   };
   return m;

@@ -157,13 +157,13 @@ ob::PlannerPtr entry_planner(const std::string& entry, const BenchScene& scene, 
 ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, const PlanSetup& setup,
                              const std::vector<std::pair<std::string, std::string>>& params, double time) {
   if (const std::string inner = fallback_inner(name); !inner.empty()) {
-    if (!setup.single_vertex)
-      throw std::invalid_argument("scene " + scene.name + ": " + name + " needs a single-vertex scene (the fallback is "
-                                  "Carpenter's rule on the sphere)");
     ob::PlannerPtr p = make_planner(inner, setup.si);
     planners::set_planner_params(*p, inner, params);
-    return std::make_shared<planners::CarpenterFallbackPlanner>(setup.si, p, planners::kSamplerShare * time, *scene.pattern,
-                                                               setup.single_vertex, setup.validity, scene.request.waypoint_step);
+    try {
+      return planners::with_carpenter_fallback(setup, *scene.pattern, p, time, scene.request.waypoint_step);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("scene " + scene.name + ": " + name + ": " + e.what());
+    }
   }
   if (!is_deterministic_planner(name)) {
     ob::PlannerPtr p = make_planner(name, setup.si);
@@ -317,14 +317,16 @@ class SceneRun {
     scenes_.emplace(o_, result_.scene);
     // The planners, in the suite's order; those of one space with as many runs in this shard
     // share one Benchmark (each Benchmark estimates the space's properties for its log header).
-    std::string spaces;
+    std::vector<std::string> space_names;
     for (const auto& entry : res_.planners) {
       const SceneSpaces::InSpace& in = scenes_->for_entry(entry);
       objects_.push_back(entry_planner(entry, in.scene, in.setup, o_.params, o_.time));
       names_ += (names_.empty() ? "" : ",") + objects_.back()->getName();
-      if (("," + spaces + ",").find("," + in.setup.space_name + ",") == std::string::npos)
-        spaces += (spaces.empty() ? "" : ",") + in.setup.space_name;
+      if (std::find(space_names.begin(), space_names.end(), in.setup.space_name) == space_names.end())
+        space_names.push_back(in.setup.space_name);
     }
+    std::string spaces;
+    for (const auto& n : space_names) spaces += (spaces.empty() ? "" : ",") + n;
     std::map<std::pair<std::string, std::size_t>, std::vector<std::size_t>> groups;  // (space, run count) → planners
     for (std::size_t pi = 0; pi < res_.planners.size(); ++pi)
       if (!runs_of_[pi].empty()) groups[{planner_and_space(res_.planners[pi]).second, runs_of_[pi].size()}].push_back(pi);

@@ -57,6 +57,14 @@ CarpenterFallbackPlanner::CarpenterFallbackPlanner(const ob::SpaceInformationPtr
   specs_ = inner_->getSpecs();
 }
 
+std::shared_ptr<CarpenterFallbackPlanner> with_carpenter_fallback(const PlanSetup& setup, const geometry::CreasePattern& pattern,
+                                                                  ob::PlannerPtr inner, double time, double step) {
+  if (!setup.single_vertex)
+    throw std::invalid_argument("the Carpenter fallback needs the single-vertex space (it is Carpenter's rule on the sphere)");
+  return std::make_shared<CarpenterFallbackPlanner>(setup.si, std::move(inner), kSamplerShare * time, pattern,
+                                                    setup.single_vertex, setup.validity, step);
+}
+
 void CarpenterFallbackPlanner::clear() {
   ob::Planner::clear();
   inner_->clear();

@@ -2,8 +2,8 @@
 #include "foldkit/planners/plan_setup.hpp"
 
 #include <chrono>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <ompl/base/PlannerTerminationCondition.h>
@@ -191,25 +191,21 @@ void set_up_driving_space(PlanSetup& setup, const PlanRequest& req, const states
   geometry::DrivingChart chart = geometry::choose_driving_chart(system, chart_state, dof, std::max(1u, req.seed));
   // Sampling bounds of each driving crease: its angle bounds, narrowed to the side of flat that
   // both ends of the plan are on (flat is singular; the goal's signs pick the branch).
-  Eigen::VectorXd lo(dof), hi(dof);
+  // Most uniform samples go to the focus box, that of start and goal widened by kFocusMargin: a
+  // box of many driving creases is mostly out of reach, and RRTConnect's extensions towards such
+  // samples each cost a continuation (waterbomb 4x4, 13 DOF: 20x faster). The other samples keep
+  // the whole box covered.
+  Eigen::VectorXd lo(dof), hi(dof), focus_lo(dof), focus_hi(dof);
   for (int i = 0; i < dof; ++i) {
     const int j = chart.driving[static_cast<std::size_t>(i)];
     lo[i] = bounds.lower[j];
     hi[i] = bounds.upper[j];
     if (req.goal.angles[j] > 0.0 && from.angles[j] > 0.0) lo[i] = std::max(lo[i], 0.0);
     if (req.goal.angles[j] < 0.0 && from.angles[j] < 0.0) hi[i] = std::min(hi[i], 0.0);
-  }
-  setup.unreachable = other_branch(system, chart, from, req.goal);
-  // Most uniform samples in the box of start and goal, widened by kFocusMargin: a box of many
-  // driving creases is mostly out of reach, and RRTConnect's extensions towards such samples
-  // each cost a continuation (waterbomb 4x4, 13 DOF: 20x faster). The other samples keep the
-  // whole box covered.
-  Eigen::VectorXd focus_lo(dof), focus_hi(dof);
-  for (int i = 0; i < dof; ++i) {
-    const int j = chart.driving[static_cast<std::size_t>(i)];
     focus_lo[i] = std::min(req.goal.angles[j], from.angles[j]) - kFocusMargin;
     focus_hi[i] = std::max(req.goal.angles[j], from.angles[j]) + kFocusMargin;
   }
+  setup.unreachable = other_branch(system, chart, from, req.goal);
   auto space = std::make_shared<statespaces::DrivingStateSpace>(setup.system, std::move(chart), bounds, lo, hi);
   space->set_focus(focus_lo, focus_hi, kFocusShare);
   if (!space->add_anchor(from)) throw PlanInputError(PlanInputError::End::Start, "plan: the start is a singular state of the driving space (try --space projected)");
@@ -366,8 +362,7 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanRequest
   set_planner_params(*planner, req.planner, req.params);
   std::shared_ptr<CarpenterFallbackPlanner> fallback;
   if (setup.single_vertex && req.fallback) {
-    fallback = std::make_shared<CarpenterFallbackPlanner>(setup.si, planner, kSamplerShare * req.time, *req.pattern,
-                                                          setup.single_vertex, setup.validity, req.waypoint_step);
+    fallback = with_carpenter_fallback(setup, *req.pattern, planner, req.time, req.waypoint_step);
     planner = fallback;
   }
   ss.setPlanner(planner);

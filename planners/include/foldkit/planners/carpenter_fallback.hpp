@@ -13,6 +13,7 @@
 
 #include "foldkit/geometry/crease_pattern.hpp"
 #include "foldkit/geometry/fold_state.hpp"
+#include "foldkit/planners/plan_setup.hpp"
 #include "foldkit/statespaces/single_vertex_space.hpp"
 #include "foldkit/statespaces/validity.hpp"
 
@@ -91,5 +92,17 @@ class CarpenterFallbackPlanner : public ompl::base::Planner {
   bool used_fallback_ = false;
   std::string fallback_message_;
 };
+
+/// `inner` (made for setup.si) with the fallback on the single-vertex space of `setup`, given
+/// kSamplerShare of `time`: what plan() does on a single vertex, and `foldkit bench`'s
+/// "X+Carpenter" entries.
+/// @param setup    a plan set-up whose space is the single-vertex one
+/// @param pattern  its pattern (must outlive the planner)
+/// @param inner    the sampling planner
+/// @param time     the whole time limit, seconds (positive)
+/// @param step     largest change of a fold angle between the fallback's states, radians
+/// @throws std::invalid_argument when `setup` has no single-vertex space, or as the constructor
+std::shared_ptr<CarpenterFallbackPlanner> with_carpenter_fallback(const PlanSetup& setup, const geometry::CreasePattern& pattern,
+                                                                  ompl::base::PlannerPtr inner, double time, double step);
 
 }  // namespace foldkit::planners
