@@ -159,11 +159,7 @@ ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, c
   if (const std::string inner = fallback_inner(name); !inner.empty()) {
     ob::PlannerPtr p = make_planner(inner, setup.si);
     planners::set_planner_params(*p, inner, params);
-    try {
-      return planners::with_carpenter_fallback(setup, *scene.pattern, p, time, scene.request.waypoint_step);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("scene " + scene.name + ": " + name + ": " + e.what());
-    }
+    return planners::with_carpenter_fallback(setup, *scene.pattern, p, time, scene.request.waypoint_step);
   }
   if (!is_deterministic_planner(name)) {
     ob::PlannerPtr p = make_planner(name, setup.si);
@@ -274,6 +270,22 @@ class SceneSpaces {
   BenchScene base_;
   std::map<std::string, InSpace> spaces_;
 };
+
+// "X+Carpenter" needs each scene in the single-vertex space (the fallback is Carpenter's rule on
+// the sphere): checked on every scene before anything is written, so that a run never stops
+// half-way with some logs written.
+void check_fallback_entries(const BenchOptions& o, const Resolved& r) {
+  for (const auto& scene : r.scenes) {
+    std::optional<SceneSpaces> spaces;
+    for (const auto& entry : r.planners) {
+      if (fallback_inner(planner_and_space(entry).first).empty()) continue;
+      if (!spaces) spaces.emplace(o, scene);
+      if (!spaces->for_entry(entry).setup.single_vertex)
+        throw std::invalid_argument("scene " + scene + ": " + entry +
+                                    " needs the single-vertex space (the fallback is Carpenter's rule on the sphere)");
+    }
+  }
+}
 
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -436,6 +448,7 @@ std::vector<BenchSceneResult> run_bench(const BenchOptions& o) {
   const Resolved res = resolve(o);
   const auto work = bench_work(res.scenes.size(), res.planners.size(), o.runs, o.shard, o.shards);
   if (o.output_dir.empty()) throw std::invalid_argument("no output folder");
+  check_fallback_entries(o, res);
   std::filesystem::create_directories(o.output_dir);
   ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
   ompl::RNG::setSeed(std::max(1u, o.seed));  // takes effect once per process (OMPL's rule)
@@ -448,6 +461,7 @@ std::vector<BenchSceneResult> run_bench(const BenchOptions& o) {
 
 std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::vector<double>& limits) {
   const Resolved res = resolve(o);
+  check_fallback_entries(o, res);
   if (limits.empty()) throw std::invalid_argument("no time limits");
   for (double t : limits)
     if (!(t > 0.0) || !std::isfinite(t)) throw std::invalid_argument("time limits must be positive");

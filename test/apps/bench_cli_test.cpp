@@ -199,6 +199,12 @@ TEST(BenchCli, BadArgumentsExitTwo) {
            {"bench", "quick", "--error-vs-time", "0.1,0", "-o", out},
            {"bench", "quick", "--error-vs-time", "0.1", "--shard", "1/2", "-o", out},
            {"bench", "quick", "--space", "nowhere", "-o", out},
+           {"bench", "quick", "--space", "driving,nowhere", "-o", out},
+           {"bench", "quick", "--planners", "RRTConnect@nowhere", "-o", out},
+           // the Carpenter fallback on a scene that is not a single vertex (the first scene is one)
+           {"bench", "vertex-complete", "--scenes", "vertex8-any,boat", "--planners", "RRTConnect+Carpenter", "-o", out},
+           {"bench", "vertex-complete", "--scenes", "boat", "--planners", "RRTConnect+Carpenter", "--error-vs-time", "0.1",
+            "-o", out},
            {"bench", "quick", "--scenes", "boat", "--planners", "RRTConnect", "--param", "nonsense=1", "-o", out},
            {"bench", "quick", "--param", "range", "-o", out},
            {"bench-merge", "-o", out},

@@ -250,10 +250,13 @@ TEST(BenchSuite, UnfilteredVertexScenesArePlannedWithTheFallback) {
     EXPECT_EQ(column(p, "replay valid BOOLEAN"), (std::vector<std::string>{"1", "1"})) << p.name;
     for (const auto& g : column(p, "goal distance REAL")) EXPECT_LT(std::atof(g.c_str()), 1e-6) << p.name;
   }
-  // The fallback is Carpenter's rule on the sphere: a scene of several vertices is refused.
-  o.scenes = {"boat"};
+  // The fallback is Carpenter's rule on the sphere: a scene of several vertices is refused, before
+  // anything is written (here after a single-vertex scene that would have run).
+  o.scenes = {"vertex8-any", "boat"};
   o.planners = {"RRTConnect+Carpenter"};
+  o.output_dir = temp_folder("bench_vertex_complete_refused") + "/out";
   EXPECT_THROW(fp::run_bench(o), std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists(o.output_dir));
 }
 
 // Issue 16, item 3: the imported FOLD patterns (bird base, 5 DOF; Resch, 10 DOF) and the 13-DOF
