@@ -7,25 +7,13 @@
 #include <benchmark/benchmark.h>
 #include <unsupported/Eigen/NonLinearOptimization>
 
-#include "foldkit/analysis/solver.hpp"
-#include "foldkit/geometry/generators.hpp"
+#include "stiffness_problems.hpp"
 
 namespace {
 
 using namespace foldkit;
 
-analysis::Problem grid_problem(int modules) {
-  const int rows = std::max(1, static_cast<int>(std::lround(std::sqrt(modules / 2.0))));
-  const int cols = std::max(2, modules / rows);
-  const auto pattern = geometry::build_or_throw(geometry::generators::grid(rows, cols, 0.01));
-  analysis::Problem p;
-  p.structure = analysis::build_structure(pattern, geometry::FoldState::flat(pattern));
-  p.fixed.assign(p.structure.modules.size(), false);
-  for (int j = 0; j < rows; ++j) p.fixed[static_cast<std::size_t>(j * cols)] = true;
-  const int corner = rows * cols - 1;
-  p.loads.push_back({corner, Eigen::Vector3d(0, 0, -10.0 / cols), p.structure.modules[static_cast<std::size_t>(corner)].centroid});
-  return p;
-}
+using bench_stiffness::grid_problem;
 
 struct Functor {
   const analysis::EquilibriumSystem& sys;

@@ -79,6 +79,42 @@ EquilibriumSystem::EquilibriumSystem(const Problem& problem) {
   }
   for (const auto& l : problem.loads)
     loads_.push_back({l.module, l.force / force_, (l.point - s.modules[l.module].centroid) / length_});
+  build_pattern();
+}
+
+void EquilibriumSystem::build_pattern() {
+  const int n = static_cast<int>(free_.size());
+  block_rows_.assign(static_cast<std::size_t>(n), {});
+  for (int i = 0; i < n; ++i) block_rows_[static_cast<std::size_t>(i)].push_back(i);
+  for (const Spring& sp : springs_) {
+    const int ia = index_[sp.a], ib = index_[sp.b];
+    if (ia < 0 || ib < 0) continue;
+    block_rows_[static_cast<std::size_t>(ia)].push_back(ib);
+    block_rows_[static_cast<std::size_t>(ib)].push_back(ia);
+  }
+  std::vector<Eigen::Triplet<double>> t;
+  for (int j = 0; j < n; ++j) {
+    auto& rows = block_rows_[static_cast<std::size_t>(j)];
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    for (int i : rows)
+      for (int c = 0; c < 6; ++c)
+        for (int r = 0; r < 6; ++r) t.emplace_back(6 * i + r, 6 * j + c, 0.0);
+  }
+  pattern_.resize(size(), size());
+  pattern_.setFromTriplets(t.begin(), t.end());
+  pattern_.makeCompressed();
+  for (const Spring& sp : springs_) {
+    const int ia = index_[sp.a], ib = index_[sp.b];
+    spring_slots_.push_back({slot(ia, ia), slot(ia, ib), slot(ib, ia), slot(ib, ib)});
+  }
+  for (const Load& l : loads_) load_slots_.push_back(slot(index_[l.module], index_[l.module]));
+}
+
+int EquilibriumSystem::slot(int row, int col) const {
+  if (row < 0 || col < 0) return -1;
+  const auto& rows = block_rows_[static_cast<std::size_t>(col)];
+  return static_cast<int>(std::lower_bound(rows.begin(), rows.end(), row) - rows.begin());
 }
 
 double EquilibriumSystem::residual_floor(const Eigen::VectorXd& x) const {
@@ -148,11 +184,16 @@ Pose pose_of(const Eigen::VectorXd& x, int index) {
   return p;
 }
 
-void add_block(std::vector<Eigen::Triplet<double>>& t, int row, int col, const Eigen::Matrix<double, 6, 6>& b) {
-  if (row < 0 || col < 0) return;
-  for (int i = 0; i < 6; ++i)
-    for (int j = 0; j < 6; ++j)
-      t.emplace_back(6 * row + i, 6 * col + j, b(i, j));  // zeros too: the pattern stays fixed
+// Adds block b at (block row, block column) = (·, col) in slot `slot` of m, whose pattern is
+// EquilibriumSystem's: column 6·col + c holds the slot's six rows at 6·slot from its start.
+void add_block(Eigen::SparseMatrix<double>& m, int col, int slot, const Eigen::Matrix<double, 6, 6>& b) {
+  if (col < 0 || slot < 0) return;
+  double* v = m.valuePtr();
+  const int* outer = m.outerIndexPtr();
+  for (int c = 0; c < 6; ++c) {
+    double* out = v + outer[6 * col + c] + 6 * slot;
+    for (int r = 0; r < 6; ++r) out[r] += b(r, c);
+  }
 }
 
 }  // namespace
@@ -183,11 +224,12 @@ Eigen::VectorXd EquilibriumSystem::residual(const Eigen::VectorXd& x, double loa
 }
 
 Eigen::SparseMatrix<double> EquilibriumSystem::tangent(const Eigen::VectorXd& x, double load_factor, bool geometric) const {
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(springs_.size() * 4 * 36 + loads_.size() * 9);
+  Eigen::SparseMatrix<double> m = pattern_;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(size());
   const Eigen::VectorXd& at = geometric ? x : zero;
-  for (const Spring& sp : springs_) {
+  for (std::size_t s = 0; s < springs_.size(); ++s) {
+    const Spring& sp = springs_[s];
+    const auto& slots = spring_slots_[s];
     const int ia = index_[sp.a], ib = index_[sp.b];
     if (ia < 0 && ib < 0) continue;
     const SpringState st = evaluate(sp, pose_of(at, ia), pose_of(at, ib));
@@ -211,22 +253,21 @@ Eigen::SparseMatrix<double> EquilibriumSystem::tangent(const Eigen::VectorXd& x,
       h.block<3, 12>(6, 0) = gf;
       h.block<3, 12>(9, 0) = hat(st.sb) * gf - hat(st.fw) * eb + gm;
     }
-    add_block(t, ia, ia, h.block<6, 6>(0, 0));
-    add_block(t, ia, ib, h.block<6, 6>(0, 6));
-    add_block(t, ib, ia, h.block<6, 6>(6, 0));
-    add_block(t, ib, ib, h.block<6, 6>(6, 6));
+    add_block(m, ia, slots[0], h.block<6, 6>(0, 0));
+    add_block(m, ib, slots[1], h.block<6, 6>(0, 6));
+    add_block(m, ia, slots[2], h.block<6, 6>(6, 0));
+    add_block(m, ib, slots[3], h.block<6, 6>(6, 6));
   }
   if (geometric) {
-    for (const Load& l : loads_) {
+    for (std::size_t k = 0; k < loads_.size(); ++k) {
+      const Load& l = loads_[k];
       const int i = index_[l.module];
       if (i < 0) continue;
-      const Matrix3d kl = -load_factor * hat(l.force) * hat(pose_of(x, i).r * l.arm);
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) t.emplace_back(6 * i + 3 + r, 6 * i + 3 + c, kl(r, c));
+      Eigen::Matrix<double, 6, 6> kl = Eigen::Matrix<double, 6, 6>::Zero();
+      kl.block<3, 3>(3, 3) = -load_factor * hat(l.force) * hat(pose_of(x, i).r * l.arm);
+      add_block(m, i, load_slots_[k], kl);
     }
   }
-  Eigen::SparseMatrix<double> m(size(), size());
-  m.setFromTriplets(t.begin(), t.end());
   return m;
 }
 

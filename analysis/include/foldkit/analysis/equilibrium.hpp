@@ -71,6 +71,8 @@ class EquilibriumSystem {
 
   /// x after the left perturbation dx, applied as the screw motion of the twist whose angular part
   /// is δφ and which moves the centroid at δu: u ← u + J(δφ)·δu, φ ← log(exp(δφ)·exp(φ)).
+  /// Each module's six entries are moved on their own, so x and dx may also hold any whole
+  /// number of modules (one module's six, as a per-module manifold of Ceres needs).
   Eigen::VectorXd retract(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const;
 
  private:
@@ -86,9 +88,18 @@ class EquilibriumSystem {
     Eigen::Vector3d force, arm;  // scaled
   };
 
+  // The tangent's pattern (dense 6×6 blocks, block rows sorted in each block column), built once:
+  // tangent() fills a copy in place. A slot is a block's position within its block column.
+  void build_pattern();
+  int slot(int row, int col) const;
+
   std::vector<Spring> springs_;
   std::vector<Load> loads_;
   std::vector<int> free_, index_;
+  std::vector<std::vector<int>> block_rows_;          // per free module (block column)
+  Eigen::SparseMatrix<double> pattern_;
+  std::vector<std::array<int, 4>> spring_slots_;      // (a,a), (a,b), (b,a), (b,b); −1 when fixed
+  std::vector<int> load_slots_;                       // (m,m); −1 when fixed
   double length_ = 1.0, force_ = 1.0, stiffness_scale_ = 0.0, extent_ = 1.0;
 };
 
