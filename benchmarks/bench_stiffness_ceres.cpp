@@ -1,4 +1,4 @@
-// Our stiffness solver (analysis::solve: Newton, SparseLU, load stepping) against Ceres, the
+// Our stiffness solver (analysis::solve: Newton, sparse LDLᵀ, load stepping) against Ceres, the
 // sparse nonlinear least-squares solver a user would pick (issue 20, item 4), on the same
 // equilibrium equations and to the same residual.
 //
@@ -6,11 +6,17 @@
 // EvaluationCallback that evaluates them once per point, and one 6-row residual block per free
 // module), our retraction as its manifold, SPARSE_NORMAL_CHOLESKY on SuiteSparse, one thread
 // (ours has one), and it stops as soon as the scaled residual (∞-norm) is at most what ours
-// reached. What differs is the solver: Levenberg–Marquardt on JᵀJ against Newton on J.
+// reached. What differs is the solver: Levenberg–Marquardt on JᵀJ against Newton on J's symmetric part.
 //
-// Structures: the cube beam of issue 20 (BM_*_Beam, 48 to 10,000 modules) and the clamped plate of
-// bench_stiffness (BM_*_Plate). Counters: modules, unknowns, residual (scaled ∞-norm reached),
-// iterations.
+// Structures: the cube beam of issue 20 (BM_StiffnessBeam_*, 48 to 10,000 modules) and the clamped
+// plate of bench_stiffness (BM_StiffnessPlate_*). Baseline: Ceres's default Levenberg–Marquardt;
+// CeresGaussNewton: a huge initial trust region and non-monotonic steps, nearly Gauss–Newton.
+// Counters: modules, unknowns, residual (scaled ∞-norm reached), iterations; ours also the
+// condition estimate of the tangent (the normal equations' is its square), Ceres's `reached`
+// (0: it stopped, after 500 iterations or without progress, above our residual).
+//
+// Not in scripts/microbench.sh: it is built only where Ceres is installed, and its baselines
+// take minutes (they run out their 500 iterations from 1,000 modules on).
 //
 //   bench_stiffness_ceres                      the side-by-side table
 //   bench_stiffness_ceres --error-vs-time=F    residual against time for both, CSV to F
@@ -147,7 +153,7 @@ struct CeresRun {
 };
 
 // Ceres from the unloaded state to `target`; everything built inside is part of what it costs.
-enum class Strategy { LevenbergMarquardt, Dogleg, NearlyGaussNewton };
+enum class Strategy { LevenbergMarquardt, NearlyGaussNewton };
 
 CeresRun solve_with_ceres(const analysis::Problem& p, const analysis::EquilibriumSystem& sys, double target,
                           Strategy strategy = Strategy::LevenbergMarquardt) {
@@ -187,7 +193,6 @@ CeresRun solve_with_ceres(const analysis::Problem& p, const analysis::Equilibriu
   o.update_state_every_iteration = true;
   o.callbacks.push_back(&stop);
   o.logging_type = ceres::SILENT;
-  if (strategy == Strategy::Dogleg) o.trust_region_strategy_type = ceres::DOGLEG;
   if (strategy == Strategy::NearlyGaussNewton) {
     o.initial_trust_region_radius = 1e12;
     o.max_trust_region_radius = 1e16;
@@ -241,17 +246,16 @@ void baseline(benchmark::State& state, const std::string& shape, Strategy strate
     run = solve_with_ceres(p, sys, reference.residual_norm, strategy);
     benchmark::DoNotOptimize(run.residual);
   }
-  if (!(run.residual <= reference.residual_norm))
-    state.SkipWithError(("Ceres stopped at residual " + std::to_string(run.residual) + ", above ours").c_str());
   counters(state, p, run.residual, run.iterations);
+  // 0: Ceres stopped (500 iterations, or no progress) above ours; the time is then to that stop.
+  state.counters["reached"] = run.residual <= reference.residual_norm;
 }
 
-void BM_Stiffness_Ours_Beam(benchmark::State& s) { ours(s, "beam"); }
-void BM_Stiffness_Baseline_Beam(benchmark::State& s) { baseline(s, "beam"); }
-void BM_Stiffness_Dogleg_Beam(benchmark::State& s) { baseline(s, "beam", Strategy::Dogleg); }
-void BM_Stiffness_GN_Beam(benchmark::State& s) { baseline(s, "beam", Strategy::NearlyGaussNewton); }
-void BM_Stiffness_Ours_Plate(benchmark::State& s) { ours(s, "plate"); }
-void BM_Stiffness_Baseline_Plate(benchmark::State& s) { baseline(s, "plate"); }
+void BM_StiffnessBeam_Ours(benchmark::State& s) { ours(s, "beam"); }
+void BM_StiffnessBeam_Baseline(benchmark::State& s) { baseline(s, "beam"); }
+void BM_StiffnessBeam_CeresGaussNewton(benchmark::State& s) { baseline(s, "beam", Strategy::NearlyGaussNewton); }
+void BM_StiffnessPlate_Ours(benchmark::State& s) { ours(s, "plate"); }
+void BM_StiffnessPlate_Baseline(benchmark::State& s) { baseline(s, "plate"); }
 
 // Residual against time: ours at tolerances 1e-1 … 1e-12 (one run each), Ceres iteration by
 // iteration down to ours at 1e-12. Columns: structure, modules, method, seconds, residual.
@@ -259,7 +263,7 @@ int error_vs_time(const std::string& path) {
   std::ofstream out(path);
   out << "structure,modules,method,seconds,residual\n";
   for (const std::string shape : {"beam", "plate"})
-    for (int modules : {1000, 10000}) {
+    for (int modules : {300, 1000}) {
       const auto p = make(shape, modules);
       const analysis::EquilibriumSystem sys(p);
       double finest = 0.0;
@@ -281,12 +285,11 @@ int error_vs_time(const std::string& path) {
 
 }  // namespace
 
-BENCHMARK(BM_Stiffness_Ours_Beam)->Arg(48)->Arg(300)->Arg(1000)->Arg(3000)->Arg(10000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Stiffness_Baseline_Beam)->Arg(48)->Arg(300)->Arg(1000)->Arg(3000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Stiffness_Dogleg_Beam)->Arg(48)->Arg(300)->Arg(1000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Stiffness_GN_Beam)->Arg(48)->Arg(300)->Arg(1000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Stiffness_Ours_Plate)->Arg(50)->Arg(200)->Arg(1000)->Arg(2000)->Arg(10000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Stiffness_Baseline_Plate)->Arg(50)->Arg(200)->Arg(1000)->Arg(2000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StiffnessBeam_Ours)->Arg(48)->Arg(300)->Arg(1000)->Arg(3000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StiffnessBeam_Baseline)->Arg(48)->Arg(300)->Arg(1000)->Arg(3000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StiffnessBeam_CeresGaussNewton)->Arg(48)->Arg(300)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StiffnessPlate_Ours)->Arg(50)->Arg(200)->Arg(1000)->Arg(2000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StiffnessPlate_Baseline)->Arg(50)->Arg(200)->Arg(1000)->Arg(2000)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)

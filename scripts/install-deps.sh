@@ -26,7 +26,7 @@ if [ "$demo" -eq 0 ]; then
   packages+=(
     libbenchmark-dev libgtest-dev
     doxygen
-    libsuitesparse-dev
+    libsuitesparse-dev libceres-dev
     python3-matplotlib
     pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest
     ompl-demos

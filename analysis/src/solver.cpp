@@ -189,6 +189,23 @@ struct Newton {
   }
 };
 
+// Linear mode: one solve of Σ DᵀKD at the unloaded state, its residual judged at the solution
+// (the floors grow with the displacements the load produced).
+void solve_linear(const EquilibriumSystem& sys, double tol, ScaledTangent& tangent_solver, VectorXd& x, SolveResult& out) {
+  const Sparse k = sys.tangent(x, 1.0, false);
+  if (tangent_solver.factor(k)) {
+    const VectorXd r0 = sys.residual(x, 1.0);
+    x = tangent_solver.solve(-r0);
+    const VectorXd lin = k * x + r0;
+    out.iterations = out.load_steps = 1;
+    out.residual_norm = lin.lpNorm<Eigen::Infinity>();
+    out.residual_floor = finite(x) ? std::max(sys.residual_floor(x), product_floor(k, x, r0)) : 0.0;
+    if (finite(x) && std::isfinite(out.residual_norm) && out.residual_norm <= std::max({tol, out.residual_floor, 1e-8}))
+      out.status = {StatusCode::Success, "linear solution"};
+  }
+  if (!out.status) out.status = {StatusCode::Singular, "the linear system is singular or ill-conditioned"};
+}
+
 }  // namespace
 
 SolveResult solve(const Problem& problem, const SolveOptions& options) {
@@ -203,29 +220,7 @@ SolveResult solve(const Problem& problem, const SolveOptions& options) {
   if (sys.size() == 0) {
     out.status = {StatusCode::Success, "no free module: nothing to solve"};
   } else if (options.linear) {
-    const Sparse k = sys.tangent(x, 1.0, false);
-    if (tangent_solver.factor(k)) {
-      const VectorXd r0 = sys.residual(x, 1.0);
-      x = tangent_solver.solve(-r0);
-      VectorXd lin = k * x + r0;
-      // Iterative refinement: on long slender structures (a 3,000-module cube beam, condition
-      // ~1e12) one LU solve can leave more than the round-off of the product; each step costs
-      // two triangular solves.
-      for (int step = 0; step < 3 && finite(lin) && lin.lpNorm<Eigen::Infinity>() > product_floor(k, x, r0); ++step) {
-        const VectorXd refined = x - tangent_solver.solve(lin);
-        const VectorXd refined_lin = k * refined + r0;
-        if (!finite(refined_lin) || refined_lin.lpNorm<Eigen::Infinity>() >= lin.lpNorm<Eigen::Infinity>()) break;
-        x = refined;
-        lin = refined_lin;
-      }
-      out.iterations = out.load_steps = 1;
-      out.residual_norm = lin.lpNorm<Eigen::Infinity>();
-      out.residual_floor = finite(x) ? std::max(sys.residual_floor(x), product_floor(k, x, r0)) : 0.0;
-      // Judged at the solution: the floor grows with the displacements the load produced.
-      if (finite(x) && std::isfinite(out.residual_norm) && out.residual_norm <= std::max({tol, out.residual_floor, 1e-8}))
-        out.status = {StatusCode::Success, "linear solution"};
-    }
-    if (!out.status) out.status = {StatusCode::Singular, "the linear system is singular or ill-conditioned"};
+    solve_linear(sys, tol, tangent_solver, x, out);
   } else {
     Newton newton{sys, options, tangent_solver, options.tolerance};
     double lambda = 0.0, step = 1.0;

@@ -51,19 +51,22 @@ struct SolveResult {
   int load_steps = 0;   ///< load steps completed (linear mode: 1, or 0 when the factorisation failed)
   /// Achieved scaled residual (∞-norm; linear mode: of the linear system); −1 when not finite.
   double residual_norm = 0.0;
-  /// The residual's round-off level at the solution (EquilibriumSystem::residual_floor): the
-  /// tolerance is raised to it where it is higher.
+  /// The residual's round-off level at the solution (EquilibriumSystem::residual_floor; linear
+  /// mode: or that of evaluating K·x + r₀, where higher): the tolerance is raised to it where it
+  /// is higher.
   double residual_floor = 0.0;
-  /// 1-norm estimate of the condition number of the Jacobi-scaled tangent (at the solution; linear
-  /// mode: at the unloaded state); 0 when not estimated (estimate_condition off, or no success).
+  /// 1-norm estimate of the condition number of the Jacobi-scaled tangent (at the solution, where it
+  /// is symmetric; linear mode: at the unloaded state); 0 when not estimated (estimate_condition
+  /// off, or no success).
   double condition_estimate = 0.0;
   double max_displacement = 0.0;   ///< largest centroid displacement, pattern units
   std::vector<ModuleResult> modules;  ///< one per module of the structure, in its order
 };
 
-/// Solves `problem` for static equilibrium: Newton with analytic tangent, SparseLU on the
-/// Jacobi-scaled system, backtracking line search on ‖r‖₂ and adaptive load stepping (see
-/// docs/STIFFNESS.md); with `options.linear`, one linear solve instead. A problem without free
+/// Solves `problem` for static equilibrium: Newton with analytic tangent, a sparse LDLᵀ of the
+/// Jacobi-scaled tangent's symmetric part, backtracking line search on ‖r‖₂ and adaptive load
+/// stepping (see docs/STIFFNESS.md); with `options.linear`, one linear solve (and iterative
+/// refinement) instead. A problem without free
 /// modules is solved at once (StatusCode::Success).
 /// @param problem  the structure, its stiffness, supports and loads
 /// @param options  linear or not, tolerance, iteration and load-step limits, progress
