@@ -42,6 +42,16 @@ def _jacobian(self, state):
 ClosureSystem.jacobian = _jacobian
 
 
+def _tangent(self, x, load_factor=1.0, geometric=True):
+    """The tangent of the residual at `x` (with respect to a left perturbation of each module): a
+    scipy.sparse CSR matrix (size × size), or, without SciPy, the COO arrays (rows, cols, values,
+    shape). `geometric` False: the small-displacement stiffness at x = 0, whatever x is."""
+    return _sparse(self.tangent_coo(x, load_factor, geometric))
+
+
+EquilibriumSystem.tangent = _tangent
+
+
 def closure_residual(pattern, state):
     """The closure residual of `pattern` at `state` (zero on closed states)."""
     return ClosureSystem(pattern).residual(state)

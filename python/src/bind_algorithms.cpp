@@ -1,7 +1,6 @@
 // The deterministic algorithms and the stiffness solver: projected folding, stiffness, planar
 // and spherical Carpenter's rule, Hamiltonian paths of pixel/voxel shapes, the cube-chain fold.
 #include "bindings.hpp"
-#include "foldkit/analysis/load_case.hpp"
 #include "foldkit/analysis/solver.hpp"
 #include "foldkit/folding/carpenter.hpp"
 #include "foldkit/folding/carpenter_spherical.hpp"
@@ -115,19 +114,12 @@ void bind_stiffness(py::module_& m) {
       "stiffness",
       [](const geometry::CreasePattern& p, const py::object& load_case, const py::object& state, bool linear, double detect_tolerance,
          int max_iterations) {
-        require_positive(detect_tolerance, "detect_tolerance");
         require(max_iterations >= 1, "max_iterations", "at least 1", max_iterations);
-        const bool from_file = py::isinstance<py::str>(load_case);
-        const std::string name = from_file ? load_case.cast<std::string>() : std::string("<load case>");
-        const analysis::LoadCase lc = from_file ? analysis::read_load_case(name) : load_case.cast<analysis::LoadCase>();
-        const geometry::FoldState s = state_or_flat(p, state, "state");
-        analysis::DetectOptions detect;
-        detect.tolerance = detect_tolerance;
+        const analysis::Problem problem = stiffness_problem(p, load_case, state, detect_tolerance);
         analysis::SolveOptions so;
         so.linear = linear;
         so.max_total_iterations = max_iterations;
         py::gil_scoped_release release;
-        const analysis::Problem problem = analysis::make_problem(analysis::build_structure(p, s, detect), lc, name);
         return analysis::solve(problem, so);
       },
       py::arg("pattern"), py::arg("load_case"), py::arg("state") = py::none(), py::arg("linear") = false,

@@ -27,16 +27,7 @@ py::tuple jacobian_coo(const ClosureSystem& system, const geometry::FoldState& s
     py::gil_scoped_release release;
     system.evaluate(state, r, j);
   }
-  std::vector<int> rows, cols;
-  std::vector<double> values;
-  for (int k = 0; k < j.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(j, k); it; ++it) {
-      rows.push_back(static_cast<int>(it.row()));
-      cols.push_back(static_cast<int>(it.col()));
-      values.push_back(it.value());
-    }
-  return py::make_tuple(py::array(py::cast(rows)), py::array(py::cast(cols)), py::array(py::cast(values)),
-                        py::make_tuple(j.rows(), j.cols()));
+  return sparse_coo(j);
 }
 
 void bind_closure_system(py::module_& m) {

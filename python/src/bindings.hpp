@@ -9,6 +9,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "foldkit/analysis/equilibrium.hpp"
 #include "foldkit/geometry/crease_pattern.hpp"
 #include "foldkit/geometry/fold_sequence.hpp"
 #include "foldkit/geometry/fold_state.hpp"
@@ -24,6 +25,7 @@ void bind_kinematics(py::module_& m);
 void bind_simulate(py::module_& m);
 void bind_plan(py::module_& m);
 void bind_algorithms(py::module_& m);
+void bind_equilibrium(py::module_& m);
 
 /// Checks that `angles` has one finite angle per joint of `pattern` (ValueError otherwise) and
 /// wraps it. `what` names the argument in the message ("state", "goal", …).
@@ -55,5 +57,14 @@ std::string source_of(const py::object& sequence);
 /// Raises io::ParseError at `source`'s line for the first error geometry::check_sequence finds
 /// (a joint the pattern lacks, a joint twice in one event), as the CLI does for a CMML.
 void require_valid(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence, const std::string& source);
+
+/// A sparse matrix as COO arrays (rows, cols, values, shape); python/foldkit/__init__.py makes a
+/// scipy.sparse matrix of them.
+py::tuple sparse_coo(const Eigen::SparseMatrix<double>& m);
+
+/// The stiffness problem of the folded `pattern` at `state` (None: flat) under `load_case` (a
+/// path or a LoadCase), contacts found to `detect_tolerance`; built with the GIL released.
+analysis::Problem stiffness_problem(const geometry::CreasePattern& pattern, const py::object& load_case, const py::object& state,
+                                    double detect_tolerance);
 
 }  // namespace foldkit::python

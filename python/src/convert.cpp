@@ -7,6 +7,22 @@
 
 namespace foldkit::python {
 
+py::tuple sparse_coo(const Eigen::SparseMatrix<double>& m) {
+  std::vector<int> rows, cols;
+  std::vector<double> values;
+  rows.reserve(static_cast<std::size_t>(m.nonZeros()));
+  cols.reserve(static_cast<std::size_t>(m.nonZeros()));
+  values.reserve(static_cast<std::size_t>(m.nonZeros()));
+  for (int k = 0; k < m.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(m, k); it; ++it) {
+      rows.push_back(static_cast<int>(it.row()));
+      cols.push_back(static_cast<int>(it.col()));
+      values.push_back(it.value());
+    }
+  return py::make_tuple(py::array(py::cast(rows)), py::array(py::cast(cols)), py::array(py::cast(values)),
+                        py::make_tuple(m.rows(), m.cols()));
+}
+
 geometry::FoldState to_state(const geometry::CreasePattern& pattern, const Eigen::VectorXd& angles, const char* what) {
   const auto joints = static_cast<Eigen::Index>(pattern.joints().size());
   if (angles.size() != joints)

@@ -46,4 +46,5 @@ PYBIND11_MODULE(_foldkit, m) {
   python::bind_simulate(m);
   python::bind_plan(m);
   python::bind_algorithms(m);
+  python::bind_equilibrium(m);
 }
