@@ -23,7 +23,7 @@ bool finite(const VectorXd& v) { return v.allFinite(); }
 // Why the symmetric part: H is the derivative of the potential's gradient under left
 // perturbations, and differs from its transpose only by terms proportional to the unbalanced
 // moment on each module, which vanish at equilibrium. The step from ½(H + Hᵀ) is therefore off by
-// O(‖r‖·‖dx‖) and Newton stays quadratic (same iteration counts as LU on H on every benchmark
+// O(‖r‖·‖dx‖) and Newton stays quadratic (as many iterations as LU on H, or fewer, on every benchmark
 // structure), while LDLᵀ is 1.5–2× cheaper than SparseLU here (bench_stiffness_ceres). Where the
 // symmetric part is singular (no pivot), the caller backtracks or halves the load step as for LU.
 class ScaledTangent {
