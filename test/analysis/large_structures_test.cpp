@@ -1,9 +1,12 @@
-// The stiffness solver on the cube beam of issue 20 (bench_stiffness_ceres's structure) at the
-// sizes the benchmark runs, against invariants that do not share its code: Maxwell–Betti
-// reciprocity, the cantilever's L³ law, and the linear limit of the nonlinear solve.
+// The stiffness solver on the cube beam of issue 20 and the clamped plate (bench_stiffness_ceres's
+// structures) at the sizes the benchmark runs, against invariants that do not share its code:
+// Maxwell–Betti reciprocity, the cantilever's L³ law, the linear limit of the nonlinear solve,
+// and mirror symmetry.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <utility>
 
 #include "foldkit/analysis/solver.hpp"
 #include "stiffness_problems.hpp"
@@ -73,6 +76,38 @@ TEST(CubeBeam, DisplacementsAreReciprocal) {
 TEST(CubeBeam, TipDeflectionGrowsAsLengthCubed) {
   const double ratio = tip_deflection(1800) / tip_deflection(900);
   EXPECT_NEAR(ratio, std::pow(299.0 / 149.0, 3), 0.08);
+}
+
+// A 2,000-tile plate clamped along one edge, its two free corners loaded alike: the nonlinear
+// answer is mirror-symmetric about the plate's mid-line (displacements reflect; rotation vectors,
+// being axial, reflect with the opposite sign), to round-off, although nothing in the solver
+// knows the symmetry.
+TEST(Plate, SymmetricLoadsGiveMirroredDisplacements) {
+  Problem p = foldkit::bench_stiffness::grid_problem(2000);
+  const auto& m = p.structure.modules;
+  double lo = m.front().centroid.y(), hi = lo;
+  for (const auto& module : m) lo = std::min(lo, module.centroid.y()), hi = std::max(hi, module.centroid.y());
+  std::map<std::pair<long, long>, std::size_t> at;  // centroid (x, y) in units of 1e-9 → module
+  const auto key = [](double x, double y) { return std::make_pair(std::lround(x * 1e9), std::lround(y * 1e9)); };
+  for (std::size_t i = 0; i < m.size(); ++i) at[key(m[i].centroid.x(), m[i].centroid.y())] = i;
+  const int corner = p.loads.front().module;
+  const auto mirror_of = [&](std::size_t i) { return at.at(key(m[i].centroid.x(), lo + hi - m[i].centroid.y())); };
+  const std::size_t other = mirror_of(static_cast<std::size_t>(corner));
+  ASSERT_NE(other, static_cast<std::size_t>(corner));
+  p.loads.push_back({static_cast<int>(other), p.loads.front().force, m[other].centroid});
+  SolveOptions o;
+  o.estimate_condition = false;
+  const SolveResult r = solve(p, o);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_GT(r.max_displacement, 0.0);
+  const Eigen::Vector3d reflect(1.0, -1.0, 1.0);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const std::size_t j = mirror_of(i);
+    worst = std::max(worst, (r.modules[i].displacement - reflect.cwiseProduct(r.modules[j].displacement)).norm());
+    worst = std::max(worst, p.structure.tile * (r.modules[i].rotation + reflect.cwiseProduct(r.modules[j].rotation)).norm());
+  }
+  EXPECT_LE(worst, 1e-8 * r.max_displacement);
 }
 
 }  // namespace
