@@ -370,7 +370,17 @@ class SceneRun {
       bench.addPlanner(objects_[pi]);
       index_of[objects_[pi].get()] = pi;
     }
+    // A planner loop that ignores the termination condition (RRTConnect's connect loop with a tiny
+    // `range`) still ends: every state is invalid from twice the time limit on (FoldValidity::
+    // expired), leaving the limit itself, and the simplification after it, undisturbed.
+    std::optional<statespaces::FoldValidity::TimeLimit> limit;
+    bench.setPreRunEvent([&](const ob::PlannerPtr&) {
+      limit.reset();
+      limit.emplace(*setup.validity, std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                                          std::chrono::duration<double>(2.0 * o_.time)));
+    });
     bench.setPostRunEvent([&](const ob::PlannerPtr& planner, ompl::tools::Benchmark::RunProperties& run) {
+      limit.reset();
       const std::size_t pi = index_of.at(planner.get());
       const auto& indices = runs_of_[pi];
       const unsigned int index = indices[std::min(next[planner.get()]++, indices.size() - 1)];
@@ -382,6 +392,7 @@ class SceneRun {
     const ompl::tools::Benchmark::Request req(o_.time, 4096.0, static_cast<unsigned int>(count), 0.05, false, false,
                                               o_.simplify);
     bench.benchmark(req);
+    limit.reset();
     std::ostringstream text;
     bench.saveResultsToStream(text);
     return parse_bench_log(text.str(), scene.name);

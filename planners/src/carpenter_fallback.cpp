@@ -1,5 +1,6 @@
 #include "foldkit/planners/carpenter_fallback.hpp"
 
+#include <chrono>
 #include <memory>
 #include <stdexcept>
 
@@ -88,12 +89,19 @@ ob::PlannerStatus CarpenterFallbackPlanner::solve(const ob::PlannerTerminationCo
   checkValidity();
   used_fallback_ = false;
   fallback_message_.clear();
-  const ob::PlannerStatus status =
-      inner_->solve(ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(inner_time_)));
+  ob::PlannerStatus status;
+  {
+    // The inner planner's loops that ignore its termination condition end at its share too.
+    const auto share = std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(inner_time_));
+    const statespaces::FoldValidity::TimeLimit limit(*validity_, std::chrono::steady_clock::now() + share);
+    status = inner_->solve(ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(inner_time_)));
+  }
   if (status == ob::PlannerStatus::EXACT_SOLUTION || ptc()) return status;
   if (status == ob::PlannerStatus::INVALID_START || status == ob::PlannerStatus::INVALID_GOAL ||
       status == ob::PlannerStatus::UNRECOGNIZED_GOAL_TYPE)
     return status;
+  // The Carpenter path is no search: it ends on its own, and its checks must not expire midway.
+  const statespaces::FoldValidity::TimeLimit none(*validity_, std::chrono::steady_clock::time_point::max());
   if (!fallback()) return ob::PlannerStatus::ABORT;
   used_fallback_ = true;
   return ob::PlannerStatus::EXACT_SOLUTION;

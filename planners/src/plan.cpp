@@ -370,9 +370,14 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanRequest
   ss.setup();
 
   const auto t0 = std::chrono::steady_clock::now();
-  const ob::PlannerStatus status =
-      ss.solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(req.time),
-                                                 ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition())));
+  ob::PlannerStatus status;
+  {
+    // Planner loops that ignore the termination condition end too (FoldValidity::expired).
+    const statespaces::FoldValidity::TimeLimit limit(*setup.validity, t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                                               std::chrono::duration<double>(req.time)));
+    status = ss.solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(req.time),
+                                                        ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition())));
+  }
   result.time = elapsed(t0);
   result.fallback = fallback && fallback->used_fallback();
   if (status == ob::PlannerStatus::EXACT_SOLUTION) return ss.getSolutionPath();

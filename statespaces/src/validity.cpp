@@ -107,9 +107,20 @@ FoldValidityChecker::FoldValidityChecker(const ob::SpaceInformationPtr& si, std:
                                          StateReader reader)
     : ob::StateValidityChecker(si), validity_(std::move(validity)), reader_(std::move(reader)) {}
 
+FoldValidity::TimeLimit::TimeLimit(const FoldValidity& validity, std::chrono::steady_clock::time_point deadline)
+    : validity_(validity), previous_(validity.deadline_.exchange(deadline.time_since_epoch().count())) {}
+
+FoldValidity::TimeLimit::~TimeLimit() { validity_.deadline_.store(previous_); }
+
+bool FoldValidity::expired() const {
+  const std::int64_t deadline = deadline_.load(std::memory_order_relaxed);
+  return deadline != std::numeric_limits<std::int64_t>::max() &&
+         std::chrono::steady_clock::now().time_since_epoch().count() > deadline;
+}
+
 bool FoldValidityChecker::isValid(const ob::State* state) const {
   thread_local geometry::FoldState f;
-  return reader_(state, f) && validity_->valid(f);
+  return !validity_->expired() && reader_(state, f) && validity_->valid(f);
 }
 
 FoldMotionValidator::FoldMotionValidator(const ob::SpaceInformationPtr& si, std::shared_ptr<const FoldValidity> validity,
@@ -139,6 +150,7 @@ bool FoldMotionValidator::check(const ob::State* s1, const ob::State* s2, std::p
     ++invalid_;
     return false;
   };
+  if (validity_->expired()) return fail();
   FoldValidity::Motion motion(*validity_);
   if (!reader_(s1, f1) || !motion.valid_first(f1)) return fail();
   if (!reader_(s2, f2)) return fail();

@@ -218,6 +218,17 @@ TEST(BenchCli, BadArgumentsExitTwo) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// RRTConnect held to steps of 1e-7 rad: its connect loop never looks at the clock and ran for
+// hours; FoldValidity's time limit (twice --time in the harness) now ends every run (a regression
+// hangs until the ctest timeout).
+TEST(BenchCli, RunsWithATinyRangeEnd) {
+  const std::string out = fresh("tiny-range");
+  const auto r = foldkit({"bench", "quick", "--scenes", "vertex8-any", "--planners", "RRTConnect", "--param", "range=1e-7",
+                          "--runs", "2", "--time", "0.2", "-o", out, "--json"});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(out + "/vertex8-any.log"));
+}
+
 TEST(BenchCli, ListNamesSuitesScenesAndPlanners) {
   const auto r = foldkit({"bench", "--list", "--json"});
   ASSERT_EQ(r.exit, 0) << r.err;

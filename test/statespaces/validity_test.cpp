@@ -2,6 +2,7 @@
 // them: every thread gets the verdict a single thread gets, and no more collision worlds are
 // built than threads checked at once. Run under ThreadSanitizer by scripts/test-tsan.sh.
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <thread>
 #include <vector>
@@ -10,6 +11,10 @@
 
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/statespaces/validity.hpp"
+
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 
 namespace {
 
@@ -60,6 +65,46 @@ TEST(FoldValidity, NoWorldWithoutCollisions) {
   const statespaces::FoldValidity validity(p, statespaces::AngleBounds::of(p, false), false);
   EXPECT_TRUE(validity.valid(strip_state(p, true, 1.0)));  // crossing, but not checked
   EXPECT_EQ(validity.worlds_built(), 0u);
+}
+
+// A time limit makes OMPL's checks on the validity fail once it has passed (so that planner loops
+// that never consult their termination condition end), leaves valid() alone, and nests: the
+// limit it replaced comes back with it.
+TEST(FoldValidity, TimeLimitExpiresOmplChecksAndNests) {
+  namespace ob = ompl::base;
+  using Clock = std::chrono::steady_clock;
+  const geometry::CreasePattern p = geometry::build_or_throw(geometry::generators::strip(5));
+  const auto validity = std::make_shared<const statespaces::FoldValidity>(p, statespaces::AngleBounds::of(p, false), false);
+  const auto joints = static_cast<unsigned>(p.joints().size());
+  auto space = std::make_shared<ob::RealVectorStateSpace>(joints);
+  space->setBounds(-M_PI, M_PI);
+  auto si = std::make_shared<ob::SpaceInformation>(space);
+  const statespaces::StateReader reader = [joints](const ob::State* s, geometry::FoldState& f) {
+    f.angles.resize(joints);
+    for (unsigned j = 0; j < joints; ++j) f.angles[j] = s->as<ob::RealVectorStateSpace::StateType>()->values[j];
+    return true;
+  };
+  const statespaces::FoldValidityChecker checker(si, validity, reader);
+  const statespaces::FoldMotionValidator motion(si, validity, reader);
+  ob::ScopedState<ob::RealVectorStateSpace> flat(space);
+  for (unsigned j = 0; j < joints; ++j) flat[j] = 0.0;
+  EXPECT_FALSE(validity->expired());
+  EXPECT_TRUE(checker.isValid(flat.get()));
+  {
+    const statespaces::FoldValidity::TimeLimit later(*validity, Clock::now() + std::chrono::hours(1));
+    EXPECT_FALSE(validity->expired());
+    EXPECT_TRUE(motion.checkMotion(flat.get(), flat.get()));
+    {
+      const statespaces::FoldValidity::TimeLimit past(*validity, Clock::now() - std::chrono::seconds(1));
+      EXPECT_TRUE(validity->expired());
+      EXPECT_FALSE(checker.isValid(flat.get()));
+      EXPECT_FALSE(motion.checkMotion(flat.get(), flat.get()));
+      EXPECT_TRUE(validity->valid(geometry::FoldState::flat(p)));
+    }
+    EXPECT_FALSE(validity->expired());
+    EXPECT_TRUE(checker.isValid(flat.get()));
+  }
+  EXPECT_FALSE(validity->expired());
 }
 
 }  // namespace

@@ -2,6 +2,10 @@
 /// @file
 /// What a valid fold state and a valid motion are, for OMPL's planners: angle bounds, closed
 /// loops, and no crossing facets.
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <limits>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -74,6 +78,26 @@ class FoldValidity {
     std::unique_ptr<simulation::CollisionWorld> world_;  // null: collisions are not checked
   };
 
+  /// While it lives, the OMPL checkers on this validity (FoldValidityChecker,
+  /// FoldMotionValidator) call every state and motion invalid once its deadline has passed;
+  /// destroying it restores the limit it replaced. valid() and Motion are not affected.
+  class TimeLimit {
+   public:
+    /// Sets `validity`'s deadline, remembering the one it replaces.
+    TimeLimit(const FoldValidity& validity, std::chrono::steady_clock::time_point deadline);
+    ~TimeLimit();  ///< Restores the deadline replaced.
+    TimeLimit(const TimeLimit&) = delete;             ///< Not copyable.
+    TimeLimit& operator=(const TimeLimit&) = delete;  ///< Not copyable.
+
+   private:
+    const FoldValidity& validity_;
+    std::int64_t previous_;
+  };
+  /// Whether a TimeLimit's deadline has passed. OMPL's planners stop at their termination
+  /// condition, but some loops never consult it (RRTConnect connects to the other tree until it
+  /// is trapped: with a tiny `range`, for hours); once every state is invalid they end at once.
+  bool expired() const;
+
   /// The pattern whose states are checked.
   const geometry::CreasePattern& pattern() const { return *pattern_; }
   /// The per-joint angle bounds.
@@ -97,6 +121,7 @@ class FoldValidity {
   simulation::CollisionOptions collision_;
   geometry::ClosureSystem system_;
   geometry::KinematicTree tree_;
+  mutable std::atomic<std::int64_t> deadline_{std::numeric_limits<std::int64_t>::max()};  // steady_clock ticks
   mutable std::mutex mutex_;  // guards pool_ and built_
   mutable std::vector<std::unique_ptr<simulation::CollisionWorld>> pool_;
   mutable std::size_t built_ = 0;
