@@ -376,8 +376,7 @@ class SceneRun {
     std::optional<statespaces::FoldValidity::TimeLimit> limit;
     bench.setPreRunEvent([&](const ob::PlannerPtr&) {
       limit.reset();
-      limit.emplace(*setup.validity, std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                                          std::chrono::duration<double>(2.0 * o_.time)));
+      limit.emplace(*setup.validity, 2.0 * o_.time);
     });
     bench.setPostRunEvent([&](const ob::PlannerPtr& planner, ompl::tools::Benchmark::RunProperties& run) {
       limit.reset();
@@ -495,8 +494,7 @@ std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::
           ss.setPlanner(entry_planner(name, scene, setup, o.params, limit));
           ss.setup();
           const auto t1 = std::chrono::steady_clock::now();
-          ss.solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(limit),
-                                                     ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition())));
+          setup.solve(ss, limit);
           ErrorVsTimeRow row;
           row.scene = scene.name;
           row.planner = name;

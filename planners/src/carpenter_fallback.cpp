@@ -92,8 +92,7 @@ ob::PlannerStatus CarpenterFallbackPlanner::solve(const ob::PlannerTerminationCo
   ob::PlannerStatus status;
   {
     // The inner planner's loops that ignore its termination condition end at its share too.
-    const auto share = std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(inner_time_));
-    const statespaces::FoldValidity::TimeLimit limit(*validity_, std::chrono::steady_clock::now() + share);
+    const statespaces::FoldValidity::TimeLimit limit(*validity_, inner_time_);
     status = inner_->solve(ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(inner_time_)));
   }
   if (status == ob::PlannerStatus::EXACT_SOLUTION || ptc()) return status;

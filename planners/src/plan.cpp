@@ -84,6 +84,12 @@ bool PlanSetup::write(const FoldState& state, ob::State* out) const {
   return true;
 }
 
+ob::PlannerStatus PlanSetup::solve(og::SimpleSetup& ss, double seconds) const {
+  const statespaces::FoldValidity::TimeLimit limit(*validity, seconds);
+  return ss.solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(seconds),
+                                                    ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition())));
+}
+
 void PlanSetup::set_start_and_goal(og::SimpleSetup& ss, const FoldState& goal) const {
   ob::ScopedState<> s(space), g(space);
   write(prefix.back(), s.get());
@@ -370,14 +376,7 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanRequest
   ss.setup();
 
   const auto t0 = std::chrono::steady_clock::now();
-  ob::PlannerStatus status;
-  {
-    // Planner loops that ignore the termination condition end too (FoldValidity::expired).
-    const statespaces::FoldValidity::TimeLimit limit(*setup.validity, t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                                               std::chrono::duration<double>(req.time)));
-    status = ss.solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(req.time),
-                                                        ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition())));
-  }
+  const ob::PlannerStatus status = setup.solve(ss, req.time);
   result.time = elapsed(t0);
   result.fallback = fallback && fallback->used_fallback();
   if (status == ob::PlannerStatus::EXACT_SOLUTION) return ss.getSolutionPath();

@@ -110,6 +110,10 @@ FoldValidityChecker::FoldValidityChecker(const ob::SpaceInformationPtr& si, std:
 FoldValidity::TimeLimit::TimeLimit(const FoldValidity& validity, std::chrono::steady_clock::time_point deadline)
     : validity_(validity), previous_(validity.deadline_.exchange(deadline.time_since_epoch().count())) {}
 
+FoldValidity::TimeLimit::TimeLimit(const FoldValidity& validity, double seconds)
+    : TimeLimit(validity, std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                                  std::chrono::duration<double>(seconds))) {}
+
 FoldValidity::TimeLimit::~TimeLimit() { validity_.deadline_.store(previous_); }
 
 bool FoldValidity::expired() const {

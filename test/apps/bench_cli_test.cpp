@@ -219,14 +219,18 @@ TEST(BenchCli, BadArgumentsExitTwo) {
 }
 
 // RRTConnect held to steps of 1e-7 rad: its connect loop never looks at the clock and ran for
-// hours; FoldValidity's time limit (twice --time in the harness) now ends every run (a regression
-// hangs until the ctest timeout).
+// hours; FoldValidity's time limit (twice --time in the harness, each limit with --error-vs-time)
+// now ends every run (a regression hangs until the ctest timeout).
 TEST(BenchCli, RunsWithATinyRangeEnd) {
   const std::string out = fresh("tiny-range");
   const auto r = foldkit({"bench", "quick", "--scenes", "vertex8-any", "--planners", "RRTConnect", "--param", "range=1e-7",
                           "--runs", "2", "--time", "0.2", "-o", out, "--json"});
   ASSERT_EQ(r.exit, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(out + "/vertex8-any.log"));
+  const auto e = foldkit({"bench", "quick", "--scenes", "vertex8-any", "--planners", "RRTConnect", "--param", "range=1e-7",
+                          "--runs", "1", "--error-vs-time", "0.2", "-o", out, "--json"});
+  ASSERT_EQ(e.exit, 0) << e.err;
+  EXPECT_TRUE(std::filesystem::exists(out + "/error_vs_time.csv"));
 }
 
 TEST(BenchCli, ListNamesSuitesScenesAndPlanners) {

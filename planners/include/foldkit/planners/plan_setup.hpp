@@ -45,6 +45,10 @@ struct PlanSetup {
   /// Start = prefix.back(), goal = `goal` (threshold 1e-9); anchors Atlas/TangentBundle charts.
   /// @throws std::invalid_argument when the goal is singular for the single-vertex space
   void set_start_and_goal(ompl::geometric::SimpleSetup& ss, const geometry::FoldState& goal) const;
+  /// Runs `ss`'s planner (set up on `si`) until its first exact solution or `seconds`. The time
+  /// holds even in planner loops that never consult their termination condition (RRTConnect's
+  /// connect loop): `validity` is under a FoldValidity::TimeLimit meanwhile.
+  ompl::base::PlannerStatus solve(ompl::geometric::SimpleSetup& ss, double seconds) const;
 };
 
 /// Checks the request as plan() does and builds the space: SpaceKind::Auto picks the

@@ -85,6 +85,8 @@ class FoldValidity {
    public:
     /// Sets `validity`'s deadline, remembering the one it replaces.
     TimeLimit(const FoldValidity& validity, std::chrono::steady_clock::time_point deadline);
+    /// The same with the deadline `seconds` from now.
+    TimeLimit(const FoldValidity& validity, double seconds);
     ~TimeLimit();  ///< Restores the deadline replaced.
     TimeLimit(const TimeLimit&) = delete;             ///< Not copyable.
     TimeLimit& operator=(const TimeLimit&) = delete;  ///< Not copyable.
