@@ -84,17 +84,17 @@ EquilibriumSystem::EquilibriumSystem(const Problem& problem) {
 
 void EquilibriumSystem::build_pattern() {
   const int n = static_cast<int>(free_.size());
-  block_rows_.assign(static_cast<std::size_t>(n), {});
-  for (int i = 0; i < n; ++i) block_rows_[static_cast<std::size_t>(i)].push_back(i);
+  std::vector<std::vector<int>> block_rows(static_cast<std::size_t>(n));  // per block column, sorted
+  for (int i = 0; i < n; ++i) block_rows[static_cast<std::size_t>(i)].push_back(i);
   for (const Spring& sp : springs_) {
     const int ia = index_[sp.a], ib = index_[sp.b];
     if (ia < 0 || ib < 0) continue;
-    block_rows_[static_cast<std::size_t>(ia)].push_back(ib);
-    block_rows_[static_cast<std::size_t>(ib)].push_back(ia);
+    block_rows[static_cast<std::size_t>(ia)].push_back(ib);
+    block_rows[static_cast<std::size_t>(ib)].push_back(ia);
   }
   std::vector<Eigen::Triplet<double>> t;
   for (int j = 0; j < n; ++j) {
-    auto& rows = block_rows_[static_cast<std::size_t>(j)];
+    auto& rows = block_rows[static_cast<std::size_t>(j)];
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
     for (int i : rows)
@@ -104,17 +104,16 @@ void EquilibriumSystem::build_pattern() {
   pattern_.resize(size(), size());
   pattern_.setFromTriplets(t.begin(), t.end());
   pattern_.makeCompressed();
+  const auto slot = [&](int row, int col) {
+    if (row < 0 || col < 0) return -1;
+    const auto& rows = block_rows[static_cast<std::size_t>(col)];
+    return static_cast<int>(std::lower_bound(rows.begin(), rows.end(), row) - rows.begin());
+  };
   for (const Spring& sp : springs_) {
     const int ia = index_[sp.a], ib = index_[sp.b];
     spring_slots_.push_back({slot(ia, ia), slot(ia, ib), slot(ib, ia), slot(ib, ib)});
   }
   for (const Load& l : loads_) load_slots_.push_back(slot(index_[l.module], index_[l.module]));
-}
-
-int EquilibriumSystem::slot(int row, int col) const {
-  if (row < 0 || col < 0) return -1;
-  const auto& rows = block_rows_[static_cast<std::size_t>(col)];
-  return static_cast<int>(std::lower_bound(rows.begin(), rows.end(), row) - rows.begin());
 }
 
 double EquilibriumSystem::residual_floor(const Eigen::VectorXd& x) const {

@@ -91,12 +91,10 @@ class EquilibriumSystem {
   // The tangent's pattern (dense 6×6 blocks, block rows sorted in each block column), built once:
   // tangent() fills a copy in place. A slot is a block's position within its block column.
   void build_pattern();
-  int slot(int row, int col) const;
 
   std::vector<Spring> springs_;
   std::vector<Load> loads_;
   std::vector<int> free_, index_;
-  std::vector<std::vector<int>> block_rows_;          // per free module (block column)
   Eigen::SparseMatrix<double> pattern_;
   std::vector<std::array<int, 4>> spring_slots_;      // (a,a), (a,b), (b,a), (b,b); −1 when fixed
   std::vector<int> load_slots_;                       // (m,m); −1 when fixed
