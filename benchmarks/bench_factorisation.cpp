@@ -49,36 +49,31 @@ Sparse plate_tangent(int modules) {
 
 Sparse make(const std::string& family, int size) { return family == "miura" ? miura_normal_matrix(size) : plate_tangent(size); }
 
-void ours(benchmark::State& state, const std::string& family) {
+using Ours = Eigen::SimplicialLDLT<Sparse, Eigen::Lower, Eigen::AMDOrdering<int>>;
+using Cholmod = Eigen::CholmodSupernodalLLT<Sparse, Eigen::Lower>;
+
+double factor_nnz(const Ours& f) { return static_cast<double>(f.matrixL().nestedExpression().nonZeros()); }
+double factor_nnz(Cholmod& f) { return f.cholmod().lnz; }  // from its analysis
+
+// The numeric factorisation of `family`'s matrix at the benchmark's size by Factor.
+template <class Factor>
+void factorise(benchmark::State& state, const std::string& family) {
   const Sparse a = make(family, static_cast<int>(state.range(0)));
-  Eigen::SimplicialLDLT<Sparse, Eigen::Lower, Eigen::AMDOrdering<int>> f;
+  Factor f;
   f.analyzePattern(a);
   for (auto _ : state) {
     f.factorize(a);
     benchmark::DoNotOptimize(f.info());
   }
-  if (f.info() != Eigen::Success) state.SkipWithError("SimplicialLDLT failed");
+  if (f.info() != Eigen::Success) state.SkipWithError("the factorisation failed");
   state.counters["unknowns"] = static_cast<double>(a.rows());
-  state.counters["factor_nnz"] = static_cast<double>(f.matrixL().nestedExpression().nonZeros());
+  state.counters["factor_nnz"] = factor_nnz(f);
 }
 
-void cholmod(benchmark::State& state, const std::string& family) {
-  const Sparse a = make(family, static_cast<int>(state.range(0)));
-  Eigen::CholmodSupernodalLLT<Sparse, Eigen::Lower> f;
-  f.analyzePattern(a);
-  for (auto _ : state) {
-    f.factorize(a);
-    benchmark::DoNotOptimize(f.info());
-  }
-  if (f.info() != Eigen::Success) state.SkipWithError("CHOLMOD failed");
-  state.counters["unknowns"] = static_cast<double>(a.rows());
-  state.counters["factor_nnz"] = f.cholmod().lnz;  // from its analysis
-}
-
-void BM_FactorMiura_Ours(benchmark::State& s) { ours(s, "miura"); }
-void BM_FactorMiura_Cholmod(benchmark::State& s) { cholmod(s, "miura"); }
-void BM_FactorPlate_Ours(benchmark::State& s) { ours(s, "plate"); }
-void BM_FactorPlate_Cholmod(benchmark::State& s) { cholmod(s, "plate"); }
+void BM_FactorMiura_Ours(benchmark::State& s) { factorise<Ours>(s, "miura"); }
+void BM_FactorMiura_Cholmod(benchmark::State& s) { factorise<Cholmod>(s, "miura"); }
+void BM_FactorPlate_Ours(benchmark::State& s) { factorise<Ours>(s, "plate"); }
+void BM_FactorPlate_Cholmod(benchmark::State& s) { factorise<Cholmod>(s, "plate"); }
 
 }  // namespace
 

@@ -17,6 +17,8 @@ import os
 import re
 import sys
 
+from result_files import result_files
+
 UNIT_SECONDS = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
 NAME = re.compile(r"^BM_([A-Za-z0-9]+)_([A-Za-z0-9]+)((?:/[^/]+)*)$")
 SIZE_COUNTERS = ("facets", "creases", "modules", "cells", "actors")
@@ -24,14 +26,7 @@ SIZE_COUNTERS = ("facets", "creases", "modules", "cells", "actors")
 
 def load(paths):
     """(program, entry) for every benchmark run in the given files or folders of *.json."""
-    files = []
-    for p in paths:
-        if os.path.isdir(p):
-            files += sorted(os.path.join(p, f) for f in os.listdir(p) if f.endswith(".json"))
-        else:
-            files.append(p)
-    if not files:
-        sys.exit("bench_ratios.py: no JSON files in " + " ".join(paths))
+    files = result_files(paths, ".json", "bench_ratios.py")
     runs = []
     for f in files:
         try:

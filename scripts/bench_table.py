@@ -18,24 +18,17 @@ closure error along an exact path. Standard library only.
 """
 import argparse
 import csv
-import os
 import statistics
 import sys
 from collections import defaultdict
+
+from result_files import result_files
 
 EXACT = "6"  # ompl::base::PlannerStatus::EXACT_SOLUTION in a log's "status ENUM" column
 
 
 def log_files(paths):
-    files = []
-    for p in paths:
-        if os.path.isdir(p):
-            files += sorted(os.path.join(p, f) for f in os.listdir(p) if f.endswith(".log"))
-        else:
-            files.append(p)
-    if not files:
-        sys.exit("bench_table.py: no .log files in " + " ".join(paths))
-    return files
+    return result_files(paths, ".log", "bench_table.py")
 
 
 def parse(path):
