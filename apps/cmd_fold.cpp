@@ -32,7 +32,8 @@ const char* stop_name(geometry::StatusCode code) {
 
 struct FoldArgs {
   std::string pattern, output, velocity;
-  double fraction = 0.9, step = 0.01;
+  double fraction = 0.9, step = folding::ProjectedFoldingOptions{}.max_step,
+         chord_tolerance = folding::ProjectedFoldingOptions{}.chord_tolerance;
   int max_steps = 20000;
   bool no_collision = false, partial = false, json = false;
 };
@@ -42,8 +43,13 @@ void add_fold_options(CLI::App* app, FoldArgs& opt) {
   app->add_option("--fraction", opt.fraction, "Stop when the largest fold angle reaches this fraction of 180 degrees")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  app->add_option("--step", opt.step, "Largest change of any crease per step, radians")
+  app->add_option("--step", opt.step, "Largest change of any crease per step, radians (every step's, with --chord-tolerance 0)")
       ->check(CLI::Range(1e-6, 0.5))
+      ->capture_default_str();
+  app->add_option("--chord-tolerance", opt.chord_tolerance,
+                  "Size the steps so that the straight chord between consecutive states (what a replay follows) leaves "
+                  "the closure manifold by at most this, radians; 0: fixed steps of --step")
+      ->check(CLI::Range(0.0, 0.1))
       ->capture_default_str();
   app->add_option("--max-steps", opt.max_steps, "Give up after this many steps")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_option("--velocity", opt.velocity,
@@ -61,7 +67,10 @@ folding::ProjectedFoldingResult fold(const FoldArgs& opt, const geometry::Crease
     if (!(o.velocity.cwiseAbs().maxCoeff() > 0.0)) throw UsageError("--velocity: the desired velocity is zero on every crease");
   }
   o.target_fraction = opt.fraction;
+  if (opt.chord_tolerance != 0.0 && !(opt.chord_tolerance > o.closure_tolerance))
+    throw UsageError("--chord-tolerance: 0 (fixed steps) or above the closure tolerance of the states (1e-10 rad)");
   o.max_step = opt.step;
+  o.chord_tolerance = opt.chord_tolerance;
   o.max_steps = opt.max_steps;
   o.collisions = !opt.no_collision;
   try {
@@ -75,7 +84,7 @@ folding::ProjectedFoldingResult fold(const FoldArgs& opt, const geometry::Crease
 
 void print_summary(const folding::ProjectedFoldingResult& r) {
   std::cerr << stop_name(r.status.code) << ": " << r.status.message << " (fraction " << r.fraction << ", " << r.steps << " steps, "
-            << r.newton_iterations << " Newton iterations, closure error " << r.max_closure_error << " rad, " << r.time << " s)\n";
+            << r.newton_iterations << " Newton iterations, closure error " << r.max_closure_error << " rad, chord error " << r.max_chord_error << " rad, " << r.time << " s)\n";
   if (r.rank_decisions > 0)
     std::cerr << "rank " << r.rank << " (" << r.dof << " DOF) by " << r.rank_method << ", singular-value gap " << r.rank_gap
               << " (smallest over " << r.rank_decisions << " decisions " << r.min_rank_gap << ")\n";
@@ -91,6 +100,7 @@ nlohmann::json fold_json(const FoldArgs& opt, const folding::ProjectedFoldingRes
                    {"steps", r.steps},
                    {"newton_iterations", r.newton_iterations},
                    {"max_closure_error", r.max_closure_error},
+                   {"max_chord_error", r.max_chord_error},
                    {"rank", r.rank},
                    {"dof", r.dof},
                    {"min_pivot_ratio", r.min_pivot_ratio},

@@ -28,13 +28,20 @@ fo::ProjectedFoldingOptions folding_options() {
 
 // Second argument: 1 corrects each step by chord iterations on the step's one factorisation
 // (the default), 0 refactors at every Newton iterate (the corrector before, issue 20 item 2).
-// Third: 1 checks self-collisions (the CLI's default), 0 closure only.
+// Third: 1 checks self-collisions (the CLI's default), 0 closure only. Fourth: 1 sizes the
+// steps by the chord tolerance and predicts them to second order (the defaults), 0 takes fixed
+// steps of 0.01 rad predicted to first order (the stepping before).
 void BM_ProjectedFoldingMiura(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const geo::CreasePattern p = geo::build_or_throw(geo::generators::miura(n, n));
   fo::ProjectedFoldingOptions o = folding_options();
   o.chord_corrector = state.range(1) != 0;
   o.collisions = state.range(2) != 0;
+  if (state.range(3) == 0) {
+    o.max_step = 0.01;
+    o.chord_tolerance = 0.0;
+    o.second_order_predictor = false;
+  }
   fo::ProjectedFoldingResult r;
   for (auto _ : state) {
     r = fo::fold_projected(p, o);
@@ -45,17 +52,27 @@ void BM_ProjectedFoldingMiura(benchmark::State& state) {
   state.counters["steps"] = r.steps;
   state.counters["newton_iterations"] = r.newton_iterations;
   state.counters["max_closure_error"] = r.max_closure_error;
+  state.counters["max_chord_error"] = r.max_chord_error;
   state.counters["fraction"] = r.fraction;
   state.counters["time_s"] = r.time;
 }
 BENCHMARK(BM_ProjectedFoldingMiura)
-    ->ArgNames({"n", "chord", "collisions"})
-    ->ArgsProduct({{4, 10, 20}, {1, 0}, {1}})
+    ->ArgNames({"n", "chord", "collisions", "adaptive"})
+    ->ArgsProduct({{4, 10, 20}, {1, 0}, {1}, {1, 0}})
     ->Unit(benchmark::kMillisecond);
-// The sizes of issue 20 (a Miura 100 × 100 to 0.9 in at most 5 s), closure only, once each.
+// The sizes of issue 20 (a Miura 100 × 100 to 0.9 in at most 5 s), closure only, once each: today's
+// defaults, the stepping before (fixed 0.01 rad, first order) and the corrector before that.
 BENCHMARK(BM_ProjectedFoldingMiura)
-    ->ArgNames({"n", "chord", "collisions"})
-    ->ArgsProduct({{40, 70, 100}, {1, 0}, {0}})
+    ->ArgNames({"n", "chord", "collisions", "adaptive"})
+    ->Args({40, 1, 0, 1})
+    ->Args({40, 1, 0, 0})
+    ->Args({40, 0, 0, 0})
+    ->Args({70, 1, 0, 1})
+    ->Args({70, 1, 0, 0})
+    ->Args({70, 0, 0, 0})
+    ->Args({100, 1, 0, 1})
+    ->Args({100, 1, 0, 0})
+    ->Args({100, 0, 0, 0})
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 

@@ -69,6 +69,14 @@ class PathChecker {
     return {};
   }
 
+  // Starts the world's memory of the motion again at `x` (a state crossing-free on the path
+  // checked so far), to check another motion from it.
+  void restart(const FoldState& x) {
+    world_ = simulation::CollisionWorld(pattern_, options(margin_));
+    first_ = true;
+    crossing(x, x);
+  }
+
  private:
   static simulation::CollisionOptions options(double margin) {
     simulation::CollisionOptions o;
@@ -139,7 +147,7 @@ class Folder {
     system_.evaluate(s, r, factored_jacobian_);
     double error = system_.residual_error(r);
     if (error <= po_.tolerance) return {s, true, 0, error};
-    if (!solver_.min_norm_step(factored_jacobian_, r, delta)) return {s, false, 0, error};
+    if (!solver_.min_norm_step(factored_jacobian_, r, delta, false)) return {s, false, 0, error};
     for (int it = 1; it <= 10; ++it) {
       s.angles += delta;
       ++result_.newton_iterations;
@@ -217,23 +225,32 @@ class Folder {
         return finish(StatusCode::LimitReached, "stopped after " + std::to_string(opt_.max_steps) + " steps" + at.str());
       const Eigen::VectorXd v = t.velocity / t.velocity.cwiseAbs().maxCoeff();
 
-      double h = opt_.max_step;
-      Corrected next;
+      double h = toward_target(x, v, step_, target);
       std::string why;
-      while (true) {
-        next = correct(FoldState{x.angles + h * v}, true);
-        why = check_step(x, FoldState{x.angles + h * v}, next, h);
-        if (why.empty()) break;
-        h *= 0.5;
-        if (h < opt_.max_step / 64) return finish(StatusCode::Singular, why + at.str());
-      }
+      Corrected next = sized_step(x, v, h, why);
+      if (!next.ok) return finish(StatusCode::Singular, why + at.str());
       bool reached = false;
-      if (fraction_of(next.state) >= target) {
-        next = land(x, v, h, target);
+      if (fraction_of(next.state) >= target - 1e-12) {
+        next = land(x, v, h, next, target);
+        check_chord(x, next, h);  // the shorter chord's error, for the record
         reached = true;
       }
-      if (!accept(x, next)) return;
+      if (const std::string what = crossing(x, next.state); !what.empty()) {
+        if (h <= lead_step_) return finish(StatusCode::Collision, "the next step collides: " + what);
+        // Approach the contact again from x at the lead-in's step, so that the path stops as
+        // close before it as with fixed steps; the world restarts at x, because it remembers
+        // the motion it has checked.
+        checker_->restart(x);
+        step_ = cap_ = lead_step_;
+        fresh_factor_ = false;
+        continue;
+      }
+      accept(next);
       if (reached) return finish(StatusCode::Success, "target reached");
+      if (last_v_.size() == v.size()) bend_ = (v - last_v_) / last_h_;
+      last_v_ = v;
+      last_h_ = h;
+      resize_step(h);
     }
   }
 
@@ -246,7 +263,10 @@ class Folder {
   // at angles of about √tolerance.
   bool lead_in(const Eigen::VectorXd& w) {
     const double amplitude = std::min(opt_.lead_in, 0.5 * opt_.target_fraction * kPi);
-    const int parts = std::max(1, static_cast<int>(std::ceil(amplitude / opt_.max_step - 1e-9)));
+    const int parts = std::max(10, static_cast<int>(std::ceil(amplitude / opt_.max_step - 1e-9)));
+    lead_step_ = amplitude / parts;
+    step_ = opt_.chord_tolerance > 0.0 ? lead_step_ : opt_.max_step;
+    cap_ = opt_.max_step;
     for (int k = 1; k <= parts; ++k) {
       const double s = amplitude * k / parts;
       const Corrected c = correct(FoldState{s * w});
@@ -261,13 +281,78 @@ class Folder {
         finish(StatusCode::NotRigidlyFoldable, out.str());
         return false;
       }
-      if ((c.state.angles - result_.states.back().angles).cwiseAbs().maxCoeff() > 2.0 * opt_.max_step) {
+      if ((c.state.angles - result_.states.back().angles).cwiseAbs().maxCoeff() > 2.0 * lead_step_) {
         finish(StatusCode::Singular, "the way out of the flat state jumps between branches at amplitude " + std::to_string(s) + " rad");
         return false;
       }
-      if (!accept(result_.states.back(), c)) return false;
+      check_chord(result_.states.back(), c, lead_step_);
+      if (const std::string what = crossing(result_.states.back(), c.state); !what.empty()) {
+        finish(StatusCode::Collision, "the next step collides: " + what);
+        return false;
+      }
+      accept(c);
     }
     return true;
+  }
+
+  // The last accepted step's chord error, ∝ h² (a chord's midpoint is h²·κ/8 off a path of
+  // curvature κ): the next step aims at 0.8 of the tolerance, so that steps are rarely refused,
+  // growing at most twofold.
+  void resize_step(double h) {
+    if (opt_.chord_tolerance <= 0.0) return;
+    const double grow = chord_ > 0.0 ? std::sqrt(0.8 * opt_.chord_tolerance / chord_) : 2.0;
+    step_ = std::clamp(h * std::min(grow, 2.0), smallest_step(), cap_);
+  }
+
+  double smallest_step() const { return lead_step_ / 64; }
+
+  // The predicted state h along the path from x: x + h·v, plus ½h²·a with the second-order
+  // predictor, a = the change of the unit tangent over the last step, so that the prediction is
+  // off the manifold by O(h³) instead of O(h²) and one Newton step usually corrects it.
+  FoldState predict(const FoldState& x, const Eigen::VectorXd& v, double h) const {
+    if (!opt_.second_order_predictor || bend_.size() != v.size()) return FoldState{x.angles + h * v};
+    return FoldState{x.angles + h * v + (0.5 * h * h) * bend_};
+  }
+
+  // The step length h, or one that lands on the target: when the target is at most two steps
+  // away (at the rate the largest angle grows along the prediction), one step that goes 10%
+  // past it, which land() brings back, or half the way when that step would be longer than
+  // allowed. Steps sized by the chord alone could leave a last state just short of the target,
+  // where a singular end (a sheet folded flat) reads as singular.
+  double toward_target(const FoldState& x, const Eigen::VectorXd& v, double h, double target) const {
+    const double largest = x.angles.cwiseAbs().maxCoeff(), room = target * kPi - largest;
+    const auto rate = [&](double step) { return (predict(x, v, step).angles.cwiseAbs().maxCoeff() - largest) / step; };
+    if (!(rate(h) > 0.0) || room > 2.0 * h * rate(h)) return h;
+    double landing = 1.1 * room / rate(h);
+    if (rate(landing) > 0.0) landing = 1.1 * room / rate(landing);  // the rate along the longer or shorter prediction
+    if (landing > cap_) landing = std::min(0.5 * landing, cap_);
+    return std::max(landing, smallest_step());
+  }
+
+  // The step from x along v, starting at length h: refused and shortened while the correction
+  // fails or jumps, a crease crosses flat, or the chord bends beyond the tolerance. Not ok (with
+  // `why`) once it would be shorter than the smallest step; h is the length taken.
+  Corrected sized_step(const FoldState& x, const Eigen::VectorXd& v, double& h, std::string& why) {
+    while (true) {
+      Corrected next = correct(predict(x, v, h), true);
+      why = check_step(x, predict(x, v, h), next, h);
+      bool bent = false;
+      if (why.empty()) bent = !(why = check_chord(x, next, h)).empty();
+      if (why.empty()) return next;
+      h *= bent ? 0.9 * std::sqrt(opt_.chord_tolerance / chord_) : 0.5;
+      if (h < smallest_step()) return {next.state, false, 0, next.error};
+    }
+  }
+
+  // Empty when the chord from x to `next` stays within the chord tolerance at its midpoint (the
+  // error is kept in chord_ either way).
+  std::string check_chord(const FoldState& x, const Corrected& next, double h) {
+    chord_ = system_.max_error(FoldState{0.5 * (x.angles + next.state.angles)});
+    if (opt_.chord_tolerance <= 0.0 || chord_ <= opt_.chord_tolerance) return {};
+    std::ostringstream out;
+    out << "the path bends too sharply: the chord of a step of " << h << " rad leaves the closure manifold by " << chord_
+        << " rad at its midpoint (chord tolerance " << opt_.chord_tolerance << ")";
+    return out.str();
   }
 
   // Empty when `next` (corrected from `predicted`) is an acceptable step from `x`.
@@ -288,13 +373,13 @@ class Folder {
 
   // The step from x along v whose corrected state has its largest angle at target·π (regula falsi
   // on the step length; the fraction is nearly linear in it).
-  Corrected land(const FoldState& x, const Eigen::VectorXd& v, double h, double target) {
+  Corrected land(const FoldState& x, const Eigen::VectorXd& v, double h, const Corrected& at_h, double target) {
     double lo = 0.0, flo = fraction_of(x) - target, hi = h;
-    Corrected best = correct(FoldState{x.angles + hi * v}, true);
+    Corrected best = at_h;
     double fhi = fraction_of(best.state) - target;
     for (int it = 0; it < 40 && std::abs(fhi) > 1e-12; ++it) {
       const double mid = hi - fhi * (hi - lo) / (fhi - flo);
-      const Corrected c = correct(FoldState{x.angles + mid * v}, true);
+      const Corrected c = correct(predict(x, v, mid), true);
       if (!c.ok) break;
       const double fm = fraction_of(c.state) - target;
       if (fm >= 0.0) {
@@ -306,21 +391,18 @@ class Folder {
     return best;
   }
 
-  // Appends `next` unless the motion to it collides; ends the run (Collision) when it does.
-  bool accept(const FoldState& x, const Corrected& next) {
-    if (checker_) {
-      const std::string what = checker_->crossing(x, next.state);
-      if (!what.empty()) {
-        finish(StatusCode::Collision, "the next step collides: " + what);
-        return false;
-      }
-    }
+  // Empty when the straight motion from x to y crosses nothing (or collisions are off), else what
+  // crosses.
+  std::string crossing(const FoldState& x, const FoldState& y) { return checker_ ? checker_->crossing(x, y) : std::string(); }
+
+  // Appends `next`, a checked step.
+  void accept(const Corrected& next) {
     const double error = next.error;  // the corrector's, at next.state
     result_.max_closure_error = std::max(result_.max_closure_error, error);
+    result_.max_chord_error = std::max(result_.max_chord_error, chord_);
     result_.states.push_back(next.state);
     result_.steps = static_cast<int>(result_.states.size()) - 1;
     if (opt_.progress) opt_.progress({static_cast<double>(result_.steps), 0.0, "steps", error});
-    return true;
   }
 
   // J's rank by singular values (geometry::LeastNormSolver::decide_rank), the fold's record of it;
@@ -356,6 +438,13 @@ class Folder {
   // fresh_factor_; the next step's tangent is projected with it (O(h²) from the accepted state).
   Eigen::SparseMatrix<double> factored_jacobian_;
   bool fresh_factor_ = false;
+  double lead_step_ = 0.0;  // the lead-in's step; 1/64 of it is the smallest step
+  double step_ = 0.0;       // the next step's length
+  Eigen::VectorXd bend_;    // the unit tangent's change per radian over the last step
+  Eigen::VectorXd last_v_;  // the last step's unit tangent
+  double last_h_ = 0.0;     // and its length
+  double cap_ = 0.0;        // the longest step: max_step, or the lead-in's once a collision is near
+  double chord_ = 0.0;      // the loop error at the midpoint of the last chord checked
   geometry::RankDecision decision_;
 };
 
@@ -379,6 +468,8 @@ ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, co
     throw std::invalid_argument("fold_projected: the step must lie in (0, 0.5] rad");
   if (!(options.closure_tolerance > 0.0 && options.closure_tolerance < 1e-3))
     throw std::invalid_argument("fold_projected: the closure tolerance must lie in (0, 1e-3)");
+  if (!(options.chord_tolerance == 0.0 || (options.chord_tolerance > options.closure_tolerance && options.chord_tolerance <= 0.1)))
+    throw std::invalid_argument("fold_projected: the chord tolerance must be 0 or lie in (closure tolerance, 0.1]");
   if (options.max_steps < 1) throw std::invalid_argument("fold_projected: max_steps must be at least 1");
   if (!(options.lead_in > 0.0 && options.lead_in <= 1.0))
     throw std::invalid_argument("fold_projected: the lead-in amplitude must lie in (0, 1] rad");

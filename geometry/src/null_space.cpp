@@ -40,9 +40,10 @@ Eigen::VectorXd LeastNormSolver::solve(const Eigen::VectorXd& b) const {
 }
 
 bool LeastNormSolver::min_norm_step(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& residual,
-                                    Eigen::VectorXd& step) {
+                                    Eigen::VectorXd& step, bool refine) {
   if (!factor(jacobian)) return false;
-  step = -solve(jacobian.transpose() * residual);
+  const Eigen::VectorXd b = jacobian.transpose() * residual;
+  step = refine ? Eigen::VectorXd(-solve(b)) : Eigen::VectorXd(-ldlt_.solve(b));
   return step.allFinite();
 }
 

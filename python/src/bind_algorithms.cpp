@@ -24,6 +24,8 @@ void bind_fold(py::module_& m) {
           "Flat, then every accepted state, shape (steps + 1, joints), radians.")
       .def_readonly("fraction", &R::fraction, "Largest |fold angle| / π at the last state.")
       .def_readonly("max_closure_error", &R::max_closure_error, "Largest loop error over the states, radians.")
+      .def_readonly("max_chord_error", &R::max_chord_error,
+                    "Largest loop error at the midpoint of the chord between consecutive states, radians.")
       .def_readonly("steps", &R::steps, "States after the flat one.")
       .def_readonly("newton_iterations", &R::newton_iterations, "Corrector iterations, all steps together.")
       .def_readonly("rank", &R::rank, "Rank of the closure Jacobian at the last decision.")
@@ -46,8 +48,8 @@ void bind_fold(py::module_& m) {
       });
   m.def(
       "fold",
-      [](const geometry::CreasePattern& p, double fraction, const py::object& velocity, double max_step, bool collisions, int max_steps,
-         bool replay) {
+      [](const geometry::CreasePattern& p, double fraction, const py::object& velocity, double max_step, double chord_tolerance,
+         bool collisions, int max_steps, bool replay) {
         require(std::isfinite(fraction) && fraction > 0.0 && fraction <= 1.0, "fraction", "in (0, 1]", fraction);
         folding::ProjectedFoldingOptions o;
         if (!velocity.is_none()) {
@@ -56,16 +58,19 @@ void bind_fold(py::module_& m) {
         }
         o.target_fraction = fraction;
         o.max_step = max_step;
+        o.chord_tolerance = chord_tolerance;
         o.max_steps = max_steps;
         o.collisions = collisions;
         o.replay = replay;
         py::gil_scoped_release release;
         return folding::fold_projected(p, o);
       },
-      py::arg("pattern"), py::arg("fraction") = 0.9, py::arg("velocity") = py::none(), py::arg("max_step") = 0.01,
-      py::arg("collisions") = true, py::arg("max_steps") = 20000, py::arg("replay") = true,
+      py::arg("pattern"), py::arg("fraction") = 0.9, py::arg("velocity") = py::none(), py::arg("max_step") = folding::ProjectedFoldingOptions{}.max_step,
+      py::arg("chord_tolerance") = folding::ProjectedFoldingOptions{}.chord_tolerance, py::arg("collisions") = true, py::arg("max_steps") = 20000, py::arg("replay") = true,
       "Folds every crease at once along the closure manifold (Tachi's projected velocity), as `foldkit fold`, until the "
       "largest angle is `fraction` of π. `velocity` (one value per joint) defaults to the mountain/valley assignment. "
+      "Steps are sized so that the chord between consecutive states leaves the closure manifold by at most "
+      "`chord_tolerance` rad (0: fixed steps of `max_step`, otherwise the longest step). "
       "Bad options (e.g. max_step outside (0, 0.5]) raise ValueError.");
 }
 

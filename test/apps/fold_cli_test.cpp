@@ -87,6 +87,28 @@ TEST(FoldCli, CollisionExitsFourAndPartialWritesThePathSoFar) {
   EXPECT_EQ(foldkit({"simulate", pattern, out}).exit, 0);
 }
 
+// --chord-tolerance sizes the steps (a tighter one takes more), the JSON reports the largest
+// chord error within it, and 0 takes fixed steps of --step.
+TEST(FoldCli, ChordToleranceSizesTheSteps) {
+  const std::string pattern = write_pattern("miura-chord.pmml", geo::generators::miura(3, 3));
+  const std::string out = dir() + "/chord.cmml";
+  int last_steps = 0;
+  for (const char* tolerance : {"1e-4", "1e-5", "0"}) {
+    std::vector<std::string> args = {"fold", pattern, "--fraction", "0.6", "--chord-tolerance", tolerance, "-o", out, "--json"};
+    if (std::string(tolerance) == "0") args.insert(args.end(), {"--step", "0.005"});
+    const auto r = foldkit(args);
+    ASSERT_EQ(r.exit, 0) << tolerance << ": " << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const double chord = j["max_chord_error"].get<double>();
+    if (std::string(tolerance) != "0") EXPECT_LE(chord, std::stod(tolerance)) << tolerance;
+    EXPECT_GT(j["steps"].get<int>(), last_steps) << tolerance;
+    last_steps = j["steps"].get<int>();
+    EXPECT_TRUE(j["replay_ok"].get<bool>()) << tolerance;
+  }
+  EXPECT_EQ(foldkit({"fold", pattern, "--chord-tolerance", "1e-12", "-o", out}).exit, 2);
+  EXPECT_EQ(foldkit({"fold", pattern, "--chord-tolerance", "-1", "-o", out}).exit, 2);
+}
+
 TEST(FoldCli, BadInputAndUsage) {
   const std::string miura = write_pattern("m2.pmml", geo::generators::miura(2, 2));
   const std::string boat = write_pattern("boat.pmml", geo::generators::boat());

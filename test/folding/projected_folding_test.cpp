@@ -29,19 +29,29 @@ constexpr double kPi = 3.14159265358979323846;
 
 double sign_of(geo::Assignment a) { return a == geo::Assignment::Mountain ? 1.0 : a == geo::Assignment::Valley ? -1.0 : 0.0; }
 
-// Closed at every state (evaluated here, not taken from the result), no crease jumps, and the
-// simulator replays the CMML without a problem.
-void expect_valid_path(const geo::CreasePattern& p, const ProjectedFoldingResult& r, double max_step) {
+// The loop error at the midpoint of the chord from state i − 1 to state i.
+double chord_error(const geo::ClosureSystem& system, const ProjectedFoldingResult& r, std::size_t i) {
+  return system.max_error(geo::FoldState{0.5 * (r.states[i - 1].angles + r.states[i].angles)});
+}
+
+// Closed at every state (evaluated here, not taken from the result), no crease jumps, every
+// chord within the chord tolerance, and the simulator replays the CMML without a problem.
+void expect_valid_path(const geo::CreasePattern& p, const ProjectedFoldingResult& r, const ProjectedFoldingOptions& o) {
   const geo::ClosureSystem system(p);
   ASSERT_FALSE(r.states.empty());
   EXPECT_EQ(r.states.front().angles.cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ(r.steps + 1, static_cast<int>(r.states.size()));
+  double largest_chord = 0.0;
   for (std::size_t i = 0; i < r.states.size(); ++i) {
     EXPECT_LE(system.max_error(r.states[i]), 1e-10) << "state " << i;
     if (i > 0) {
-      EXPECT_LE((r.states[i].angles - r.states[i - 1].angles).cwiseAbs().maxCoeff(), 1.5 * max_step) << "state " << i;
+      EXPECT_LE((r.states[i].angles - r.states[i - 1].angles).cwiseAbs().maxCoeff(), 1.5 * o.max_step) << "state " << i;
+      const double chord = chord_error(system, r, i);
+      if (o.chord_tolerance > 0.0) EXPECT_LE(chord, o.chord_tolerance) << "state " << i;
+      largest_chord = std::max(largest_chord, chord);
     }
   }
+  EXPECT_NEAR(r.max_chord_error, largest_chord, 1e-12);
   EXPECT_LE(r.max_closure_error, 1e-10);
   ASSERT_TRUE(r.replay.has_value());
   EXPECT_TRUE(r.replay->status.ok()) << (r.replay->problems.empty() ? "" : r.replay->problems.front());
@@ -64,7 +74,7 @@ TEST(ProjectedFolding, MiuraFollowsTheClosedFormToTheTarget) {
   ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
   EXPECT_NEAR(r.fraction, 0.9, 1e-9);
   EXPECT_NEAR(r.states.back().angles.cwiseAbs().maxCoeff(), 0.9 * kPi, 1e-9);
-  expect_valid_path(p, r, o.max_step);
+  expect_valid_path(p, r, o);
   expect_assignment_kept(p, r);
   EXPECT_EQ(r.dof, 1);
   // Straight creases are the vertical ones; tan(ρ_straight/2) = cos φ · tan(ρ_zigzag/2) at every
@@ -87,7 +97,7 @@ TEST(ProjectedFolding, WaterbombFoldsAlongItsAssignment) {
   const geo::CreasePattern p = geo::build_or_throw(gen::waterbomb(2, 2));
   const ProjectedFoldingResult r = fold_projected(p, {});
   ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
-  expect_valid_path(p, r, ProjectedFoldingOptions{}.max_step);
+  expect_valid_path(p, r, {});
   expect_assignment_kept(p, r);
   EXPECT_NEAR(r.fraction, 0.9, 1e-9);
 }
@@ -101,7 +111,7 @@ TEST(ProjectedFolding, BoatFoldsWithAGivenVelocityAndEndsWithOneDof) {
   o.target_fraction = 0.5;
   const ProjectedFoldingResult r = fold_projected(p, o);
   ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
-  expect_valid_path(p, r, o.max_step);
+  expect_valid_path(p, r, o);
   const geo::ClosureSystem system(p);
   EXPECT_EQ(geo::mobility(system, r.states.back()).dof, 1);  // NOTES.md: the folded boat has 1 DOF
   EXPECT_EQ(r.dof, 1);
@@ -124,6 +134,66 @@ TEST(ProjectedFolding, ThrowsForAPatternWithoutAssignmentAndBadOptions) {
   ProjectedFoldingOptions bad;
   bad.max_step = 0.0;
   EXPECT_THROW(fold_projected(miura, bad), std::invalid_argument);
+  for (double t : {-1e-5, 1e-10, 0.2, std::nan("")}) {
+    ProjectedFoldingOptions chord;
+    chord.chord_tolerance = t;
+    EXPECT_THROW(fold_projected(miura, chord), std::invalid_argument) << t;
+  }
+}
+
+// Steps sized by the chord tolerance: every chord's midpoint stays within it (expect_valid_path,
+// evaluated afresh), the largest chord comes close to it (the steps are not needlessly short),
+// the steps grow where the Miura-ori's path is straight (near flat and near folded) and shrink
+// where it bends, and a tighter tolerance takes more steps, about as 1/√tolerance. Fixed steps
+// (chord tolerance 0) keep to max_step.
+TEST(ProjectedFolding, StepsFollowTheChordTolerance) {
+  const geo::CreasePattern p = geo::build_or_throw(gen::miura(4, 4));
+  std::map<double, int> steps;
+  for (double tolerance : {1e-5, 2.5e-6}) {
+    ProjectedFoldingOptions o;
+    o.chord_tolerance = tolerance;
+    const ProjectedFoldingResult r = fold_projected(p, o);
+    SCOPED_TRACE(tolerance);
+    ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
+    expect_valid_path(p, r, o);
+    EXPECT_GE(r.max_chord_error, 0.7 * tolerance);
+    steps[tolerance] = r.steps;
+    double shortest = 1.0, longest = 0.0;
+    for (std::size_t i = 12; i + 1 < r.states.size(); ++i) {  // after the lead-in, before the landing
+      const double h = (r.states[i].angles - r.states[i - 1].angles).cwiseAbs().maxCoeff();
+      shortest = std::min(shortest, h), longest = std::max(longest, h);
+    }
+    EXPECT_GT(longest, 1.5 * shortest);
+  }
+  EXPECT_NEAR(static_cast<double>(steps[2.5e-6] - 10) / (steps[1e-5] - 10), 2.0, 0.2);
+  ProjectedFoldingOptions fixed;
+  fixed.max_step = 0.01;
+  fixed.chord_tolerance = 0.0;
+  const ProjectedFoldingResult r = fold_projected(p, fixed);
+  ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
+  expect_valid_path(p, r, fixed);
+  EXPECT_GT(r.steps, steps[1e-5]);
+  for (std::size_t i = 1; i < r.states.size(); ++i)
+    EXPECT_LE((r.states[i].angles - r.states[i - 1].angles).cwiseAbs().maxCoeff(), 0.0105) << "state " << i;  // h, then corrected
+}
+
+// The second-order predictor walks the same curve as the first-order one (a 1-DOF Miura-ori
+// ends in the same state) with about one Newton iteration per step instead of two (at short
+// steps, where the O(h³) term is small).
+TEST(ProjectedFolding, SecondOrderPredictorSavesNewtonIterations) {
+  const geo::CreasePattern p = geo::build_or_throw(gen::miura(5, 4, 1.0, 1.2, 1.1));
+  ProjectedFoldingOptions o;
+  o.target_fraction = 0.8;
+  o.chord_tolerance = 1e-5;
+  o.replay = false;
+  const ProjectedFoldingResult second = fold_projected(p, o);
+  o.second_order_predictor = false;
+  const ProjectedFoldingResult first = fold_projected(p, o);
+  ASSERT_TRUE(second.status.ok()) << second.status.message;
+  ASSERT_TRUE(first.status.ok()) << first.status.message;
+  EXPECT_LE((second.states.back().angles - first.states.back().angles).cwiseAbs().maxCoeff(), 1e-8);
+  EXPECT_LE(second.newton_iterations, 1.3 * second.steps);
+  EXPECT_GE(first.newton_iterations, 1.7 * first.steps);
 }
 
 TEST(ProjectedFolding, SquareTwistIsReportedNotRigidlyFoldable) {
@@ -270,9 +340,9 @@ TEST(ProjectedFolding, ChordCorrectorWalksTheSameCurve) {
     SCOPED_TRACE(p.title());
     ASSERT_EQ(chord.status.code, full.status.code) << chord.status.message << " / " << full.status.message;
     ASSERT_TRUE(chord.status.ok()) << chord.status.message;
-    expect_valid_path(p, chord, o.max_step);
+    expect_valid_path(p, chord, o);
     expect_assignment_kept(p, chord);
-    expect_valid_path(p, full, o.max_step);
+    expect_valid_path(p, full, o);
     if (c.tolerance < 0.0) continue;
     EXPECT_LE(std::abs(chord.steps - full.steps), 1);
     EXPECT_LE((chord.states.back().angles - full.states.back().angles).cwiseAbs().maxCoeff(), c.tolerance);
@@ -301,7 +371,7 @@ TEST(ProjectedFolding, MiuraFoldsAllTheWayFlat) {
   const ProjectedFoldingResult r = fold_projected(p, o);
   ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
   EXPECT_NEAR(r.fraction, 1.0, 1e-9);
-  expect_valid_path(p, r, o.max_step);
+  expect_valid_path(p, r, o);
   // Flat-folded: every crease at ±π.
   EXPECT_NEAR(r.states.back().angles.cwiseAbs().minCoeff(), kPi, 1e-6);
 }

@@ -68,8 +68,13 @@ class LeastNormSolver {
   /// @param jacobian  J, rows × n
   /// @param residual  r, size rows
   /// @param step      set to Δ, size n
+  /// @param refine    one step of iterative refinement on the solve (the default). Without it,
+  ///                  the error is mostly along J's near-null directions, a move along the
+  ///                  manifold to first order: enough for a corrector that goes on with chord
+  ///                  steps, one triangular-solve pair cheaper.
   /// @return false when the factorisation fails or the step is not finite
-  bool min_norm_step(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& residual, Eigen::VectorXd& step);
+  bool min_norm_step(const Eigen::SparseMatrix<double>& jacobian, const Eigen::VectorXd& residual, Eigen::VectorXd& step,
+                     bool refine = true);
 
   /// project_onto_null_space() of the Jacobian last factored (by project_onto_null_space,
   /// min_norm_step or decide_rank), not factoring again: for a caller whose last factorisation
