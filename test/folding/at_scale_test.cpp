@@ -231,10 +231,12 @@ TEST(AtScale, Waterbomb20CurlsIntoATubeWhoseEndsMeet) {
   EXPECT_TRUE(r.replay->status.ok()) << (r.replay->problems.empty() ? "" : r.replay->problems.front());
   EXPECT_EQ(r.replay->collision_count, 0u);
 
-  // One more step of the same size, closed again.
+  // One more step along the last one, as long as the lead-in's (0.01 rad: the steps a collision
+  // is approached with), closed again.
   ASSERT_GE(r.states.size(), 2u);
   const FoldState& last = r.states.back();
-  const FoldState next{2.0 * last.angles - r.states[r.states.size() - 2].angles};
+  const Eigen::VectorXd along = last.angles - r.states[r.states.size() - 2].angles;
+  const FoldState next{last.angles + (0.01 / along.cwiseAbs().maxCoeff()) * along};
   const geometry::ClosureSystem sys(p);
   const geometry::ProjectionResult closed = geometry::project(sys, next);
   ASSERT_TRUE(closed.status.ok()) << closed.status.message;
