@@ -15,7 +15,8 @@ std::unique_ptr<Cli> make_cli() {
   app.require_subcommand(1);
   cli->commands = {add_validate(app), add_info(app),     add_generate(app), add_convert(app),   add_dof(app),
                    add_project(app),  add_simulate(app), add_plan(app),     add_stiffness(app), add_demo(app),
-                   add_hamiltonian(app), add_fold(app), add_bench(app), add_bench_merge(app), add_carpenter(app)};
+                   add_hamiltonian(app), add_fold(app), add_bench(app), add_bench_merge(app), add_carpenter(app),
+                   add_serve(app)};
   return cli;
 }
 

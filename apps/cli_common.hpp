@@ -39,6 +39,7 @@ Command add_carpenter(CLI::App& root);
 Command add_fold(CLI::App& root);
 Command add_bench(CLI::App& root);
 Command add_bench_merge(CLI::App& root);
+Command add_serve(CLI::App& root);
 
 // Usage errors (bad parameters the parser could not catch) are thrown as UsageError → exit 2.
 struct UsageError : std::runtime_error {

@@ -19,7 +19,7 @@ packages=(
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
   libtinyxml2-dev nlohmann-json3-dev libcli11-dev
   libompl-dev libode-dev libfcl-dev libccd-dev
-  coinor-libclp-dev pkg-config
+  coinor-libclp-dev pkg-config libcpp-httplib-dev
   "$@"
 )
 if [ "$demo" -eq 0 ]; then

@@ -1,0 +1,51 @@
+// foldkit serve: the JSON API of docs/SERVE.md on a local HTTP server (cpp-httplib).
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "serve_api.hpp"
+
+// Last: httplib.h brings <resolv.h>, whose macro `_res` breaks Eigen's headers included after it.
+#include <httplib.h>
+
+namespace foldkit::apps {
+
+Command add_serve(CLI::App& root) {
+  struct Options {
+    std::vector<std::string> files;
+    std::string host = "127.0.0.1", root = ".";
+    int port = 8080;
+    double max_body_mb = 16.0, max_plan_time = 60.0;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* app = root.add_subcommand("serve", "Serve the JSON API of the verbs on a local HTTP server (docs/SERVE.md)");
+  app->add_option("files", opt->files, "Files under --root to list as open (GET /api)");
+  app->add_option("--host", opt->host, "Address to listen on (127.0.0.1: this machine only)")->capture_default_str();
+  app->add_option("--port", opt->port, "Port (0: any free one, printed on stderr)")->check(CLI::Range(0, 65535))->capture_default_str();
+  app->add_option("--root", opt->root, "Folder every file a request names lies in")->capture_default_str();
+  app->add_option("--max-body", opt->max_body_mb, "Largest request body, MB")->check(CLI::Range(0.001, 1024.0))->capture_default_str();
+  app->add_option("--max-plan-time", opt->max_plan_time, "Seconds a plan request may ask for at most")
+      ->check(CLI::Range(0.01, 3600.0))
+      ->capture_default_str();
+  return {app, [opt] {
+            ServeOptions o;
+            o.root = opt->root;
+            o.files = opt->files;
+            o.max_body = static_cast<std::size_t>(opt->max_body_mb * 1024 * 1024);
+            o.limits.max_plan_time = opt->max_plan_time;
+            std::unique_ptr<ServeApi> api;
+            try {
+              api = std::make_unique<ServeApi>(o);
+            } catch (const std::invalid_argument& e) {
+              throw UsageError(e.what());
+            }
+            httplib::Server server;
+            api->install(server);
+            const int port = opt->port == 0 ? server.bind_to_any_port(opt->host) : (server.bind_to_port(opt->host, opt->port) ? opt->port : -1);
+            if (port < 0) throw UsageError("cannot listen on " + opt->host + ":" + std::to_string(opt->port));
+            std::cerr << "foldkit serve: http://" << opt->host << ':' << port << "/api (root " << api->paths().root().string()
+                      << "); Ctrl-C stops it" << std::endl;
+            return server.listen_after_bind() ? kOk : kInvalidInput;
+          }};
+}
+
+}  // namespace foldkit::apps

@@ -1,0 +1,168 @@
+#include "serve_api.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_common.hpp"
+#include "foldkit/io/atomic_write.hpp"
+
+// Last: httplib.h brings <resolv.h>, whose macro `_res` breaks Eigen's headers included after it.
+#include <httplib.h>
+
+namespace foldkit::apps {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+void reply(httplib::Response& res, int status, const json& body) {
+  res.status = status;
+  res.set_content(body.dump(2) + "\n", "application/json");
+}
+
+void refuse(httplib::Response& res, int status, const std::string& message, int exit = kUsage) {
+  reply(res, status, {{"error", message}, {"exit", exit}});
+}
+
+// Files a client may write or read as text: the formats foldkit reads and writes.
+bool text_format(const std::string& path) {
+  for (const char* e : {".pmml", ".cmml", ".fold", ".svg", ".loadcase", ".json", ".csv"})
+    if (has_extension(path, e)) return true;
+  return false;
+}
+
+std::string content_type(const std::string& path) {
+  if (has_extension(path, ".svg")) return "image/svg+xml";
+  if (has_extension(path, ".fold") || has_extension(path, ".json")) return "application/json";
+  if (has_extension(path, ".pmml") || has_extension(path, ".cmml")) return "application/xml";
+  return "text/plain";
+}
+
+// The CLI's messages name files by the absolute paths the server passed; a client named them
+// relative to the root.
+std::string relative_messages(std::string text, const RootedPaths& paths) {
+  const std::string prefix = paths.root().string() + "/";
+  for (std::size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
+  return text;
+}
+
+std::string first_line(const std::string& text) {
+  const auto end = text.find('\n');
+  return end == std::string::npos ? text : text.substr(0, end);
+}
+
+json listing(const fs::path& folder, const RootedPaths& paths) {
+  json entries = json::array();
+  std::vector<fs::directory_entry> all(fs::directory_iterator(folder), fs::directory_iterator{});
+  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.path().filename() < b.path().filename(); });
+  for (const auto& e : all) {
+    std::error_code ec;
+    if (e.is_symlink(ec)) continue;  // links may lead out of the root; they are not listed
+    if (e.is_directory(ec)) {
+      entries.push_back({{"name", e.path().filename().string()}, {"type", "folder"}});
+    } else if (e.is_regular_file(ec)) {
+      entries.push_back({{"name", e.path().filename().string()}, {"type", "file"}, {"bytes", e.file_size(ec)}});
+    }
+  }
+  return {{"folder", paths.relative(folder) == "." ? "" : paths.relative(folder)}, {"entries", entries}};
+}
+
+}  // namespace
+
+ServeApi::ServeApi(ServeOptions options) : options_(std::move(options)), paths_(options_.root) {
+  for (const auto& f : options_.files) {
+    try {
+      files_.push_back(paths_.relative(paths_.input(f)));
+    } catch (const PathRefused& e) {
+      throw std::invalid_argument(e.what());
+    }
+  }
+}
+
+void ServeApi::install(httplib::Server& server) {
+  server.set_payload_max_length(options_.max_body);
+
+  server.Get("/api", [this](const httplib::Request&, httplib::Response& res) {
+    json verbs = json::array();
+    for (const auto& v : served_verbs()) verbs.push_back(v.verb);
+    reply(res, 200, {{"foldkit", "0.1.0"}, {"verbs", verbs}, {"files", files_}, {"max_body", options_.max_body},
+                     {"max_plan_time", options_.limits.max_plan_time}});
+  });
+
+  server.Get("/api/files", [this](const httplib::Request& req, httplib::Response& res) {
+    try {
+      reply(res, 200, listing(paths_.folder(req.get_param_value("folder")), paths_));
+    } catch (const PathRefused& e) {
+      refuse(res, e.missing ? 404 : 400, e.what());
+    }
+  });
+
+  server.Get("/api/file", [this](const httplib::Request& req, httplib::Response& res) {
+    try {
+      const std::string name = req.get_param_value("path");
+      const fs::path p = paths_.input(name);
+      if (fs::file_size(p) > options_.max_file) return refuse(res, 413, name + ": larger than the server returns", kInvalidInput);
+      std::ifstream in(p, std::ios::binary);
+      std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      res.set_content(content, content_type(name));
+    } catch (const PathRefused& e) {
+      refuse(res, e.missing ? 404 : 400, e.what());
+    }
+  });
+
+  server.Put("/api/file", [this](const httplib::Request& req, httplib::Response& res) {
+    try {
+      const std::string name = req.get_param_value("path");
+      if (!text_format(name))
+        return refuse(res, 400, name + ": the server writes only .pmml, .cmml, .fold, .svg, .loadcase, .json and .csv files");
+      const fs::path p = paths_.output(name);
+      io::write_file_atomic(p.string(), req.body);
+      reply(res, 200, {{"written", paths_.relative(p)}, {"bytes", req.body.size()}});
+    } catch (const PathRefused& e) {
+      refuse(res, e.missing ? 404 : 400, e.what());
+    } catch (const io::WriteError& e) {
+      refuse(res, 500, relative_messages(e.what(), paths_), kInvalidInput);
+    }
+  });
+
+  server.Post(R"(/api/([a-z]+))", [this](const httplib::Request& req, httplib::Response& res) {
+    const std::string verb = req.matches[1];
+    const VerbSpec* spec = find_served_verb(verb);
+    if (!spec) return refuse(res, 404, verb + ": not a verb the server runs");
+    json request;
+    try {
+      request = req.body.empty() ? json::object() : json::parse(req.body);
+    } catch (const json::parse_error& e) {
+      return refuse(res, 400, std::string("the request body is not JSON: ") + e.what());
+    }
+    std::vector<std::string> words;
+    try {
+      words = command_line(*spec, request, paths_, options_.limits);
+    } catch (const PathRefused& e) {
+      return refuse(res, e.missing ? 404 : 400, e.what(), kInvalidInput);
+    } catch (const UsageError& e) {
+      return refuse(res, 400, verb + ": " + e.what());
+    }
+    std::unique_lock<std::mutex> lock(job_, std::try_to_lock);
+    if (!lock.owns_lock()) return refuse(res, 503, "busy: another verb is running; try again when it has finished", kUsage);
+    const VerbRun run = run_captured(words);
+    lock.unlock();
+    const std::string log = relative_messages(run.err, paths_);
+    if (run.exit == kInvalidInput || run.exit == kUsage) return refuse(res, 400, first_line(log), run.exit);
+    json body = {{"verb", verb}, {"exit", run.exit}, {"log", log}};
+    if (spec->json) {
+      try {
+        body["result"] = json::parse(relative_messages(run.out, paths_));
+      } catch (const json::parse_error&) {
+        return refuse(res, 500, verb + " printed no JSON object", kInvalidInput);
+      }
+    }
+    reply(res, 200, body);
+  });
+}
+
+}  // namespace foldkit::apps

@@ -1,0 +1,43 @@
+#pragma once
+// The JSON API of `foldkit serve` (docs/SERVE.md) on a cpp-httplib server.
+#include <cstddef>
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "serve_paths.hpp"
+#include "serve_verbs.hpp"
+
+namespace httplib {
+class Server;
+}
+
+namespace foldkit::apps {
+
+struct ServeOptions {
+  std::filesystem::path root = ".";     // every file a request names is under it
+  std::size_t max_body = 16u << 20;     // bytes of a request body; larger ones are refused (413)
+  std::size_t max_file = 64u << 20;     // bytes a GET /api/file returns at most
+  WorkLimits limits;
+  std::vector<std::string> files;       // files named on the command line (under root), listed by GET /api
+};
+
+class ServeApi {
+ public:
+  // Throws std::invalid_argument when the root is not a folder or a file is not under it.
+  explicit ServeApi(ServeOptions options);
+
+  // Installs the routes and the body limit on `server`.
+  void install(httplib::Server& server);
+
+  const RootedPaths& paths() const { return paths_; }
+
+ private:
+  ServeOptions options_;
+  RootedPaths paths_;
+  std::vector<std::string> files_;  // options_.files, relative to the root
+  std::mutex job_;                  // one verb at a time: run_captured owns the process's streams
+};
+
+}  // namespace foldkit::apps

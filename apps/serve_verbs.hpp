@@ -1,0 +1,68 @@
+#pragma once
+// The verbs `foldkit serve` runs for a request: which arguments each accepts, how a JSON request
+// becomes its command line, and running it in this process so that the answer is exactly the
+// CLI's (the same code, the same JSON, the same exit code and messages).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "serve_paths.hpp"
+
+namespace foldkit::apps {
+
+// How a request's value for an argument is checked and passed on.
+enum class ArgKind {
+  Number,        // a finite JSON number → --name=VALUE
+  Integer,       // a JSON integer → --name=VALUE
+  Text,          // a JSON string → --name=VALUE
+  Texts,         // a JSON array of strings → --name=VALUE for each
+  Flag,          // true → --name; false → nothing
+  Input,         // a file under the root that exists
+  Inputs,        // an array of such files
+  Output,        // a file under the root the verb writes
+  OutputFolder,  // a folder under the root the verb writes into
+};
+
+struct ArgSpec {
+  std::string name;         // the CLI's option name without dashes, or the positional's name
+  ArgKind kind;
+  bool positional = false;  // passed in order, before the options
+  bool required = false;
+};
+
+struct VerbSpec {
+  std::string verb;
+  std::vector<ArgSpec> args;
+  bool json = true;  // the verb has --json (convert has not)
+};
+
+// The verbs a server runs: validate, info, dof, project, simulate, fold, plan, stiffness, convert.
+const std::vector<VerbSpec>& served_verbs();
+// nullptr for a verb the server does not run.
+const VerbSpec* find_served_verb(const std::string& verb);
+
+// Limits on the work one request may ask for.
+struct WorkLimits {
+  double max_plan_time = 60.0;  // seconds: plan's --time is capped to it
+};
+
+// The command line (without the program name) for `spec` from a request object {name: value}.
+// Throws UsageError for an unknown or missing argument or a value of the wrong type, PathRefused
+// for a path outside the root.
+std::vector<std::string> command_line(const VerbSpec& spec, const nlohmann::json& request, const RootedPaths& paths,
+                                      const WorkLimits& limits);
+
+// What one run of the CLI printed, and its exit code.
+struct VerbRun {
+  int exit = 0;
+  std::string out;  // stdout: the --json object
+  std::string err;  // stderr: messages and progress
+};
+
+// Runs the CLI on `args` in this process, with std::cout and std::cerr captured. They are the
+// process's streams, so runs must not overlap, and nothing else may print meanwhile: the server
+// runs one at a time.
+VerbRun run_captured(const std::vector<std::string>& args);
+
+}  // namespace foldkit::apps

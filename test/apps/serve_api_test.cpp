@@ -1,0 +1,340 @@
+// foldkit serve: the JSON API of docs/SERVE.md, driven over HTTP (cpp-httplib's client) against
+// a `foldkit serve` process. Oracles: the CLI's own --json output and files on the same inputs
+// (the API must answer exactly as the verbs do), the file system (what was written where), and
+// HTTP status codes for what must be refused.
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+#include <httplib.h>  // last: its <resolv.h> macros would break headers included after it
+
+namespace {
+
+namespace fs = std::filesystem;
+using foldkit::test::foldkit;
+using foldkit::test::slurp;
+using nlohmann::json;
+
+// A `foldkit serve --port 0` process on its own root folder, stopped (SIGTERM, then SIGKILL) at
+// the end of the test.
+class Server {
+ public:
+  explicit Server(const std::string& name, const std::vector<std::string>& extra = {})
+      : root_(foldkit::test::temp_dir() + "/serve-" + name), log_(root_ + ".log") {
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+    std::vector<std::string> args = {foldkit::test::cli_path(), "serve", "--port", "0", "--root", root_};
+    args.insert(args.end(), extra.begin(), extra.end());
+    pid_ = fork();
+    if (pid_ == 0) {
+      const int fd = open(log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      dup2(fd, 1);
+      dup2(fd, 2);
+      std::vector<char*> argv;
+      for (auto& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      execv(argv[0], argv.data());
+      _exit(127);
+    }
+    // The port it chose is on its first line.
+    for (int i = 0; i < 200 && port_ == 0; ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      const std::string text = slurp(log_);
+      const auto at = text.find("http://127.0.0.1:");
+      if (at != std::string::npos && text.find('/', at + 17) != std::string::npos) port_ = std::stoi(text.substr(at + 17));
+    }
+  }
+  ~Server() {
+    kill(pid_, SIGTERM);
+    for (int i = 0; i < 100; ++i) {
+      if (waitpid(pid_, nullptr, WNOHANG) == pid_) return;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    kill(pid_, SIGKILL);
+    waitpid(pid_, nullptr, 0);
+  }
+  Server(const Server&) = delete;
+  Server& operator=(const Server&) = delete;
+
+  int port() const { return port_; }
+  const std::string& root() const { return root_; }
+  std::string path(const std::string& name) const { return root_ + "/" + name; }
+  std::string log() const { return slurp(log_); }
+
+  httplib::Result post(const std::string& verb, const json& body) const {
+    httplib::Client c("127.0.0.1", port_);
+    c.set_read_timeout(120, 0);
+    return c.Post(("/api/" + verb).c_str(), body.dump(), "application/json");
+  }
+  httplib::Client client() const {
+    httplib::Client c("127.0.0.1", port_);
+    c.set_read_timeout(120, 0);
+    return c;
+  }
+
+ private:
+  std::string root_, log_;
+  pid_t pid_ = -1;
+  int port_ = 0;
+};
+
+// The CLI's --json with the server's root taken out of paths and the wall-clock keys dropped, as
+// the API's result should be.
+json comparable(json j, const std::string& root) {
+  j = json::parse([&] {
+    std::string text = j.dump();
+    const std::string prefix = root + "/";
+    for (std::size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
+    return text;
+  }());
+  for (const char* key : {"time", "seconds", "planner_time", "wall_time"}) j.erase(key);
+  return j;
+}
+
+// A CMML of one event that folds joint ID to angle (degrees) for each pair.
+std::string one_event(const std::vector<std::pair<int, double>>& folds) {
+  std::string text = "<?xml version=\"1.0\"?>\n<CMML><Title>test</Title>";
+  for (const auto& [id, angle] : folds)
+    text += "<Fold><EventNumber>1</EventNumber><ID>" + std::to_string(id) + "</ID><FoldAngle>" + std::to_string(angle) +
+            "</FoldAngle><Velocity>30</Velocity></Fold>";
+  return text + "</CMML>\n";
+}
+
+void generate(const Server& s, const std::vector<std::string>& what, const std::string& name) {
+  std::vector<std::string> args = {"generate"};
+  args.insert(args.end(), what.begin(), what.end());
+  args.insert(args.end(), {"-o", s.path(name)});
+  ASSERT_EQ(foldkit(args).exit, 0) << name;
+}
+
+TEST(ServeApi, StartsOnThisMachineOnlyAndListsItsVerbs) {
+  Server s("start");
+  ASSERT_GT(s.port(), 0) << s.log();
+  const auto r = s.client().Get("/api");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  const json j = json::parse(r->body);
+  EXPECT_EQ(j["verbs"], json({"validate", "info", "dof", "project", "simulate", "fold", "plan", "stiffness", "convert"}));
+  EXPECT_NE(s.log().find("http://127.0.0.1:"), std::string::npos);
+}
+
+// Every verb answers with the CLI's JSON for the same files, and writes the same files.
+TEST(ServeApi, EveryVerbAnswersAsTheCliDoes) {
+  Server s("verbs");
+  ASSERT_GT(s.port(), 0) << s.log();
+  generate(s, {"miura", "--rows", "3", "--cols", "3"}, "m3.pmml");
+  generate(s, {"strip", "--panels", "4"}, "strip.pmml");
+  fs::copy_file(FOLDKIT_TEST_DATA "/good/strip-tip.loadcase", s.path("tip.loadcase"));
+  ASSERT_EQ(foldkit({"fold", s.path("m3.pmml"), "--fraction", "0.5", "-o", s.path("goal.cmml")}).exit, 0);
+
+  struct Case {
+    std::string verb;
+    json request;
+    std::vector<std::string> cli;      // the same, on the command line ("@NAME": a file under the root)
+    std::vector<std::string> written;  // files both write, compared byte for byte
+  };
+  const std::vector<Case> cases = {
+      {"validate", {{"files", {"m3.pmml", "goal.cmml"}}, {"pattern", "m3.pmml"}}, {"validate", "@m3.pmml", "@goal.cmml", "--pattern", "@m3.pmml"}, {}},
+      {"info", {{"pattern", "m3.pmml"}}, {"info", "@m3.pmml"}, {}},
+      {"dof", {{"pattern", "m3.pmml"}, {"state", "goal.cmml"}}, {"dof", "@m3.pmml", "--state", "@goal.cmml"}, {}},
+      {"project", {{"pattern", "m3.pmml"}, {"state", "goal.cmml"}, {"output", "p.cmml"}}, {"project", "@m3.pmml", "--state", "@goal.cmml", "-o", "@p.cmml"}, {"p.cmml"}},
+      {"simulate", {{"pattern", "m3.pmml"}, {"sequence", "goal.cmml"}, {"frames", "t.fold"}}, {"simulate", "@m3.pmml", "@goal.cmml", "--frames", "@t.fold"}, {"t.fold"}},
+      {"fold", {{"pattern", "m3.pmml"}, {"fraction", 0.4}, {"no-collision", true}, {"output", "f.cmml"}}, {"fold", "@m3.pmml", "--fraction", "0.4", "--no-collision", "-o", "@f.cmml"}, {"f.cmml"}},
+      {"plan", {{"pattern", "m3.pmml"}, {"goal", "goal.cmml"}, {"seed", 3}, {"output", "plan.cmml"}}, {"plan", "@m3.pmml", "--goal", "@goal.cmml", "--seed", "3", "-o", "@plan.cmml"}, {"plan.cmml"}},
+      {"stiffness", {{"pattern", "strip.pmml"}, {"loadcase", "tip.loadcase"}}, {"stiffness", "@strip.pmml", "@tip.loadcase"}, {}},
+      {"convert", {{"input", "m3.pmml"}, {"output", "m3.fold"}}, {"convert", "@m3.pmml", "@m3.fold"}, {"m3.fold"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.verb);
+    const auto r = s.post(c.verb, c.request);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    const json api = json::parse(r->body);
+    EXPECT_EQ(api["verb"], c.verb);
+    std::map<std::string, std::string> by_api;
+    for (const auto& w : c.written) by_api[w] = slurp(s.path(w));
+    std::vector<std::string> args;  // "@NAME" is a file under the root
+    for (const auto& a : c.cli) args.push_back(a[0] == '@' ? s.path(a.substr(1)) : a);
+    const bool json_verb = c.verb != "convert";
+    if (json_verb) args.push_back("--json");
+    const auto cli = foldkit(args);
+    EXPECT_EQ(api["exit"].get<int>(), cli.exit) << cli.err;
+    if (json_verb) EXPECT_EQ(comparable(api["result"], s.root()), comparable(json::parse(cli.out), s.root()));
+    for (const auto& w : c.written) EXPECT_EQ(by_api[w], slurp(s.path(w))) << w;
+  }
+}
+
+// Bad input is the CLI's FILE:LINE: message, relative to the root, as HTTP 400; a missing file
+// 404; a verb that runs but finds the sequence invalid answers 200 with the CLI's exit code 3.
+TEST(ServeApi, BadInputIsTheClisMessageAsA400) {
+  Server s("bad");
+  ASSERT_GT(s.port(), 0) << s.log();
+  fs::copy_file(FOLDKIT_TEST_DATA "/bad/truncated.pmml", s.path("truncated.pmml"));
+  const auto cli = foldkit({"info", s.path("truncated.pmml")});
+  ASSERT_EQ(cli.exit, 1);
+  const auto r = s.post("info", {{"pattern", "truncated.pmml"}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  const json j = json::parse(r->body);
+  EXPECT_EQ(j["exit"], 1);
+  const std::string message = j["error"];
+  EXPECT_EQ(message.rfind("truncated.pmml:", 0), 0u) << message;
+  EXPECT_EQ(s.root() + "/" + message, cli.err.substr(0, cli.err.find('\n'))) << message;
+
+  const auto missing = s.post("info", {{"pattern", "nope.pmml"}});
+  ASSERT_TRUE(missing);
+  EXPECT_EQ(missing->status, 404);
+
+  generate(s, {"miura", "--rows", "3", "--cols", "3"}, "m3.pmml");
+  // A strip folded through itself: the simulator's verdict is a result (exit 3), not an error.
+  generate(s, {"strip", "--panels", "3"}, "strip.pmml");
+  std::ofstream(s.path("through.cmml")) << one_event({{1, 170}, {2, 170}});
+  const auto sim_cli = foldkit({"simulate", s.path("strip.pmml"), s.path("through.cmml"), "--json"});
+  const auto sim = s.post("simulate", {{"pattern", "strip.pmml"}, {"sequence", "through.cmml"}});
+  ASSERT_TRUE(sim);
+  ASSERT_EQ(sim_cli.exit, 3) << sim_cli.err;
+  EXPECT_EQ(sim->status, 200) << sim->body;
+  EXPECT_EQ(json::parse(sim->body)["exit"], 3);
+}
+
+TEST(ServeApi, RequestsOfTheWrongShapeAreRefused) {
+  Server s("shape");
+  ASSERT_GT(s.port(), 0) << s.log();
+  generate(s, {"miura", "--rows", "2", "--cols", "2"}, "m2.pmml");
+  const auto status = [&](const std::string& verb, const std::string& body) {
+    const auto r = s.client().Post(("/api/" + verb).c_str(), body, "application/json");
+    return r ? r->status : -1;
+  };
+  EXPECT_EQ(status("carpenter", "{}"), 404);                                   // not served
+  EXPECT_EQ(status("info", "{\"pattern\": "), 400);                            // not JSON
+  EXPECT_EQ(status("info", "[1, 2]"), 400);                                    // not an object
+  EXPECT_EQ(status("info", "{}"), 400);                                        // pattern missing
+  EXPECT_EQ(status("info", R"({"pattern": "m2.pmml", "colour": 1})"), 400);    // no such argument
+  EXPECT_EQ(status("fold", R"({"pattern": "m2.pmml", "fraction": "half", "output": "x.cmml"})"), 400);  // wrong type
+  EXPECT_EQ(status("fold", R"({"pattern": "m2.pmml", "fraction": 2, "output": "x.cmml"})"), 400);       // the CLI's range
+  EXPECT_EQ(status("info", R"({"pattern": "m2.pmml"})"), 200);
+  EXPECT_FALSE(fs::exists(s.path("x.cmml")));
+}
+
+// Nothing outside the root is read, written or listed: absolute paths, "..", and links that lead
+// out are refused.
+TEST(ServeApi, PathsOutsideTheRootAreRefused) {
+  Server s("paths");
+  ASSERT_GT(s.port(), 0) << s.log();
+  const std::string outside = s.root() + "-outside";
+  fs::remove_all(outside);
+  fs::create_directories(outside);
+  ASSERT_EQ(foldkit({"generate", "miura", "--rows", "2", "--cols", "2", "-o", outside + "/secret.pmml"}).exit, 0);
+  fs::create_symlink(outside + "/secret.pmml", s.path("link.pmml"));
+  fs::create_directory_symlink(outside, s.path("out"));
+  generate(s, {"miura", "--rows", "2", "--cols", "2"}, "m2.pmml");
+
+  for (const std::string& bad : std::vector<std::string>{outside + "/secret.pmml", "../serve-paths-outside/secret.pmml", "link.pmml", "out/secret.pmml"}) {
+    SCOPED_TRACE(bad);
+    const auto r = s.post("info", {{"pattern", bad}});
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 400) << r->body;
+    const auto get = s.client().Get(("/api/file?path=" + httplib::detail::encode_query_param(bad)).c_str());
+    ASSERT_TRUE(get);
+    EXPECT_EQ(get->status, 400) << get->body;
+  }
+  for (const std::string& bad : std::vector<std::string>{outside + "/new.cmml", "../new.cmml", "out/new.cmml", "link.pmml"}) {
+    SCOPED_TRACE(bad);
+    const auto fold = s.post("fold", {{"pattern", "m2.pmml"}, {"fraction", 0.3}, {"output", bad}});
+    ASSERT_TRUE(fold);
+    EXPECT_EQ(fold->status, 400) << fold->body;
+    const auto put = s.client().Put(("/api/file?path=" + httplib::detail::encode_query_param(bad)).c_str(), "x", "text/plain");
+    ASSERT_TRUE(put);
+    EXPECT_EQ(put->status, 400) << put->body;
+  }
+  EXPECT_FALSE(fs::exists(outside + "/new.cmml"));
+  EXPECT_EQ(fs::read_symlink(s.path("link.pmml")), outside + "/secret.pmml");  // the link itself untouched
+  const auto listing = s.client().Get("/api/files?folder=out");
+  ASSERT_TRUE(listing);
+  EXPECT_EQ(listing->status, 400);
+  const auto top = json::parse(s.client().Get("/api/files")->body);
+  for (const auto& e : top["entries"]) EXPECT_NE(e["name"], "link.pmml");  // links are not listed
+}
+
+// Files go in and out whole: PUT writes atomically (only foldkit's formats), GET returns the bytes.
+TEST(ServeApi, FilesAreWrittenAndReadWhole) {
+  Server s("files");
+  ASSERT_GT(s.port(), 0) << s.log();
+  ASSERT_EQ(foldkit({"generate", "miura", "--rows", "2", "--cols", "2", "-o", s.root() + "-m2.pmml"}).exit, 0);
+  const std::string pmml = slurp(s.root() + "-m2.pmml");
+  fs::create_directories(s.path("work"));
+  const auto put = s.client().Put("/api/file?path=work/m2.pmml", pmml, "application/xml");
+  ASSERT_TRUE(put);
+  ASSERT_EQ(put->status, 200) << put->body;
+  EXPECT_EQ(slurp(s.path("work/m2.pmml")), pmml);
+  const auto get = s.client().Get("/api/file?path=work/m2.pmml");
+  ASSERT_TRUE(get);
+  EXPECT_EQ(get->status, 200);
+  EXPECT_EQ(get->body, pmml);
+  const auto listing = json::parse(s.client().Get("/api/files?folder=work")->body);
+  ASSERT_EQ(listing["entries"].size(), 1u);
+  EXPECT_EQ(listing["entries"][0]["name"], "m2.pmml");
+  EXPECT_EQ(listing["entries"][0]["bytes"], pmml.size());
+  const auto info = s.post("info", {{"pattern", "work/m2.pmml"}});
+  EXPECT_EQ(info->status, 200);
+  EXPECT_EQ(s.client().Put("/api/file?path=run.sh", "echo", "text/plain")->status, 400);  // not a foldkit format
+  EXPECT_EQ(s.client().Put("/api/file?path=nofolder/m.pmml", pmml, "application/xml")->status, 404);
+  EXPECT_EQ(s.client().Get("/api/file?path=none.pmml")->status, 404);
+  EXPECT_FALSE(fs::exists(s.path("run.sh")));
+}
+
+// Bodies beyond --max-body are refused before anything runs (413).
+TEST(ServeApi, OversizedBodiesAreRefused) {
+  Server s("size", {"--max-body", "0.01"});  // 10 KB
+  ASSERT_GT(s.port(), 0) << s.log();
+  const std::string big(20000, 'x');
+  const auto put = s.client().Put("/api/file?path=big.svg", big, "image/svg+xml");
+  ASSERT_TRUE(put);
+  EXPECT_EQ(put->status, 413);
+  EXPECT_FALSE(fs::exists(s.path("big.svg")));
+  const auto post = s.client().Post("/api/info", "{\"pattern\": \"" + big + "\"}", "application/json");
+  ASSERT_TRUE(post);
+  EXPECT_EQ(post->status, 413);
+  EXPECT_EQ(s.client().Put("/api/file?path=small.svg", "<svg/>", "image/svg+xml")->status, 200);
+}
+
+// One verb at a time: a request while a plan runs is told the server is busy (503) at once, and
+// a plan asks for at most --max-plan-time seconds.
+TEST(ServeApi, OneVerbAtATimeAndPlansAreTimeLimited) {
+  Server s("busy", {"--max-plan-time", "1.5"});
+  ASSERT_GT(s.port(), 0) << s.log();
+  generate(s, {"single-vertex", "--sectors", "90,60,90,60,60"}, "v.pmml");
+  std::ofstream(s.path("guess.cmml")) << one_event({{1, 28}, {2, -23}, {3, 28}, {4, 17}, {5, -17}});
+  ASSERT_EQ(foldkit({"project", s.path("v.pmml"), "--state", s.path("guess.cmml"), "-o", s.path("goal.cmml")}).exit, 0);
+  const auto start = std::chrono::steady_clock::now();
+  std::thread slow([&] {
+    // Steps of 1e-7 rad: RRTConnect finds nothing and runs its whole (capped) time.
+    const auto r = s.post("plan", {{"pattern", "v.pmml"}, {"goal", "goal.cmml"}, {"param", {"range=1e-7"}}, {"no-fallback", true},
+                                   {"time", 30}, {"output", "never.cmml"}});
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200) << r->body;
+    EXPECT_EQ(json::parse(r->body)["exit"], 4);
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  const auto busy = s.post("info", {{"pattern", "v.pmml"}});
+  ASSERT_TRUE(busy);
+  EXPECT_EQ(busy->status, 503) << busy->body;
+  slow.join();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 10.0);  // 1.5 s of planning, not the 30 asked for
+  EXPECT_GT(seconds, 1.4);
+  EXPECT_EQ(s.post("info", {{"pattern", "v.pmml"}})->status, 200);
+}
+
+}  // namespace
