@@ -85,6 +85,12 @@ ServeApi::ServeApi(ServeOptions options) : options_(std::move(options)), paths_(
 
 void ServeApi::install(httplib::Server& server) {
   server.set_payload_max_length(options_.max_body);
+  // httplib's default also sets SO_REUSEPORT, with which a second server binds a port that is in
+  // use and the two share its requests; a port in use must be an error.
+  server.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
+  });
 
   server.Get("/api", [this](const httplib::Request&, httplib::Response& res) {
     json verbs = json::array();

@@ -127,6 +127,13 @@ TEST(ServeApi, StartsOnThisMachineOnlyAndListsItsVerbs) {
   const json j = json::parse(r->body);
   EXPECT_EQ(j["verbs"], json({"validate", "info", "dof", "project", "simulate", "fold", "plan", "stiffness", "convert"}));
   EXPECT_NE(s.log().find("http://127.0.0.1:"), std::string::npos);
+  // A second server on the same port is an error, not a silent sharer of its requests.
+  const auto second = foldkit({"serve", "--port", std::to_string(s.port()), "--root", s.root()});
+  EXPECT_EQ(second.exit, 2) << second.err;
+  EXPECT_NE(second.err.find("cannot listen"), std::string::npos) << second.err;
+  // Bad roots and files outside the root are usage errors.
+  EXPECT_EQ(foldkit({"serve", "--root", s.root() + "/none"}).exit, 2);
+  EXPECT_EQ(foldkit({"serve", "none.pmml", "--root", s.root()}).exit, 2);
 }
 
 // Every verb answers with the CLI's JSON for the same files, and writes the same files.
