@@ -14,7 +14,7 @@ Command add_serve(CLI::App& root) {
     std::vector<std::string> files;
     std::string host = "127.0.0.1", root = ".";
     int port = 8080;
-    double max_body_mb = 16.0, max_plan_time = 60.0;
+    double max_body_mb = 16.0, max_plan_time = 60.0, max_time = 300.0;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("serve", "Serve the JSON API of the verbs on a local HTTP server (docs/SERVE.md)");
@@ -26,12 +26,16 @@ Command add_serve(CLI::App& root) {
   app->add_option("--max-plan-time", opt->max_plan_time, "Seconds a plan request may ask for at most")
       ->check(CLI::Range(0.01, 3600.0))
       ->capture_default_str();
+  app->add_option("--max-time", opt->max_time, "Seconds a verb may run before it is stopped (HTTP 504)")
+      ->check(CLI::Range(0.1, 86400.0))
+      ->capture_default_str();
   return {app, [opt] {
             ServeOptions o;
             o.root = opt->root;
             o.files = opt->files;
             o.max_body = static_cast<std::size_t>(opt->max_body_mb * 1024 * 1024);
             o.limits.max_plan_time = opt->max_plan_time;
+            o.limits.max_time = opt->max_time;
             std::unique_ptr<ServeApi> api;
             try {
               api = std::make_unique<ServeApi>(o);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +27,24 @@ void reply(httplib::Response& res, int status, const json& body) {
 
 void refuse(httplib::Response& res, int status, const std::string& message, int exit = kUsage) {
   reply(res, status, {{"error", message}, {"exit", exit}});
+}
+
+// A refused path: 404 (exit 1, as the CLI for a missing file) or 400 (exit 2: the request's fault).
+void refuse(httplib::Response& res, const PathRefused& e) { refuse(res, e.missing ? 404 : 400, e.what(), e.missing ? kInvalidInput : kUsage); }
+
+// Form encodings make httplib read the body as fields (and cap it at 8 KB); a file or a request
+// object is sent as it is.
+bool form_encoded(const httplib::Request& req) {
+  const std::string type = req.get_header_value("Content-Type");
+  return type.rfind("multipart/form-data", 0) == 0 || type.rfind("application/x-www-form-urlencoded", 0) == 0;
+}
+
+// A JSON body nested at most 64 deep (deeper values would be copied and printed recursively).
+json parse_request(const std::string& body) {
+  return json::parse(body, [](int depth, json::parse_event_t, json&) {
+    if (depth > 64) throw std::invalid_argument("nested more than 64 deep");
+    return true;
+  });
 }
 
 // Files a client may write or read as text: the formats foldkit reads and writes.
@@ -73,7 +92,7 @@ json listing(const fs::path& folder, const RootedPaths& paths) {
 
 }  // namespace
 
-ServeApi::ServeApi(ServeOptions options) : options_(std::move(options)), paths_(options_.root) {
+ServeApi::ServeApi(ServeOptions options) : options_(std::move(options)), paths_(options_.root), executable_(this_executable()) {
   for (const auto& f : options_.files) {
     try {
       files_.push_back(paths_.relative(paths_.input(f)));
@@ -92,6 +111,28 @@ void ServeApi::install(httplib::Server& server) {
     setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
   });
 
+  // A handler that throws (out of memory, a file system error) answers 500 with the reason; the
+  // server goes on.
+  server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
+    std::string what = "internal error";
+    try {
+      std::rethrow_exception(ep);
+    } catch (const std::exception& e) {
+      what += std::string(": ") + e.what();
+    } catch (...) {
+    }
+    refuse(res, 500, what, kInvalidInput);
+  });
+
+  // Unknown paths and httplib's own refusals (413 and the like) answer in JSON too.
+  server.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
+    if (!res.body.empty()) return;
+    const std::string why = res.status == 404 ? req.path + ": no such endpoint (see GET /api)"
+                          : res.status == 413 ? "the request body is larger than the server accepts (foldkit serve --max-body)"
+                                              : "HTTP " + std::to_string(res.status);
+    refuse(res, res.status, why);
+  });
+
   server.Get("/api", [this](const httplib::Request&, httplib::Response& res) {
     json verbs = json::array();
     for (const auto& v : served_verbs()) verbs.push_back(v.verb);
@@ -103,7 +144,7 @@ void ServeApi::install(httplib::Server& server) {
     try {
       reply(res, 200, listing(paths_.folder(req.get_param_value("folder")), paths_));
     } catch (const PathRefused& e) {
-      refuse(res, e.missing ? 404 : 400, e.what());
+      refuse(res, e);
     }
   });
 
@@ -116,12 +157,13 @@ void ServeApi::install(httplib::Server& server) {
       std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
       res.set_content(content, content_type(name));
     } catch (const PathRefused& e) {
-      refuse(res, e.missing ? 404 : 400, e.what());
+      refuse(res, e);
     }
   });
 
   server.Put("/api/file", [this](const httplib::Request& req, httplib::Response& res) {
     try {
+      if (form_encoded(req)) return refuse(res, 400, "send the file's bytes as the body, not as a form (Content-Type: " + req.get_header_value("Content-Type") + ")");
       const std::string name = req.get_param_value("path");
       if (!text_format(name))
         return refuse(res, 400, name + ": the server writes only .pmml, .cmml, .fold, .svg, .loadcase, .json and .csv files");
@@ -129,7 +171,7 @@ void ServeApi::install(httplib::Server& server) {
       io::write_file_atomic(p.string(), req.body);
       reply(res, 200, {{"written", paths_.relative(p)}, {"bytes", req.body.size()}});
     } catch (const PathRefused& e) {
-      refuse(res, e.missing ? 404 : 400, e.what());
+      refuse(res, e);
     } catch (const io::WriteError& e) {
       refuse(res, 500, relative_messages(e.what(), paths_), kInvalidInput);
     }
@@ -141,22 +183,29 @@ void ServeApi::install(httplib::Server& server) {
     if (!spec) return refuse(res, 404, verb + ": not a verb the server runs");
     json request;
     try {
-      request = req.body.empty() ? json::object() : json::parse(req.body);
-    } catch (const json::parse_error& e) {
-      return refuse(res, 400, std::string("the request body is not JSON: ") + e.what());
+      request = req.body.empty() ? json::object() : parse_request(req.body);
+    } catch (const std::exception& e) {
+      return refuse(res, 400, std::string("the request body is not a JSON object: ") + e.what());
     }
     std::vector<std::string> words;
     try {
       words = command_line(*spec, request, paths_, options_.limits);
     } catch (const PathRefused& e) {
-      return refuse(res, e.missing ? 404 : 400, e.what(), kInvalidInput);
+      return refuse(res, e);
     } catch (const UsageError& e) {
       return refuse(res, 400, verb + ": " + e.what());
     }
     std::unique_lock<std::mutex> lock(job_, std::try_to_lock);
     if (!lock.owns_lock()) return refuse(res, 503, "busy: another verb is running; try again when it has finished", kUsage);
-    const VerbRun run = run_captured(words);
+    const VerbRun run = run_verb(executable_, words, options_.limits.max_time);
     lock.unlock();
+    if (run.timed_out) {
+      std::ostringstream out;
+      out << verb << ": stopped after the server's limit of " << options_.limits.max_time << " s (foldkit serve --max-time)";
+      return refuse(res, 504, out.str(), kInvalidInput);
+    }
+    if (run.flooded) return refuse(res, 500, verb + ": stopped for printing more than the server keeps", kInvalidInput);
+    if (run.exit < 0) return refuse(res, 500, verb + ": ended by signal " + std::to_string(run.signal), kInvalidInput);
     const std::string log = relative_messages(run.err, paths_);
     if (run.exit == kInvalidInput || run.exit == kUsage) return refuse(res, 400, first_line(log), run.exit);
     json body = {{"verb", verb}, {"exit", run.exit}, {"log", log}};

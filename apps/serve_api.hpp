@@ -37,7 +37,8 @@ class ServeApi {
   ServeOptions options_;
   RootedPaths paths_;
   std::vector<std::string> files_;  // options_.files, relative to the root
-  std::mutex job_;                  // one verb at a time: run_captured owns the process's streams
+  std::string executable_;          // the foldkit CLI the verbs run as
+  std::mutex job_;                  // one verb at a time
 };
 
 }  // namespace foldkit::apps

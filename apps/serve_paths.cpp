@@ -59,6 +59,9 @@ fs::path RootedPaths::output_folder(const std::string& relative) const {
     const fs::path resolved = fs::canonical(p, ec);
     if (ec || !inside(resolved)) throw PathRefused(relative + ": a link that leads out of the server's root", false);
     if (!fs::is_directory(resolved)) throw PathRefused(relative + ": not a folder", false);
+    // The verb writes files of its own naming in it, and a link among them would be written through.
+    for (const auto& e : fs::directory_iterator(resolved, ec))
+      if (e.is_symlink(ec)) throw PathRefused(relative + ": holds a link (" + e.path().filename().string() + "); outputs are never written through links", false);
     return resolved;
   }
   const fs::path parent = fs::canonical(p.parent_path(), ec);

@@ -1,10 +1,24 @@
 #include "serve_verbs.hpp"
 
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <cmath>
-#include <iostream>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
-#include "cli_app.hpp"
+#include <fcntl.h>
+#include <poll.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "cli_common.hpp"
+
+extern char** environ;
 
 namespace foldkit::apps {
 
@@ -25,14 +39,17 @@ std::string number_text(double v) {
 // The value of one argument as command-line words.
 void append_words(const ArgSpec& a, const nlohmann::json& v, const RootedPaths& paths, std::vector<std::string>& words) {
   const std::string flag = "--" + a.name + "=";
-  const auto wrong = [&](const char* expected) { return UsageError("'" + a.name + "': expected " + expected + ", got " + v.dump()); };
+  // The value's type, not its text: a client's value may be nested arbitrarily deep or be huge.
+  const auto wrong = [&](const char* expected) {
+    return UsageError("'" + a.name + "': expected " + expected + ", got " + (v.is_primitive() && !v.is_string() ? v.dump() : v.type_name()));
+  };
   const auto word = [&](const std::string& value) { words.push_back(a.positional ? value : flag + value); };
   switch (a.kind) {
     case K::Number:
       if (!v.is_number() || !std::isfinite(v.get<double>())) throw wrong("a finite number");
       return word(number_text(v.get<double>()));
     case K::Integer:
-      if (!v.is_number_integer()) throw wrong("an integer");
+      if (!v.is_number_integer() || (v.is_number_unsigned() && v.get<unsigned long long>() > 1ull << 62)) throw wrong("an integer");
       return word(std::to_string(v.get<long long>()));
     case K::Text:
       if (!v.is_string()) throw wrong("a string");
@@ -131,25 +148,79 @@ std::vector<std::string> command_line(const VerbSpec& spec, const nlohmann::json
   return words;
 }
 
-VerbRun run_captured(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  struct Capture {
-    std::streambuf* out;
-    std::streambuf* err;
-    ~Capture() {
-      std::cout.rdbuf(out);
-      std::cerr.rdbuf(err);
-    }
-  } capture{std::cout.rdbuf(out.rdbuf()), std::cerr.rdbuf(err.rdbuf())};
-  std::vector<const char*> argv = {"foldkit"};
-  for (const auto& a : args) argv.push_back(a.c_str());
-  const auto cli = make_cli();  // fresh: a parsed CLI11 app keeps its options' values
+std::string this_executable() {
+  std::error_code ec;
+  const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) throw std::runtime_error("cannot find the foldkit executable (/proc/self/exe): " + ec.message());
+  return p.string();
+}
+
+VerbRun run_verb(const std::string& executable, const std::vector<std::string>& args, double seconds, std::size_t max_output) {
+  int out[2], err[2];
+  if (pipe2(out, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  if (pipe2(err, O_CLOEXEC) != 0) {
+    close(out[0]), close(out[1]);
+    throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+  posix_spawn_file_actions_adddup2(&actions, err[1], 2);
+  std::vector<std::string> words = {executable};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  const int spawned = posix_spawn(&pid, executable.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(out[1]), close(err[1]);
+  if (spawned != 0) {
+    close(out[0]), close(err[0]);
+    throw std::runtime_error("cannot start " + executable + ": " + std::strerror(spawned));
+  }
+
   VerbRun run;
-  run.exit = run_cli(*cli, static_cast<int>(argv.size()), argv.data());
-  std::cout.flush();
-  std::cerr.flush();
-  run.out = out.str();
-  run.err = err.str();
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  pollfd fds[2] = {{out[0], POLLIN, 0}, {err[0], POLLIN, 0}};
+  std::string* sinks[2] = {&run.out, &run.err};
+  int open_fds = 2;
+  char buffer[65536];
+  while (open_fds > 0) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
+    if (left <= 0) {
+      run.timed_out = true;
+      break;
+    }
+    if (poll(fds, 2, static_cast<int>(std::min<long long>(left, 1000))) < 0 && errno != EINTR) break;
+    for (int i = 0; i < 2; ++i) {
+      if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      const ssize_t n = read(fds[i].fd, buffer, sizeof buffer);
+      if (n > 0) {
+        sinks[i]->append(buffer, static_cast<std::size_t>(n));
+      } else if (n == 0 || errno != EINTR) {
+        close(fds[i].fd);
+        fds[i].fd = -1;
+        --open_fds;
+      }
+    }
+    if (run.out.size() > max_output || run.err.size() > max_output) {
+      run.flooded = true;
+      break;
+    }
+  }
+  if (open_fds > 0) kill(pid, SIGKILL);  // out of time or output
+  for (const auto& f : fds)
+    if (f.fd >= 0) close(f.fd);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFEXITED(status)) {
+    run.exit = WEXITSTATUS(status);
+  } else {
+    run.exit = -1;
+    run.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  }
   return run;
 }
 

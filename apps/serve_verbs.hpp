@@ -1,7 +1,8 @@
 #pragma once
 // The verbs `foldkit serve` runs for a request: which arguments each accepts, how a JSON request
-// becomes its command line, and running it in this process so that the answer is exactly the
+// becomes its command line, and running the CLI itself on it, so that the answer is exactly the
 // CLI's (the same code, the same JSON, the same exit code and messages).
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,7 @@ const VerbSpec* find_served_verb(const std::string& verb);
 // Limits on the work one request may ask for.
 struct WorkLimits {
   double max_plan_time = 60.0;  // seconds: plan's --time is capped to it
+  double max_time = 300.0;      // seconds of wall-clock time a verb may run before it is killed
 };
 
 // The command line (without the program name) for `spec` from a request object {name: value}.
@@ -53,16 +55,23 @@ struct WorkLimits {
 std::vector<std::string> command_line(const VerbSpec& spec, const nlohmann::json& request, const RootedPaths& paths,
                                       const WorkLimits& limits);
 
-// What one run of the CLI printed, and its exit code.
+// What one run of the CLI printed, and how it ended.
 struct VerbRun {
-  int exit = 0;
-  std::string out;  // stdout: the --json object
-  std::string err;  // stderr: messages and progress
+  int exit = 0;            // its exit code; -1 when it was killed or crashed
+  std::string out;         // stdout: the --json object
+  std::string err;         // stderr: messages and progress
+  bool timed_out = false;  // killed after the time limit
+  bool flooded = false;    // killed for printing more than the output limit
+  int signal = 0;          // the signal that ended it, if one did
 };
 
-// Runs the CLI on `args` in this process, with std::cout and std::cerr captured. They are the
-// process's streams, so runs must not overlap, and nothing else may print meanwhile: the server
-// runs one at a time.
-VerbRun run_captured(const std::vector<std::string>& args);
+// Runs `executable` (the foldkit CLI) on `args` as a child process, its stdout and stderr read
+// through pipes, killed after `seconds` or when either output passes `max_output` bytes. A
+// process rather than a call: a verb that runs away or crashes cannot take the server with it.
+VerbRun run_verb(const std::string& executable, const std::vector<std::string>& args, double seconds,
+                 std::size_t max_output = std::size_t(64) << 20);
+
+// The path of the running executable (/proc/self/exe).
+std::string this_executable();
 
 }  // namespace foldkit::apps

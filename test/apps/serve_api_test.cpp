@@ -6,6 +6,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <thread>
 
 #include <fcntl.h>
@@ -177,7 +178,9 @@ TEST(ServeApi, EveryVerbAnswersAsTheCliDoes) {
     if (json_verb) args.push_back("--json");
     const auto cli = foldkit(args);
     EXPECT_EQ(api["exit"].get<int>(), cli.exit) << cli.err;
-    if (json_verb) EXPECT_EQ(comparable(api["result"], s.root()), comparable(json::parse(cli.out), s.root()));
+    if (json_verb) {
+      EXPECT_EQ(comparable(api["result"], s.root()), comparable(json::parse(cli.out), s.root()));
+    }
     for (const auto& w : c.written) EXPECT_EQ(by_api[w], slurp(s.path(w))) << w;
   }
 }
@@ -230,8 +233,15 @@ TEST(ServeApi, RequestsOfTheWrongShapeAreRefused) {
   EXPECT_EQ(status("info", R"({"pattern": "m2.pmml", "colour": 1})"), 400);    // no such argument
   EXPECT_EQ(status("fold", R"({"pattern": "m2.pmml", "fraction": "half", "output": "x.cmml"})"), 400);  // wrong type
   EXPECT_EQ(status("fold", R"({"pattern": "m2.pmml", "fraction": 2, "output": "x.cmml"})"), 400);       // the CLI's range
+  EXPECT_EQ(status("dof", R"({"pattern": "m2.pmml", "max-iterations": 18446744073709551615})"), 400);  // too large, not wrapped
+  // Nested 100,000 deep: refused at parsing, not followed recursively (which crashed the server).
+  EXPECT_EQ(status("dof", "{\"pattern\": \"m2.pmml\", \"tolerance\": " + std::string(100000, '[') + std::string(100000, ']') + "}"), 400);
   EXPECT_EQ(status("info", R"({"pattern": "m2.pmml"})"), 200);
   EXPECT_FALSE(fs::exists(s.path("x.cmml")));
+  const auto unknown = s.client().Get("/api/Info");  // unknown endpoints answer in JSON too
+  ASSERT_TRUE(unknown);
+  EXPECT_EQ(unknown->status, 404);
+  EXPECT_EQ(json::parse(unknown->body)["exit"], 2);
 }
 
 // Nothing outside the root is read, written or listed: absolute paths, "..", and links that lead
@@ -265,6 +275,16 @@ TEST(ServeApi, PathsOutsideTheRootAreRefused) {
     ASSERT_TRUE(put);
     EXPECT_EQ(put->status, 400) << put->body;
   }
+  // simulate's svg folder: the verb names the files it writes there, so a link planted in it
+  // (event-1.svg → a file outside) would be written through; such a folder is refused.
+  ASSERT_EQ(foldkit({"fold", s.path("m2.pmml"), "--fraction", "0.3", "-o", s.path("f.cmml")}).exit, 0);
+  std::ofstream(outside + "/victim.svg") << "untouched";
+  fs::create_directories(s.path("shots"));
+  fs::create_symlink(outside + "/victim.svg", s.path("shots/event-1.svg"));
+  const auto svg = s.post("simulate", {{"pattern", "m2.pmml"}, {"sequence", "f.cmml"}, {"svg", "shots"}});
+  ASSERT_TRUE(svg);
+  EXPECT_EQ(svg->status, 400) << svg->body;
+  EXPECT_EQ(slurp(outside + "/victim.svg"), "untouched");
   EXPECT_FALSE(fs::exists(outside + "/new.cmml"));
   EXPECT_EQ(fs::read_symlink(s.path("link.pmml")), outside + "/secret.pmml");  // the link itself untouched
   const auto listing = s.client().Get("/api/files?folder=out");
@@ -296,6 +316,10 @@ TEST(ServeApi, FilesAreWrittenAndReadWhole) {
   const auto info = s.post("info", {{"pattern", "work/m2.pmml"}});
   EXPECT_EQ(info->status, 200);
   EXPECT_EQ(s.client().Put("/api/file?path=run.sh", "echo", "text/plain")->status, 400);  // not a foldkit format
+  // A form (curl -F) would be parsed into fields and leave the body empty: refused, file untouched.
+  httplib::MultipartFormDataItems form = {{"a", pmml, "m2.pmml", "application/xml"}};
+  EXPECT_EQ(s.client().Put("/api/file?path=work/m2.pmml", form)->status, 400);
+  EXPECT_EQ(slurp(s.path("work/m2.pmml")), pmml);
   EXPECT_EQ(s.client().Put("/api/file?path=nofolder/m.pmml", pmml, "application/xml")->status, 404);
   EXPECT_EQ(s.client().Get("/api/file?path=none.pmml")->status, 404);
   EXPECT_FALSE(fs::exists(s.path("run.sh")));
@@ -342,6 +366,54 @@ TEST(ServeApi, OneVerbAtATimeAndPlansAreTimeLimited) {
   EXPECT_LT(seconds, 10.0);  // 1.5 s of planning, not the 30 asked for
   EXPECT_GT(seconds, 1.4);
   EXPECT_EQ(s.post("info", {{"pattern", "v.pmml"}})->status, 200);
+}
+
+// A verb that runs past --max-time is killed (504) and the server goes on.
+TEST(ServeApi, AVerbPastTheTimeLimitIsStopped) {
+  Server s("timeout", {"--max-time", "1"});
+  ASSERT_GT(s.port(), 0) << s.log();
+  generate(s, {"miura", "--rows", "2", "--cols", "2"}, "m2.pmml");
+  ASSERT_EQ(foldkit({"fold", s.path("m2.pmml"), "--fraction", "0.5", "-o", s.path("f.cmml")}).exit, 0);
+  const auto start = std::chrono::steady_clock::now();
+  // Steps of a microsecond through a fold of seconds: millions of steps.
+  const auto r = s.post("simulate", {{"pattern", "m2.pmml"}, {"sequence", "f.cmml"}, {"time-step", 1e-6}});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 504) << r->body;
+  EXPECT_NE(json::parse(r->body)["error"].get<std::string>().find("--max-time"), std::string::npos);
+  EXPECT_LT(seconds, 5.0);
+  EXPECT_EQ(s.post("info", {{"pattern", "m2.pmml"}})->status, 200);
+}
+
+// Requests assembled at random from the verbs' argument names and values of every JSON type
+// (paths out of the root, option-like strings, huge and negative numbers) never crash the server
+// or get an answer outside the documented codes.
+TEST(ServeApi, RandomRequestsGetDocumentedAnswers) {
+  Server s("random", {"--max-time", "5", "--max-plan-time", "0.2"});
+  ASSERT_GT(s.port(), 0) << s.log();
+  generate(s, {"miura", "--rows", "2", "--cols", "2"}, "m2.pmml");
+  ASSERT_EQ(foldkit({"fold", s.path("m2.pmml"), "--fraction", "0.3", "-o", s.path("f.cmml")}).exit, 0);
+  const std::vector<std::string> verbs = {"validate", "info", "dof", "project", "simulate", "fold", "plan", "stiffness", "convert", "nope"};
+  const std::vector<std::string> names = {"pattern", "files", "state", "sequence", "output", "goal", "fraction", "time-step", "tolerance",
+                                          "no-collision", "velocity", "param", "input", "frames", "svg", "seed", "max-steps", "model"};
+  const std::vector<json> values = {"m2.pmml", "f.cmml", "../m2.pmml", "/etc/passwd", "--json", "-o=/tmp/x", "", "out.cmml",
+                                    "sub/out.fold", json::array({"m2.pmml"}), json::array({1, 2}), 0.5, -1, 0, 1e308, 3, true,
+                                    false, nullptr, json::object({{"a", 1}}), std::string(5000, 'a')};
+  std::mt19937 rng(7);
+  const auto pick = [&](auto& v) { return v[std::uniform_int_distribution<std::size_t>(0, v.size() - 1)(rng)]; };
+  for (int i = 0; i < 150; ++i) {
+    json body = json::object();
+    const int keys = std::uniform_int_distribution<int>(0, 4)(rng);
+    for (int k = 0; k < keys; ++k) body[pick(names)] = pick(values);
+    const std::string verb = pick(verbs);
+    const auto r = s.client().Post(("/api/" + verb).c_str(), i % 10 == 9 ? "{not json" : body.dump(), "application/json");
+    ASSERT_TRUE(r) << "no answer to " << verb << " " << body.dump();
+    EXPECT_TRUE(r->status == 200 || r->status == 400 || r->status == 404) << r->status << " for " << verb << " " << body.dump() << "\n" << r->body;
+  }
+  EXPECT_EQ(s.client().Get("/api")->status, 200);
+  EXPECT_FALSE(fs::exists("/tmp/x"));
+  for (const auto& e : fs::recursive_directory_iterator(s.root()))  // nothing written but under the root, and no link
+    EXPECT_FALSE(fs::is_symlink(e.symlink_status())) << e.path();
 }
 
 }  // namespace
