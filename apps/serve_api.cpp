@@ -137,7 +137,7 @@ void ServeApi::install(httplib::Server& server) {
     json verbs = json::array();
     for (const auto& v : served_verbs()) verbs.push_back(v.verb);
     reply(res, 200, {{"foldkit", "0.1.0"}, {"verbs", verbs}, {"files", files_}, {"max_body", options_.max_body},
-                     {"max_plan_time", options_.limits.max_plan_time}});
+                     {"max_time", options_.limits.max_time}, {"max_plan_time", options_.limits.max_plan_time}});
   });
 
   server.Get("/api/files", [this](const httplib::Request& req, httplib::Response& res) {

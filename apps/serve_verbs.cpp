@@ -166,6 +166,9 @@ VerbRun run_verb(const std::string& executable, const std::vector<std::string>& 
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, out[1], 1);
   posix_spawn_file_actions_adddup2(&actions, err[1], 2);
+  // cpp-httplib's sockets are not close-on-exec: without this the verb would hold the listening
+  // port and the clients' connections open for as long as it runs.
+  posix_spawn_file_actions_addclosefrom_np(&actions, 3);
   std::vector<std::string> words = {executable};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
