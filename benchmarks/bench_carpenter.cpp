@@ -87,7 +87,40 @@ void run(benchmark::State& state, bool all_struts) {
   state.counters["min_distance_growth"] = r.min_distance_growth;
 }
 
+// Seeded star-shaped simple polygon: n vertices at equally spaced angles (jittered by a third of
+// the spacing) and radii in [0.4, 1.6], so that it is far from convex: issue 20's 1,000-vertex
+// polygon to convexify.
+Frame2 random_star(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> radius(0.4, 1.6), jitter(-1.0 / 3, 1.0 / 3);
+  const double step = 2.0 * M_PI / n;
+  Frame2 p;
+  for (int i = 0; i < n; ++i) {
+    const double a = (i + jitter(rng)) * step;
+    p.push_back(radius(rng) * std::sqrt(static_cast<double>(n)) * Vec(std::cos(a), std::sin(a)));
+  }
+  return p;
+}
+
 void BM_Carpenter_Straighten(benchmark::State& state) { run(state, false); }
+
+void BM_Carpenter_Convexify(benchmark::State& state) {
+  const Frame2 polygon = random_star(static_cast<int>(state.range(0)), 1);
+  CarpenterPlanarOptions options;
+  options.frame_stride = 10;
+  CarpenterPlanarResult r;
+  for (auto _ : state) {
+    r = carpenter_planar({polygon, true}, options);
+    benchmark::DoNotOptimize(r.frames.data());
+  }
+  if (!r.status.ok()) state.SkipWithError(r.status.message.c_str());
+  state.counters["steps"] = static_cast<double>(r.steps);
+  state.counters["lp_solves"] = static_cast<double>(r.lp_solves);
+  state.counters["max_struts"] = static_cast<double>(r.max_struts);
+  state.counters["max_length_error"] = r.max_length_error;
+  state.counters["min_distance_growth"] = r.min_distance_growth;
+}
+BENCHMARK(BM_Carpenter_Convexify)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)->Iterations(1)->Unit(benchmark::kSecond);
 void BM_Carpenter_Ours(benchmark::State& state) { run(state, false); }
 void BM_Carpenter_AllStruts(benchmark::State& state) { run(state, true); }
 

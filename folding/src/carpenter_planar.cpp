@@ -148,12 +148,18 @@ Frame2 advance(const MergedChain& chain, const Frame2& v, double h) {
 
 // Every pair of merged vertices that is not a bar keeps or grows its distance, to within the
 // rounding of the coordinates: a strut across an almost straight joint grows only to second
-// order in the joint angle, below what doubles resolve.
+// order in the joint angle, below what doubles resolve. A layout places vertex k by summing k
+// bars from vertex 0 (advance()), so its rounding error is up to k·u·(|p₀| + total length) (the
+// summation bound), and a distance compared between two layouts carries four such errors: the
+// tolerance of pair (a, b) is 2·(a + b + 2)·u·(|p₀| + total length). A fixed 4u·extent, as before,
+// was below that error at about 100 vertices, and convexifying star-shaped 100–150-gons stopped
+// as "no step keeps every distance growing" once the first-order growth fell under it.
 bool expansive(const MergedChain& chain, const Frame2& before, const Frame2& after) {
   const int m = chain.vertices();
-  double extent = 0.0;
-  for (const Vec& x : before) extent = std::max(extent, x.cwiseAbs().maxCoeff());
-  const double rounding = 4.0 * std::numeric_limits<double>::epsilon() * extent;
+  double reach = before[0].cwiseAbs().maxCoeff();
+  for (double l : chain.length()) reach += l;
+  const double unit = 2.0 * std::numeric_limits<double>::epsilon() * reach;
+  const auto rounding = [&](int a, int b) { return (a + b + 2) * unit; };
   // Squared distances first, over coordinate arrays (vectorised): a pair whose squared distance
   // did not shrink passes without a square root, as sqrt is monotone.
   std::vector<double> bx(m), by(m), ax(m), ay(m), shrunk(m);
@@ -173,7 +179,7 @@ bool expansive(const MergedChain& chain, const Frame2& before, const Frame2& aft
     }
     if (!any) continue;
     for (int b = a + 2; b <= last; ++b)
-      if (shrunk[b] < 0.0 && (after[b] - after[a]).norm() < (before[b] - before[a]).norm() - rounding) return false;
+      if (shrunk[b] < 0.0 && (after[b] - after[a]).norm() < (before[b] - before[a]).norm() - rounding(a, b)) return false;
   }
   return true;
 }

@@ -217,6 +217,36 @@ TEST(CarpenterPlanar, RandomSimplePolygonsConvexify) {
   EXPECT_GE(nonconvex, 8);  // the generator does give work to do
 }
 
+// Polygons of 100–150 vertices, where the rounding of the layouts (vertex k is the sum of k bars)
+// passed the fixed tolerance of the distance check: convexifying stopped as "no step keeps every
+// distance growing" before the tolerance followed the summation's error bound (docs/CARPENTER.md).
+// Every frame is checked here against that bound, 2·(2n + 2)·u·(|p₀| + total length) at most.
+TEST(CarpenterPlanar, StarPolygonsOfAHundredAndMoreVerticesConvexify) {
+  std::mt19937 rng(5);
+  for (int n : {100, 150}) {
+    const Frame2 input = random_polygon(n, rng);
+    SCOPED_TRACE("n " + std::to_string(n));
+    ASSERT_FALSE(is_convex(input));
+    CarpenterPlanarOptions options;
+    options.frame_stride = 1;
+    const CarpenterPlanarResult r = carpenter_planar({input, true}, options);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    double reach = input[0].cwiseAbs().maxCoeff();
+    for (int i = 0; i < n; ++i) reach += (input[(i + 1) % n] - input[i]).norm();
+    const double bound = 2.0 * (2 * n + 2) * std::numeric_limits<double>::epsilon() * reach;
+    double growth = std::numeric_limits<double>::infinity();
+    for (std::size_t f = 1; f < r.frames.size(); ++f)
+      for (int i = 0; i < n; ++i)
+        for (int j = i + 2; j < n; ++j)
+          if (!(i == 0 && j == n - 1)) growth = std::min(growth, (r.frames[f][j] - r.frames[f][i]).norm() - (r.frames[f - 1][j] - r.frames[f - 1][i]).norm());
+    EXPECT_GE(growth, -bound);
+    EXPECT_LE(r.max_length_error, 1e-9);
+    int left = 0, right = 0;
+    for (double t : turning_angles(r.frames.back(), true)) left += t > 1e-9, right += t < -1e-9;
+    EXPECT_TRUE(left == 0 || right == 0);
+  }
+}
+
 TEST(CarpenterPlanar, HandMadeCombPolygonConvexifies) {
   // A comb with three teeth: deep reflex vertices, far from star-shaped about its centre.
   const Frame2 input = {{0, 0}, {7, 0}, {7, 3}, {6, 3}, {6, 1}, {5, 1}, {5, 3}, {4, 3}, {4, 1}, {3, 1},
