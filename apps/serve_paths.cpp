@@ -28,12 +28,16 @@ bool RootedPaths::inside(const fs::path& resolved) const {
   return true;
 }
 
-fs::path RootedPaths::input(const std::string& relative) const {
-  const fs::path p = checked(relative);
+fs::path RootedPaths::existing(const fs::path& p, const std::string& relative, const char* noun) const {
   std::error_code ec;
   const fs::path resolved = fs::canonical(p, ec);
-  if (ec) throw PathRefused(relative + ": no such file under the server's root", true);
+  if (ec) throw PathRefused(relative + ": no such " + noun + " under the server's root", true);
   if (!inside(resolved)) throw PathRefused(relative + ": a link that leads out of the server's root", false);
+  return resolved;
+}
+
+fs::path RootedPaths::input(const std::string& relative) const {
+  const fs::path resolved = existing(checked(relative), relative, "file");
   if (!fs::is_regular_file(resolved)) throw PathRefused(relative + ": not a file", false);
   return resolved;
 }
@@ -71,11 +75,7 @@ fs::path RootedPaths::output_folder(const std::string& relative) const {
 }
 
 fs::path RootedPaths::folder(const std::string& relative) const {
-  const fs::path p = relative.empty() ? root_ : checked(relative);
-  std::error_code ec;
-  const fs::path resolved = fs::canonical(p, ec);
-  if (ec) throw PathRefused(relative + ": no such folder under the server's root", true);
-  if (!inside(resolved)) throw PathRefused(relative + ": a link that leads out of the server's root", false);
+  const fs::path resolved = existing(relative.empty() ? root_ : checked(relative), relative, "folder");
   if (!fs::is_directory(resolved)) throw PathRefused(relative + ": not a folder", false);
   return resolved;
 }

@@ -34,6 +34,8 @@ class RootedPaths {
 
  private:
   std::filesystem::path checked(const std::string& relative) const;  // lexically inside, not resolved
+  // `p` resolved through links, which must exist and stay inside (`noun` names it in messages).
+  std::filesystem::path existing(const std::filesystem::path& p, const std::string& relative, const char* noun) const;
   bool inside(const std::filesystem::path& resolved) const;
 
   std::filesystem::path root_;

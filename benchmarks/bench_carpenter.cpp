@@ -69,14 +69,13 @@ Frame2 random_chain(int links, unsigned seed) {
   return p;
 }
 
-void run(benchmark::State& state, bool all_struts) {
-  const Frame2 chain = random_chain(static_cast<int>(state.range(0)), 1);
+void run(benchmark::State& state, const PlanarChain& input, bool all_struts) {
   CarpenterPlanarOptions options;
   options.all_struts = all_struts;
   options.frame_stride = 10;  // the per-frame O(n²) distance bookkeeping is not the planner
   CarpenterPlanarResult r;
   for (auto _ : state) {
-    r = carpenter_planar({chain, false}, options);
+    r = carpenter_planar(input, options);
     benchmark::DoNotOptimize(r.frames.data());
   }
   if (!r.status.ok()) state.SkipWithError(r.status.message.c_str());
@@ -85,6 +84,10 @@ void run(benchmark::State& state, bool all_struts) {
   state.counters["max_struts"] = static_cast<double>(r.max_struts);
   state.counters["max_length_error"] = r.max_length_error;
   state.counters["min_distance_growth"] = r.min_distance_growth;
+}
+
+void run(benchmark::State& state, bool all_struts) {
+  run(state, {random_chain(static_cast<int>(state.range(0)), 1), false}, all_struts);
 }
 
 // Seeded star-shaped simple polygon: n vertices at equally spaced angles (jittered by a third of
@@ -105,20 +108,7 @@ Frame2 random_star(int n, unsigned seed) {
 void BM_Carpenter_Straighten(benchmark::State& state) { run(state, false); }
 
 void BM_Carpenter_Convexify(benchmark::State& state) {
-  const Frame2 polygon = random_star(static_cast<int>(state.range(0)), 1);
-  CarpenterPlanarOptions options;
-  options.frame_stride = 10;
-  CarpenterPlanarResult r;
-  for (auto _ : state) {
-    r = carpenter_planar({polygon, true}, options);
-    benchmark::DoNotOptimize(r.frames.data());
-  }
-  if (!r.status.ok()) state.SkipWithError(r.status.message.c_str());
-  state.counters["steps"] = static_cast<double>(r.steps);
-  state.counters["lp_solves"] = static_cast<double>(r.lp_solves);
-  state.counters["max_struts"] = static_cast<double>(r.max_struts);
-  state.counters["max_length_error"] = r.max_length_error;
-  state.counters["min_distance_growth"] = r.min_distance_growth;
+  run(state, {random_star(static_cast<int>(state.range(0)), 1), true}, false);
 }
 BENCHMARK(BM_Carpenter_Convexify)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)->Iterations(1)->Unit(benchmark::kSecond);
 void BM_Carpenter_Ours(benchmark::State& state) { run(state, false); }
