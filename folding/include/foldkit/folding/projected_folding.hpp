@@ -37,8 +37,9 @@ struct ProjectedFoldingOptions {
   /// step is sized so that the loop error at its chord's midpoint is at most this (radians; it
   /// grows as the square of the step): steps grow where the path is straight and shrink where it
   /// bends, at most doubling from one step to the next, at most max_step. 0: every step is
-  /// max_step. Otherwise in (closure_tolerance, 0.1]. The default keeps chords as close as the
-  /// fixed steps of 0.01 rad that every replay in the tests accepted (Miura-ori: 1.25e-5 at most).
+  /// max_step. Otherwise in (closure_tolerance, 0.1]. The default is a tenth of the simulator's
+  /// closure tolerance (simulation::SimulationOptions::closure_tolerance); docs/PROJECTED_FOLDING.md
+  /// lists the replays measured at 1e-5 to 4e-4.
   double chord_tolerance = 1e-4;
   /// Amplitude (radians, largest crease; in (0, 1], and at most half the target angle) of the
   /// first state, the closed state nearest to the desired direction at this amplitude: the way
