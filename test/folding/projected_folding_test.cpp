@@ -47,7 +47,9 @@ void expect_valid_path(const geo::CreasePattern& p, const ProjectedFoldingResult
     if (i > 0) {
       EXPECT_LE((r.states[i].angles - r.states[i - 1].angles).cwiseAbs().maxCoeff(), 1.5 * o.max_step) << "state " << i;
       const double chord = chord_error(system, r, i);
-      if (o.chord_tolerance > 0.0) EXPECT_LE(chord, o.chord_tolerance) << "state " << i;
+      if (o.chord_tolerance > 0.0) {
+        EXPECT_LE(chord, o.chord_tolerance) << "state " << i;
+      }
       largest_chord = std::max(largest_chord, chord);
     }
   }
