@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include <fcntl.h>
 #include <poll.h>
@@ -215,8 +216,16 @@ VerbRun run_verb(const std::string& executable, const std::vector<std::string>& 
   if (open_fds > 0) kill(pid, SIGKILL);  // out of time or output
   for (const auto& f : fds)
     if (f.fd >= 0) close(f.fd);
+  // A child that closed its outputs may still run: it too is held to the deadline.
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  for (;;) {
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if (done == pid || (done < 0 && errno != EINTR)) break;
+    if (done == 0 && std::chrono::steady_clock::now() > deadline && !run.timed_out) {
+      run.timed_out = true;
+      kill(pid, SIGKILL);
+    }
+    if (done == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   if (WIFEXITED(status)) {
     run.exit = WEXITSTATUS(status);
