@@ -201,6 +201,7 @@ class StepLp {
       : m_(model.vertices()), joint_column_(static_cast<std::size_t>(model.vertices()), -1), lp_(build(model, p, rows)) {}
 
   void add_strut(const StrutModel::Row& r) { lp_.add_row(strut_row(r), 1.0, kInf); }
+  int size() const { return lp_.rows() + lp_.columns(); }  // rows + columns
 
   // Rows: bars, then joints in vertex order, then struts in the order given.
   void warm(const BasisMemo& memo, const std::vector<int>& key, const std::vector<StrutModel::Row>& rows, bool closed) {
@@ -252,8 +253,8 @@ class StepLp {
     memo.valid = true;
   }
 
-  Solved solve(IncrementalLp::Method method = IncrementalLp::Method::Dual) {
-    const LpSolution s = lp_.solve(method);
+  Solved solve(IncrementalLp::Method method = IncrementalLp::Method::Dual, int max_iterations = 0) {
+    const LpSolution s = lp_.solve(method, max_iterations);
     Solved out;
     out.status = s.status;
     if (s.status != LpSolution::Status::Optimal) return out;
@@ -355,14 +356,20 @@ ExpansiveVelocity expansive_velocity(const std::vector<Vec>& p, bool closed, con
   // dual feasible; the primal simplex repairs it in fewer iterations than the dual (29 against
   // 37 per LP, 3.3 → 2.3 ms, on a 400-link chain). Rows added by constraint generation leave a
   // basis dual feasible, so later rounds use the dual simplex.
+  // The warm primal simplex can stall: on a star-shaped 400-gon one ran for minutes (Clp's primal
+  // cycling on a degenerate basis) where a fresh dual took 2,135 iterations. Past twice the LP's
+  // size in iterations it gives up, and the fresh solves below decide.
   IncrementalLp::Method round_method = IncrementalLp::Method::Dual;
+  int round_cap = 0;
   if (key != nullptr && memo != nullptr && memo->valid) {
     lp->warm(*memo, *key, rows, closed);
     round_method = IncrementalLp::Method::Primal;
+    round_cap = 2 * lp->size();
   }
   for (;;) {
-    Solved s = lp->solve(round_method);
+    Solved s = lp->solve(round_method, round_cap);
     round_method = IncrementalLp::Method::Dual;
+    round_cap = 0;
     if (s.status != LpSolution::Status::Optimal) {
       // Clp has called LPs of this shape infeasible or unbounded from a warm basis, and now and
       // then from scratch too: a fresh dual, then a fresh primal simplex decide. The model that

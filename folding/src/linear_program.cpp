@@ -115,7 +115,7 @@ int IncrementalLp::add_row(const std::vector<std::pair<int, double>>& coefficien
   return rows() - 1;
 }
 
-LpSolution IncrementalLp::solve(Method method) {
+LpSolution IncrementalLp::solve(Method method, int max_iterations) {
   if (!lower_.empty()) {
     model_->addRows(static_cast<int>(lower_.size()), lower_.data(), upper_.data(), starts_.data(),
                     indices_.data(), elements_.data());
@@ -125,10 +125,13 @@ LpSolution IncrementalLp::solve(Method method) {
     indices_.clear();
     starts_.assign(1, 0);
   }
+  const int default_limit = model_->maximumIterations();
+  if (max_iterations > 0) model_->setMaximumIterations(max_iterations);
   if (method == Method::Primal)
     model_->primal();
   else
     model_->dual();
+  model_->setMaximumIterations(default_limit);
 
   LpSolution solution;
   switch (model_->status()) {

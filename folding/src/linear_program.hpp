@@ -45,7 +45,10 @@ class IncrementalLp {
   int rows() const;
   int add_row(const std::vector<std::pair<int, double>>& coefficients, double lower, double upper);
   enum class Method { Dual, Primal };
-  LpSolution solve(Method method = Method::Dual);
+  // `max_iterations` > 0 stops Clp after that many simplex iterations, with status Failed: a
+  // caller that can solve afresh bounds a warm start that stalls.
+  LpSolution solve(Method method = Method::Dual, int max_iterations = 0);
+  int columns() const { return columns_; }
 
   struct Basis {
     std::vector<unsigned char> column, row;  // Clp status codes

@@ -14,6 +14,7 @@
 #include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/null_space.hpp"
 #include "foldkit/geometry/projection.hpp"
+#include "foldkit/folding/carpenter.hpp"
 #include "foldkit/folding/cube_chain.hpp"
 #include "foldkit/folding/projected_folding.hpp"
 #include "foldkit/simulation/collision_world.hpp"
@@ -260,6 +261,36 @@ TEST(AtScale, Waterbomb20CurlsIntoATubeWhoseEndsMeet) {
 // all 60 cubes in a line and replays valid with collisions on. Folding every crease at once along
 // the assignment instead bends the 180-tile row until tiles far apart along it meet, at a few
 // degrees: genuine, by the SAT oracle.
+// A star-shaped 400-gon (benchmarks/bench_carpenter.cpp's Convexify/400: radii 0.4–1.6 × √n,
+// angles jittered by a third of their spacing, seed 1) convexifies. It used to stall in one LP:
+// Clp's warm-started primal simplex ran for over ten minutes on a degenerate basis; past twice the
+// LP's size in iterations it now gives way to a fresh dual simplex (about a minute in all here).
+TEST(AtScale, StarPolygonOfFourHundredVerticesConvexifies) {
+  const int n = 400;
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> radius(0.4, 1.6), jitter(-1.0 / 3, 1.0 / 3);
+  folding::Frame2 polygon;
+  for (int i = 0; i < n; ++i) {
+    const double a = (i + jitter(rng)) * 2.0 * M_PI / n;
+    polygon.push_back(radius(rng) * std::sqrt(static_cast<double>(n)) * Eigen::Vector2d(std::cos(a), std::sin(a)));
+  }
+  folding::CarpenterPlanarOptions options;
+  options.frame_stride = 50;
+  const auto r = folding::carpenter_planar({polygon, true}, options);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_LE(r.max_length_error, 1e-9);
+  EXPECT_GE(r.min_distance_growth, -1e-8);  // the layouts' rounding (docs/CARPENTER.md), over 50 steps
+  int left = 0, right = 0;
+  const auto& last = r.frames.back();
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d d0 = last[static_cast<std::size_t>(i)] - last[static_cast<std::size_t>((i + n - 1) % n)];
+    const Eigen::Vector2d d1 = last[static_cast<std::size_t>((i + 1) % n)] - last[static_cast<std::size_t>(i)];
+    const double turn = d0.x() * d1.y() - d0.y() * d1.x();
+    left += turn > 1e-9 * d0.norm() * d1.norm(), right += turn < -1e-9 * d0.norm() * d1.norm();
+  }
+  EXPECT_TRUE(left == 0 || right == 0) << left << " left turns, " << right << " right turns";
+}
+
 TEST(AtScale, CubeSheet60FoldsIntoALineOfCubesAndReplaysValid) {
   const int cubes = 60;
   const CreasePattern p = geometry::build_or_throw(gen::cube_sheet(cubes));
