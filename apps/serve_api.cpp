@@ -133,91 +133,97 @@ void ServeApi::install(httplib::Server& server) {
     refuse(res, res.status, why);
   });
 
-  server.Get("/api", [this](const httplib::Request&, httplib::Response& res) {
-    json verbs = json::array();
-    for (const auto& v : served_verbs()) verbs.push_back(v.verb);
-    reply(res, 200, {{"foldkit", "0.1.0"}, {"verbs", verbs}, {"files", files_}, {"max_body", options_.max_body},
-                     {"max_time", options_.limits.max_time}, {"max_plan_time", options_.limits.max_plan_time}});
-  });
+  server.Get("/api", [this](const httplib::Request&, httplib::Response& res) { index(res); });
+  server.Get("/api/files", [this](const httplib::Request& req, httplib::Response& res) { list_files(req, res); });
+  server.Get("/api/file", [this](const httplib::Request& req, httplib::Response& res) { get_file(req, res); });
+  server.Put("/api/file", [this](const httplib::Request& req, httplib::Response& res) { put_file(req, res); });
+  server.Post(R"(/api/([a-z]+))", [this](const httplib::Request& req, httplib::Response& res) { post_verb(req, res); });
+}
 
-  server.Get("/api/files", [this](const httplib::Request& req, httplib::Response& res) {
-    try {
-      reply(res, 200, listing(paths_.folder(req.get_param_value("folder")), paths_));
-    } catch (const PathRefused& e) {
-      refuse(res, e);
-    }
-  });
+void ServeApi::index(httplib::Response& res) const {
+  json verbs = json::array();
+  for (const auto& v : served_verbs()) verbs.push_back(v.verb);
+  reply(res, 200, {{"foldkit", "0.1.0"}, {"verbs", verbs}, {"files", files_}, {"max_body", options_.max_body},
+                   {"max_time", options_.limits.max_time}, {"max_plan_time", options_.limits.max_plan_time}});
+}
 
-  server.Get("/api/file", [this](const httplib::Request& req, httplib::Response& res) {
-    try {
-      const std::string name = req.get_param_value("path");
-      const fs::path p = paths_.input(name);
-      if (fs::file_size(p) > options_.max_file) return refuse(res, 413, name + ": larger than the server returns", kInvalidInput);
-      std::ifstream in(p, std::ios::binary);
-      std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-      res.set_content(content, content_type(name));
-    } catch (const PathRefused& e) {
-      refuse(res, e);
-    }
-  });
+void ServeApi::list_files(const httplib::Request& req, httplib::Response& res) const {
+  try {
+    reply(res, 200, listing(paths_.folder(req.get_param_value("folder")), paths_));
+  } catch (const PathRefused& e) {
+    refuse(res, e);
+  }
+}
 
-  server.Put("/api/file", [this](const httplib::Request& req, httplib::Response& res) {
-    try {
-      if (form_encoded(req)) return refuse(res, 400, "send the file's bytes as the body, not as a form (Content-Type: " + req.get_header_value("Content-Type") + ")");
-      const std::string name = req.get_param_value("path");
-      if (!text_format(name))
-        return refuse(res, 400, name + ": the server writes only .pmml, .cmml, .fold, .svg, .loadcase, .json and .csv files");
-      const fs::path p = paths_.output(name);
-      io::write_file_atomic(p.string(), req.body);
-      reply(res, 200, {{"written", paths_.relative(p)}, {"bytes", req.body.size()}});
-    } catch (const PathRefused& e) {
-      refuse(res, e);
-    } catch (const io::WriteError& e) {
-      refuse(res, 500, relative_messages(e.what(), paths_), kInvalidInput);
-    }
-  });
+void ServeApi::get_file(const httplib::Request& req, httplib::Response& res) const {
+  try {
+    const std::string name = req.get_param_value("path");
+    const fs::path p = paths_.input(name);
+    if (fs::file_size(p) > options_.max_file) return refuse(res, 413, name + ": larger than the server returns", kInvalidInput);
+    std::ifstream in(p, std::ios::binary);
+    std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    res.set_content(content, content_type(name));
+  } catch (const PathRefused& e) {
+    refuse(res, e);
+  }
+}
 
-  server.Post(R"(/api/([a-z]+))", [this](const httplib::Request& req, httplib::Response& res) {
-    const std::string verb = req.matches[1];
-    const VerbSpec* spec = find_served_verb(verb);
-    if (!spec) return refuse(res, 404, verb + ": not a verb the server runs");
-    json request;
+void ServeApi::put_file(const httplib::Request& req, httplib::Response& res) const {
+  try {
+    if (form_encoded(req)) return refuse(res, 400, "send the file's bytes as the body, not as a form (Content-Type: " + req.get_header_value("Content-Type") + ")");
+    const std::string name = req.get_param_value("path");
+    if (!text_format(name))
+      return refuse(res, 400, name + ": the server writes only .pmml, .cmml, .fold, .svg, .loadcase, .json and .csv files");
+    const fs::path p = paths_.output(name);
+    io::write_file_atomic(p.string(), req.body);
+    reply(res, 200, {{"written", paths_.relative(p)}, {"bytes", req.body.size()}});
+  } catch (const PathRefused& e) {
+    refuse(res, e);
+  } catch (const io::WriteError& e) {
+    refuse(res, 500, relative_messages(e.what(), paths_), kInvalidInput);
+  }
+}
+
+void ServeApi::post_verb(const httplib::Request& req, httplib::Response& res) {
+  const std::string verb = req.matches[1];
+  const VerbSpec* spec = find_served_verb(verb);
+  if (!spec) return refuse(res, 404, verb + ": not a verb the server runs");
+  json request;
+  try {
+    request = req.body.empty() ? json::object() : parse_request(req.body);
+  } catch (const std::exception& e) {
+    return refuse(res, 400, std::string("the request body is not a JSON object: ") + e.what());
+  }
+  std::vector<std::string> words;
+  try {
+    words = command_line(*spec, request, paths_, options_.limits);
+  } catch (const PathRefused& e) {
+    return refuse(res, e);
+  } catch (const UsageError& e) {
+    return refuse(res, 400, verb + ": " + e.what());
+  }
+  std::unique_lock<std::mutex> lock(job_, std::try_to_lock);
+  if (!lock.owns_lock()) return refuse(res, 503, "busy: another verb is running; try again when it has finished", kUsage);
+  const VerbRun run = run_verb(executable_, words, options_.limits.max_time);
+  lock.unlock();
+  if (run.timed_out) {
+    std::ostringstream out;
+    out << verb << ": stopped after the server's limit of " << options_.limits.max_time << " s (foldkit serve --max-time)";
+    return refuse(res, 504, out.str(), kInvalidInput);
+  }
+  if (run.flooded) return refuse(res, 500, verb + ": stopped for printing more than the server keeps", kInvalidInput);
+  if (run.exit < 0) return refuse(res, 500, verb + ": ended by signal " + std::to_string(run.signal), kInvalidInput);
+  const std::string log = relative_messages(run.err, paths_);
+  if (run.exit == kInvalidInput || run.exit == kUsage) return refuse(res, 400, first_line(log), run.exit);
+  json body = {{"verb", verb}, {"exit", run.exit}, {"log", log}};
+  if (spec->json) {
     try {
-      request = req.body.empty() ? json::object() : parse_request(req.body);
-    } catch (const std::exception& e) {
-      return refuse(res, 400, std::string("the request body is not a JSON object: ") + e.what());
+      body["result"] = json::parse(relative_messages(run.out, paths_));
+    } catch (const json::parse_error&) {
+      return refuse(res, 500, verb + " printed no JSON object", kInvalidInput);
     }
-    std::vector<std::string> words;
-    try {
-      words = command_line(*spec, request, paths_, options_.limits);
-    } catch (const PathRefused& e) {
-      return refuse(res, e);
-    } catch (const UsageError& e) {
-      return refuse(res, 400, verb + ": " + e.what());
-    }
-    std::unique_lock<std::mutex> lock(job_, std::try_to_lock);
-    if (!lock.owns_lock()) return refuse(res, 503, "busy: another verb is running; try again when it has finished", kUsage);
-    const VerbRun run = run_verb(executable_, words, options_.limits.max_time);
-    lock.unlock();
-    if (run.timed_out) {
-      std::ostringstream out;
-      out << verb << ": stopped after the server's limit of " << options_.limits.max_time << " s (foldkit serve --max-time)";
-      return refuse(res, 504, out.str(), kInvalidInput);
-    }
-    if (run.flooded) return refuse(res, 500, verb + ": stopped for printing more than the server keeps", kInvalidInput);
-    if (run.exit < 0) return refuse(res, 500, verb + ": ended by signal " + std::to_string(run.signal), kInvalidInput);
-    const std::string log = relative_messages(run.err, paths_);
-    if (run.exit == kInvalidInput || run.exit == kUsage) return refuse(res, 400, first_line(log), run.exit);
-    json body = {{"verb", verb}, {"exit", run.exit}, {"log", log}};
-    if (spec->json) {
-      try {
-        body["result"] = json::parse(relative_messages(run.out, paths_));
-      } catch (const json::parse_error&) {
-        return refuse(res, 500, verb + " printed no JSON object", kInvalidInput);
-      }
-    }
-    reply(res, 200, body);
-  });
+  }
+  reply(res, 200, body);
 }
 
 }  // namespace foldkit::apps

@@ -11,6 +11,8 @@
 
 namespace httplib {
 class Server;
+struct Request;
+struct Response;
 }
 
 namespace foldkit::apps {
@@ -34,6 +36,12 @@ class ServeApi {
   const RootedPaths& paths() const { return paths_; }
 
  private:
+  void index(httplib::Response& res) const;                                       // GET /api
+  void list_files(const httplib::Request& req, httplib::Response& res) const;     // GET /api/files
+  void get_file(const httplib::Request& req, httplib::Response& res) const;       // GET /api/file
+  void put_file(const httplib::Request& req, httplib::Response& res) const;       // PUT /api/file
+  void post_verb(const httplib::Request& req, httplib::Response& res);            // POST /api/VERB
+
   ServeOptions options_;
   RootedPaths paths_;
   std::vector<std::string> files_;  // options_.files, relative to the root
