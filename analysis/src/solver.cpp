@@ -238,13 +238,18 @@ SolveResult solve(const Problem& problem, const SolveOptions& options) {
         failed = step < options.min_load_step || newton.iterations >= options.max_total_iterations;
       }
     }
+    bool factored_at_x = false;  // tangent_solver holds the tangent at the final x
     if (!failed) {
       // One polishing step: at the round-off floor it still often gains a digit.
       const VectorXd r = sys.residual(x, 1.0);
       if (tangent_solver.factor(sys.tangent(x, 1.0))) {
+        factored_at_x = true;
         const VectorXd trial = sys.retract(x, tangent_solver.solve(-r));
         const VectorXd rt = sys.residual(trial, 1.0);
-        if (finite(rt) && rt.lpNorm<Eigen::Infinity>() < r.lpNorm<Eigen::Infinity>()) x = trial;
+        if (finite(rt) && rt.lpNorm<Eigen::Infinity>() < r.lpNorm<Eigen::Infinity>()) {
+          x = trial;
+          factored_at_x = false;
+        }
       }
     }
     out.iterations = newton.iterations;
@@ -256,7 +261,8 @@ SolveResult solve(const Problem& problem, const SolveOptions& options) {
     else
       out.status = {newton.iterations >= options.max_total_iterations ? StatusCode::LimitReached : StatusCode::NoProgress,
                     "did not converge: reached " + std::to_string(lambda) + " of the load"};
-    if (out.status && options.estimate_condition && tangent_solver.factor(sys.tangent(x, 1.0))) out.condition_estimate = tangent_solver.condition();
+    if (out.status && options.estimate_condition && (factored_at_x || tangent_solver.factor(sys.tangent(x, 1.0))))
+      out.condition_estimate = tangent_solver.condition();
   }
   if (options.linear && out.status && options.estimate_condition) out.condition_estimate = tangent_solver.condition();
   const auto& modules = problem.structure.modules;

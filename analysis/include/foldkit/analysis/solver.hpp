@@ -65,9 +65,8 @@ struct SolveResult {
 
 /// Solves `problem` for static equilibrium: Newton with analytic tangent, a sparse LDLᵀ of the
 /// Jacobi-scaled tangent's symmetric part, backtracking line search on ‖r‖₂ and adaptive load
-/// stepping (see docs/STIFFNESS.md); with `options.linear`, one linear solve (and iterative
-/// refinement) instead. A problem without free
-/// modules is solved at once (StatusCode::Success).
+/// stepping (see docs/STIFFNESS.md); with `options.linear`, one linear solve instead. A problem
+/// without free modules is solved at once (StatusCode::Success).
 /// @param problem  the structure, its stiffness, supports and loads
 /// @param options  linear or not, tolerance, iteration and load-step limits, progress
 /// @return the displacements and how the solve ended (failures are reported, not thrown)
