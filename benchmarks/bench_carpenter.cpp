@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "carpenter_inputs.hpp"
 #include "foldkit/folding/carpenter.hpp"
 
 namespace {
@@ -90,26 +91,12 @@ void run(benchmark::State& state, bool all_struts) {
   run(state, {random_chain(static_cast<int>(state.range(0)), 1), false}, all_struts);
 }
 
-// Seeded star-shaped simple polygon: n vertices at equally spaced angles (jittered by a third of
-// the spacing) and radii in [0.4, 1.6], so that it is far from convex: issue 20's 1,000-vertex
-// polygon to convexify.
-Frame2 random_star(int n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> radius(0.4, 1.6), jitter(-1.0 / 3, 1.0 / 3);
-  const double step = 2.0 * M_PI / n;
-  Frame2 p;
-  for (int i = 0; i < n; ++i) {
-    const double a = (i + jitter(rng)) * step;
-    p.push_back(radius(rng) * std::sqrt(static_cast<double>(n)) * Vec(std::cos(a), std::sin(a)));
-  }
-  return p;
-}
-
 void BM_Carpenter_Straighten(benchmark::State& state) { run(state, false); }
 
 void BM_Carpenter_Convexify(benchmark::State& state) {
-  run(state, {random_star(static_cast<int>(state.range(0)), 1), true}, false);
+  run(state, {foldkit::benchmarks::random_star(static_cast<int>(state.range(0)), 1), true}, false);
 }
+// Issue 20's polygon to convexify, 100–1,000 vertices (carpenter_inputs.hpp).
 BENCHMARK(BM_Carpenter_Convexify)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)->Iterations(1)->Unit(benchmark::kSecond);
 void BM_Carpenter_Ours(benchmark::State& state) { run(state, false); }
 void BM_Carpenter_AllStruts(benchmark::State& state) { run(state, true); }

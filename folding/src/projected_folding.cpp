@@ -334,8 +334,9 @@ class Folder {
   // `why`) once it would be shorter than the smallest step; h is the length taken.
   Corrected sized_step(const FoldState& x, const Eigen::VectorXd& v, double& h, std::string& why) {
     while (true) {
-      Corrected next = correct(predict(x, v, h), true);
-      why = check_step(x, predict(x, v, h), next, h);
+      const FoldState predicted = predict(x, v, h);
+      Corrected next = correct(predicted, true);
+      why = check_step(x, predicted, next, h);
       bool bent = false;
       if (why.empty()) bent = !(why = check_chord(x, next, h)).empty();
       if (why.empty()) return next;

@@ -14,6 +14,7 @@
 #include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/null_space.hpp"
 #include "foldkit/geometry/projection.hpp"
+#include "carpenter_inputs.hpp"
 #include "foldkit/folding/carpenter.hpp"
 #include "foldkit/folding/cube_chain.hpp"
 #include "foldkit/folding/projected_folding.hpp"
@@ -261,19 +262,13 @@ TEST(AtScale, Waterbomb20CurlsIntoATubeWhoseEndsMeet) {
 // all 60 cubes in a line and replays valid with collisions on. Folding every crease at once along
 // the assignment instead bends the 180-tile row until tiles far apart along it meet, at a few
 // degrees: genuine, by the SAT oracle.
-// A star-shaped 400-gon (benchmarks/bench_carpenter.cpp's Convexify/400: radii 0.4–1.6 × √n,
-// angles jittered by a third of their spacing, seed 1) convexifies. It used to stall in one LP:
-// Clp's warm-started primal simplex ran for over ten minutes on a degenerate basis; past twice the
-// LP's size in iterations it now gives way to a fresh dual simplex (about a minute in all here).
+// The star-shaped 400-gon of benchmarks/bench_carpenter.cpp's Convexify/400 (carpenter_inputs.hpp)
+// convexifies. It used to stall in one LP: Clp's warm-started primal simplex ran for over ten
+// minutes on a degenerate basis; past twice the LP's size in iterations it now gives way to a
+// fresh dual simplex (about a minute in all here).
 TEST(AtScale, StarPolygonOfFourHundredVerticesConvexifies) {
   const int n = 400;
-  std::mt19937 rng(1);
-  std::uniform_real_distribution<double> radius(0.4, 1.6), jitter(-1.0 / 3, 1.0 / 3);
-  folding::Frame2 polygon;
-  for (int i = 0; i < n; ++i) {
-    const double a = (i + jitter(rng)) * 2.0 * M_PI / n;
-    polygon.push_back(radius(rng) * std::sqrt(static_cast<double>(n)) * Eigen::Vector2d(std::cos(a), std::sin(a)));
-  }
+  const folding::Frame2 polygon = foldkit::benchmarks::random_star(n, 1);
   folding::CarpenterPlanarOptions options;
   options.frame_stride = 50;
   const auto r = folding::carpenter_planar({polygon, true}, options);
