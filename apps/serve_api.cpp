@@ -56,6 +56,10 @@ bool text_format(const std::string& path) {
 
 std::string content_type(const std::string& path) {
   if (has_extension(path, ".svg")) return "image/svg+xml";
+  if (has_extension(path, ".html")) return "text/html; charset=utf-8";
+  if (has_extension(path, ".js")) return "text/javascript; charset=utf-8";
+  if (has_extension(path, ".css")) return "text/css; charset=utf-8";
+  if (has_extension(path, ".png")) return "image/png";
   if (has_extension(path, ".fold") || has_extension(path, ".json")) return "application/json";
   if (has_extension(path, ".pmml") || has_extension(path, ".cmml")) return "application/xml";
   return "text/plain";
@@ -67,6 +71,23 @@ std::string relative_messages(std::string text, const RootedPaths& paths) {
   const std::string prefix = paths.root().string() + "/";
   for (std::size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
   return text;
+}
+
+// What GET serves of the app's folder: the page, its modules and three.js's (never the browser
+// tests' packages nor anything else npm put there).
+bool app_file(const std::string& path) {
+  if (path == "index.html" || path == "style.css") return true;
+  bool known = false;
+  for (const char* e : {".js", ".css", ".svg", ".png", ".html"}) known = known || has_extension(path, e);
+  if (!known) return false;
+  for (const char* folder : {"src/", "node_modules/three/build/", "node_modules/three/examples/jsm/"})
+    if (path.rfind(folder, 0) == 0) return true;
+  return false;
+}
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 std::string first_line(const std::string& text) {
@@ -99,6 +120,11 @@ ServeApi::ServeApi(ServeOptions options) : options_(std::move(options)), paths_(
     } catch (const PathRefused& e) {
       throw std::invalid_argument(e.what());
     }
+  }
+  if (!options_.web.empty()) {
+    if (!fs::is_regular_file(options_.web / "index.html"))
+      throw std::invalid_argument(options_.web.string() + ": not the browser app's folder (it has no index.html)");
+    web_ = std::make_unique<RootedPaths>(options_.web);
   }
 }
 
@@ -138,6 +164,7 @@ void ServeApi::install(httplib::Server& server) {
   server.Get("/api/file", [this](const httplib::Request& req, httplib::Response& res) { get_file(req, res); });
   server.Put("/api/file", [this](const httplib::Request& req, httplib::Response& res) { put_file(req, res); });
   server.Post(R"(/api/([a-z]+))", [this](const httplib::Request& req, httplib::Response& res) { post_verb(req, res); });
+  server.Get(R"(/(?!api(/|$)).*)", [this](const httplib::Request& req, httplib::Response& res) { get_app_file(req, res); });
 }
 
 void ServeApi::index(httplib::Response& res) const {
@@ -160,11 +187,23 @@ void ServeApi::get_file(const httplib::Request& req, httplib::Response& res) con
     const std::string name = req.get_param_value("path");
     const fs::path p = paths_.input(name);
     if (fs::file_size(p) > options_.max_file) return refuse(res, 413, name + ": larger than the server returns", kInvalidInput);
-    std::ifstream in(p, std::ios::binary);
-    std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    res.set_content(content, content_type(name));
+    res.set_content(read_file(p), content_type(name));
   } catch (const PathRefused& e) {
     refuse(res, e);
+  }
+}
+
+void ServeApi::get_app_file(const httplib::Request& req, httplib::Response& res) const {
+  if (!web_)
+    return refuse(res, 404, "the browser app is not installed with this foldkit (build it with npm, FOLDKIT_BUILD_WEB=ON, or name its folder with --web); the JSON API is at /api", kInvalidInput);
+  const std::string name = req.path == "/" ? "index.html" : req.path.substr(1);
+  if (!app_file(name)) return refuse(res, 404, req.path + ": not a file of the browser app", kInvalidInput);
+  try {
+    const fs::path p = web_->input(name);
+    res.set_content(read_file(p), content_type(name));
+    res.set_header("Cache-Control", "no-cache");  // an edited module shows on reload
+  } catch (const PathRefused& e) {
+    refuse(res, 404, req.path + ": " + e.what(), kInvalidInput);
   }
 }
 
@@ -214,7 +253,15 @@ void ServeApi::post_verb(const httplib::Request& req, httplib::Response& res) {
   if (run.flooded) return refuse(res, 500, verb + ": stopped for printing more than the server keeps", kInvalidInput);
   if (run.exit < 0) return refuse(res, 500, verb + ": ended by signal " + std::to_string(run.signal), kInvalidInput);
   const std::string log = relative_messages(run.err, paths_);
-  if (run.exit == kInvalidInput || run.exit == kUsage) return refuse(res, 400, first_line(log), run.exit);
+  if (run.exit == kInvalidInput || run.exit == kUsage) {
+    json body = {{"error", first_line(log)}, {"exit", run.exit}};
+    // validate's JSON lists every problem with its line, for a client to point at each of them.
+    if (spec->json && !run.out.empty()) {
+      json result = json::parse(relative_messages(run.out, paths_), nullptr, false);
+      if (result.is_object()) body["result"] = std::move(result);
+    }
+    return reply(res, 400, body);
+  }
   json body = {{"verb", verb}, {"exit", run.exit}, {"log", log}};
   if (spec->json) {
     try {

@@ -2,6 +2,7 @@
 // The JSON API of `foldkit serve` (docs/SERVE.md) on a cpp-httplib server.
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -23,6 +24,7 @@ struct ServeOptions {
   std::size_t max_file = 64u << 20;     // bytes a GET /api/file returns at most
   WorkLimits limits;
   std::vector<std::string> files;       // files named on the command line (under root), listed by GET /api
+  std::filesystem::path web;            // the browser app's folder (web/); empty: the API only
 };
 
 class ServeApi {
@@ -41,9 +43,11 @@ class ServeApi {
   void get_file(const httplib::Request& req, httplib::Response& res) const;       // GET /api/file
   void put_file(const httplib::Request& req, httplib::Response& res) const;       // PUT /api/file
   void post_verb(const httplib::Request& req, httplib::Response& res);            // POST /api/VERB
+  void get_app_file(const httplib::Request& req, httplib::Response& res) const;   // GET / and the app's files
 
   ServeOptions options_;
   RootedPaths paths_;
+  std::unique_ptr<RootedPaths> web_;  // options_.web; null without one
   std::vector<std::string> files_;  // options_.files, relative to the root
   std::string executable_;          // the foldkit CLI the verbs run as
   std::mutex job_;                  // one verb at a time

@@ -27,8 +27,8 @@ namespace {
 
 using K = ArgKind;
 
-ArgSpec positional_arg(std::string name, ArgKind kind, bool required = true) { return {std::move(name), kind, true, required}; }
-ArgSpec option_arg(std::string name, ArgKind kind, bool required = false) { return {std::move(name), kind, false, required}; }
+ArgSpec positional_arg(std::string name, ArgKind kind, bool required = true) { return {std::move(name), kind, true, required, {}}; }
+ArgSpec option_arg(std::string name, ArgKind kind, bool required = false) { return {std::move(name), kind, false, required, {}}; }
 
 std::string number_text(double v) {
   std::ostringstream out;
@@ -54,6 +54,11 @@ void append_words(const ArgSpec& a, const nlohmann::json& v, const RootedPaths& 
       return word(std::to_string(v.get<long long>()));
     case K::Text:
       if (!v.is_string()) throw wrong("a string");
+      if (!a.choices.empty() && std::find(a.choices.begin(), a.choices.end(), v.get<std::string>()) == a.choices.end()) {
+        std::string list;
+        for (const auto& c : a.choices) list += (list.empty() ? "" : ", ") + c;
+        throw UsageError("'" + a.name + "': expected one of " + list + ", got '" + v.get<std::string>() + "'");
+      }
       return word(v.get<std::string>());
     case K::Texts:
       if (!v.is_array()) throw wrong("an array of strings");
@@ -85,6 +90,19 @@ void append_words(const ArgSpec& a, const nlohmann::json& v, const RootedPaths& 
   }
 }
 
+// `generate KIND`: the kind is checked against the generators (a free word could be an option),
+// every generator's options are accepted and the CLI refuses those the kind does not have.
+std::vector<ArgSpec> generate_args() {
+  ArgSpec kind = positional_arg("kind", K::Text);
+  kind.choices = {"single-vertex", "strip", "grid", "circular", "miura", "waterbomb", "boat", "cube-sheet", "square-twist"};
+  std::vector<ArgSpec> args = {kind, option_arg("output", K::Output, true), option_arg("title", K::Text), option_arg("sectors", K::Text)};
+  for (const char* n : {"rows", "cols", "units", "cubes", "rings", "spokes", "degree", "panels", "seed"}) args.push_back(option_arg(n, K::Integer));
+  for (const char* n : {"spring", "damping", "a", "b", "angle", "length", "half-width", "bow", "tile", "cell", "ring-width", "width", "height",
+                        "side", "twist", "pleat"})
+    args.push_back(option_arg(n, K::Number));
+  return args;
+}
+
 }  // namespace
 
 const std::vector<VerbSpec>& served_verbs() {
@@ -112,6 +130,7 @@ const std::vector<VerbSpec>& served_verbs() {
        {positional_arg("pattern", K::Input), positional_arg("loadcase", K::Input), option_arg("state", K::Input), option_arg("linear", K::Flag),
         option_arg("detect-tolerance", K::Number), option_arg("max-iterations", K::Integer)}},
       {"convert", {positional_arg("input", K::Input), positional_arg("output", K::Output), option_arg("pattern", K::Input), option_arg("joint-ids", K::Flag)}, false},
+      {"generate", generate_args()},
   };
   return verbs;
 }

@@ -30,6 +30,7 @@ struct ArgSpec {
   ArgKind kind;
   bool positional = false;  // passed in order, before the options
   bool required = false;
+  std::vector<std::string> choices;  // when not empty: the only values a Text argument may take
 };
 
 struct VerbSpec {
@@ -38,7 +39,8 @@ struct VerbSpec {
   bool json = true;  // the verb has --json (convert has not)
 };
 
-// The verbs a server runs: validate, info, dof, project, simulate, fold, plan, stiffness, convert.
+// The verbs a server runs: validate, info, dof, project, simulate, fold, plan, stiffness, convert,
+// generate.
 const std::vector<VerbSpec>& served_verbs();
 // nullptr for a verb the server does not run.
 const VerbSpec* find_served_verb(const std::string& verb);

@@ -6,6 +6,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <thread>
 
@@ -126,7 +127,7 @@ TEST(ServeApi, StartsOnThisMachineOnlyAndListsItsVerbs) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
   const json j = json::parse(r->body);
-  EXPECT_EQ(j["verbs"], json({"validate", "info", "dof", "project", "simulate", "fold", "plan", "stiffness", "convert"}));
+  EXPECT_EQ(j["verbs"], json({"validate", "info", "dof", "project", "simulate", "fold", "plan", "stiffness", "convert", "generate"}));
   EXPECT_NE(s.log().find("http://127.0.0.1:"), std::string::npos);
   // A second server on the same port is an error, not a silent sharer of its requests.
   const auto second = foldkit({"serve", "--port", std::to_string(s.port()), "--root", s.root()});
@@ -162,6 +163,8 @@ TEST(ServeApi, EveryVerbAnswersAsTheCliDoes) {
       {"plan", {{"pattern", "m3.pmml"}, {"goal", "goal.cmml"}, {"seed", 3}, {"output", "plan.cmml"}}, {"plan", "@m3.pmml", "--goal", "@goal.cmml", "--seed", "3", "-o", "@plan.cmml"}, {"plan.cmml"}},
       {"stiffness", {{"pattern", "strip.pmml"}, {"loadcase", "tip.loadcase"}}, {"stiffness", "@strip.pmml", "@tip.loadcase"}, {}},
       {"convert", {{"input", "m3.pmml"}, {"output", "m3.fold"}}, {"convert", "@m3.pmml", "@m3.fold"}, {"m3.fold"}},
+      {"generate", {{"kind", "waterbomb"}, {"units", 2}, {"rows", 2}, {"spring", 2.5}, {"output", "wb.pmml"}},
+       {"generate", "waterbomb", "--units", "2", "--rows", "2", "--spring", "2.5", "-o", "@wb.pmml"}, {"wb.pmml"}},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.verb);
@@ -202,6 +205,16 @@ TEST(ServeApi, BadInputIsTheClisMessageAsA400) {
   EXPECT_EQ(message.rfind("truncated.pmml:", 0), 0u) << message;
   EXPECT_EQ(s.root() + "/" + message, cli.err.substr(0, cli.err.find('\n'))) << message;
 
+  // validate's 400 carries its JSON too: every problem with its line, for a client to point at.
+  const auto all = s.post("validate", {{"files", {"truncated.pmml"}}});
+  ASSERT_TRUE(all);
+  EXPECT_EQ(all->status, 400);
+  const json listed = json::parse(all->body);
+  EXPECT_EQ(listed["error"], message);
+  ASSERT_EQ(listed["result"]["files"].size(), 1u) << all->body;
+  EXPECT_EQ(listed["result"]["files"][0]["file"], "truncated.pmml");
+  EXPECT_GT(listed["result"]["files"][0]["errors"][0]["line"].get<int>(), 0);
+
   const auto missing = s.post("info", {{"pattern", "nope.pmml"}});
   ASSERT_TRUE(missing);
   EXPECT_EQ(missing->status, 404);
@@ -236,8 +249,11 @@ TEST(ServeApi, RequestsOfTheWrongShapeAreRefused) {
   EXPECT_EQ(status("dof", R"({"pattern": "m2.pmml", "max-iterations": 18446744073709551615})"), 400);  // too large, not wrapped
   // Nested 100,000 deep: refused at parsing, not followed recursively (which crashed the server).
   EXPECT_EQ(status("dof", "{\"pattern\": \"m2.pmml\", \"tolerance\": " + std::string(100000, '[') + std::string(100000, ']') + "}"), 400);
+  EXPECT_EQ(status("generate", R"({"kind": "--help", "output": "x.pmml"})"), 400);                // only the generators' names
+  EXPECT_EQ(status("generate", R"({"kind": "miura", "units": 2, "output": "x.pmml"})"), 400);     // the CLI refuses another kind's option
   EXPECT_EQ(status("info", R"({"pattern": "m2.pmml"})"), 200);
   EXPECT_FALSE(fs::exists(s.path("x.cmml")));
+  EXPECT_FALSE(fs::exists(s.path("x.pmml")));
   const auto unknown = s.client().Get("/api/Info");  // unknown endpoints answer in JSON too
   ASSERT_TRUE(unknown);
   EXPECT_EQ(unknown->status, 404);
@@ -393,10 +409,11 @@ TEST(ServeApi, RandomRequestsGetDocumentedAnswers) {
   ASSERT_GT(s.port(), 0) << s.log();
   generate(s, {"miura", "--rows", "2", "--cols", "2"}, "m2.pmml");
   ASSERT_EQ(foldkit({"fold", s.path("m2.pmml"), "--fraction", "0.3", "-o", s.path("f.cmml")}).exit, 0);
-  const std::vector<std::string> verbs = {"validate", "info", "dof", "project", "simulate", "fold", "plan", "stiffness", "convert", "nope"};
+  const std::vector<std::string> verbs = {"validate", "info", "dof", "project", "simulate", "fold", "plan", "stiffness", "convert", "generate", "nope"};
   const std::vector<std::string> names = {"pattern", "files", "state", "sequence", "output", "goal", "fraction", "time-step", "tolerance",
-                                          "no-collision", "velocity", "param", "input", "frames", "svg", "seed", "max-steps", "model"};
-  const std::vector<json> values = {"m2.pmml", "f.cmml", "../m2.pmml", "/etc/passwd", "--json", "-o=/tmp/x", "", "out.cmml",
+                                          "no-collision", "velocity", "param", "input", "frames", "svg", "seed", "max-steps", "model",
+                                          "kind", "rows", "title"};
+  const std::vector<json> values = {"m2.pmml", "f.cmml", "miura", "../m2.pmml", "/etc/passwd", "--json", "-o=/tmp/x", "", "out.cmml",
                                     "sub/out.fold", json::array({"m2.pmml"}), json::array({1, 2}), 0.5, -1, 0, 1e308, 3, true,
                                     false, nullptr, json::object({{"a", 1}}), std::string(5000, 'a')};
   std::mt19937 rng(7);
@@ -414,6 +431,59 @@ TEST(ServeApi, RandomRequestsGetDocumentedAnswers) {
   EXPECT_FALSE(fs::exists("/tmp/x"));
   for (const auto& e : fs::recursive_directory_iterator(s.root()))  // nothing written but under the root, and no link
     EXPECT_FALSE(fs::is_symlink(e.symlink_status())) << e.path();
+}
+
+// GET / serves the browser app from --web: its page, its modules and three.js's, and nothing else
+// of the folder (not the browser tests' packages, not a file beside the page, nothing outside).
+TEST(ServeApi, ServesTheBrowserAppAndNothingElse) {
+  const std::string web = foldkit::test::temp_dir() + "/serve-web-app";
+  fs::remove_all(web);
+  for (const char* d : {"src", "node_modules/three/build", "node_modules/three/examples/jsm/controls", "node_modules/puppeteer-core"})
+    fs::create_directories(web + "/" + d);
+  const std::map<std::string, std::string> files = {{"index.html", "<!doctype html><title>t</title>"},
+                                                    {"src/app.js", "export const a = 1;"},
+                                                    {"node_modules/three/build/three.module.js", "export const three = 1;"},
+                                                    {"node_modules/three/examples/jsm/controls/OrbitControls.js", "export const o = 1;"},
+                                                    {"node_modules/puppeteer-core/index.js", "private"},
+                                                    {"package.json", "{}"},
+                                                    {"src/notes.txt", "private"}};
+  for (const auto& [name, text] : files) std::ofstream(web + "/" + name) << text;
+  fs::create_symlink("/etc/hostname", web + "/src/leak.js");
+  Server s("web", {"--web", web});
+  ASSERT_GT(s.port(), 0) << s.log();
+  const auto get = [&](const std::string& path) { return s.client().Get(path.c_str()); };
+  const auto page = get("/");
+  ASSERT_TRUE(page);
+  EXPECT_EQ(page->status, 200);
+  EXPECT_EQ(page->body, files.at("index.html"));
+  EXPECT_EQ(page->get_header_value("Content-Type"), "text/html; charset=utf-8");
+  for (const char* ok : {"/index.html", "/src/app.js", "/node_modules/three/build/three.module.js",
+                         "/node_modules/three/examples/jsm/controls/OrbitControls.js"}) {
+    SCOPED_TRACE(ok);
+    const auto r = get(ok);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200);
+    EXPECT_EQ(r->body, files.at(std::string(ok).substr(1)));
+  }
+  EXPECT_EQ(get("/src/app.js")->get_header_value("Content-Type"), "text/javascript; charset=utf-8");
+  for (const char* refused : {"/node_modules/puppeteer-core/index.js", "/package.json", "/src/notes.txt", "/src/leak.js",
+                              "/src/../package.json", "/src/%2e%2e/package.json", "/src/none.js", "/%2e%2e/serve-web.log"}) {
+    SCOPED_TRACE(refused);
+    const auto r = get(refused);
+    ASSERT_TRUE(r);
+    EXPECT_GE(r->status, 400);
+    EXPECT_NE(r->body, "private");
+  }
+  EXPECT_EQ(get("/api")->status, 200);  // the API is still the API
+  EXPECT_EQ(json::parse(get("/api/nothing")->body)["exit"], 2);
+  // No app folder: the page says where the API is; a folder without a page is a usage error.
+  Server bare("web-none", {"--web", ""});
+  ASSERT_GT(bare.port(), 0) << bare.log();
+  const auto none = bare.client().Get("/");
+  ASSERT_TRUE(none);
+  EXPECT_EQ(none->status, 404);
+  EXPECT_NE(json::parse(none->body)["error"].get<std::string>().find("/api"), std::string::npos);
+  EXPECT_EQ(foldkit({"serve", "--web", web + "/src", "--root", s.root()}).exit, 2);
 }
 
 }  // namespace
