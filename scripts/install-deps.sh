@@ -6,9 +6,15 @@
 set -euo pipefail
 
 # --demo: only what building the foldkit CLI needs (scripts/demo.sh); the test, benchmark and
-# experiment packages are left out.
+# experiment packages are left out. --serve: that and Node.js/npm for the browser app
+# (scripts/serve.sh).
 demo=0
+web=1
 if [ "${1:-}" = "--demo" ]; then
+  demo=1
+  web=0
+  shift
+elif [ "${1:-}" = "--serve" ]; then
   demo=1
   shift
 fi
@@ -30,7 +36,15 @@ if [ "$demo" -eq 0 ]; then
     python3-matplotlib
     pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest
     ompl-demos
+    chromium
   )
+fi
+# The browser app's packages come from npm (web/package-lock.json). Node.js and npm are installed
+# only when missing: a Node.js from elsewhere (NodeSource) ships its own npm, which Debian's npm
+# package conflicts with. Debian 12's Node.js is 18, which the app and its tests support.
+if [ "$web" -eq 1 ]; then
+  command -v node >/dev/null || packages+=(nodejs)
+  command -v npm >/dev/null || packages+=(npm)
 fi
 
 missing=()

@@ -13,7 +13,7 @@ bash scripts/install-deps.sh
 flags="-O1 -DEIGEN_MALLOC_ALREADY_ALIGNED=1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
 # The Python module is left out: an ASan-instrumented extension only loads with the runtime
 # preloaded into the interpreter; its suite runs in the Release build.
-cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DFOLDKIT_BUILD_BENCHMARKS=OFF -DFOLDKIT_BUILD_PYTHON=OFF \
+cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DFOLDKIT_BUILD_BENCHMARKS=OFF -DFOLDKIT_BUILD_PYTHON=OFF -DFOLDKIT_BUILD_WEB=OFF \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
 cmake --build build-sanitize -j "$(nproc)" >&2
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh clang
 # -O1 keeps the planners' timed runs meaningful under TSan's slowdown; Debug keeps assertions.
 flags="-O1 -g -fsanitize=thread -fno-omit-frame-pointer"
-cmake -S . -B build-tsan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DFOLDKIT_BUILD_BENCHMARKS=OFF -DFOLDKIT_BUILD_PYTHON=OFF \
+cmake -S . -B build-tsan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DFOLDKIT_BUILD_BENCHMARKS=OFF -DFOLDKIT_BUILD_PYTHON=OFF -DFOLDKIT_BUILD_WEB=OFF \
   -DFOLDKIT_BUILD_EXPERIMENTS=OFF -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" >&2
 cmake --build build-tsan -j "$(nproc)" --target foldkit_statespaces_tests foldkit_planners_tests >&2
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$PWD/scripts/tsan.supp"

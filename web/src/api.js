@@ -1,0 +1,62 @@
+// The JSON API of `foldkit serve` (docs/SERVE.md): the browser asks, foldkit computes.
+
+/** An answer the server refused (HTTP 4xx/5xx): `status`, the CLI's `exit` code and, for
+ * validate, its `result` listing every problem with its line. */
+export class ApiError extends Error {
+  constructor(status, body) {
+    super(body && body.error ? body.error : `HTTP ${status}`);
+    this.status = status;
+    this.exit = body ? body.exit : undefined;
+    this.result = body ? body.result : undefined;
+  }
+}
+
+async function answer(response) {
+  const text = await response.text();
+  let body = null;
+  try {
+    body = JSON.parse(text);
+  } catch (_) {
+    if (!response.ok) throw new ApiError(response.status, { error: text.trim() || `HTTP ${response.status}` });
+    return text;
+  }
+  if (!response.ok) throw new ApiError(response.status, body);
+  return body;
+}
+
+/** Runs a verb: `{verb, exit, log, result}`; throws ApiError when the server refuses. */
+export async function verb(name, args) {
+  const response = await fetch(`/api/${name}`, {
+    method: 'POST',
+    headers: { 'Content-Type': 'application/json' },
+    body: JSON.stringify(args),
+  });
+  return answer(response);
+}
+
+/** `GET /api`: the server's verbs, the files it was started on and its limits. */
+export async function index() {
+  return answer(await fetch('/api'));
+}
+
+/** The entries of a folder under the server's root ('' = the root). */
+export async function listFiles(folder = '') {
+  return answer(await fetch(`/api/files?folder=${encodeURIComponent(folder)}`));
+}
+
+/** A file's text. */
+export async function readFile(path) {
+  const response = await fetch(`/api/file?path=${encodeURIComponent(path)}`);
+  if (!response.ok) await answer(response);
+  return response.text();
+}
+
+/** Writes a file under the root (atomically, on the server). */
+export async function writeFile(path, text) {
+  const response = await fetch(`/api/file?path=${encodeURIComponent(path)}`, {
+    method: 'PUT',
+    headers: { 'Content-Type': 'application/octet-stream' },
+    body: text,
+  });
+  return answer(response);
+}

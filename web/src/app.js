@@ -1,0 +1,463 @@
+// The page: the 2D editor, the 3D view, the numbers foldkit reports, the fold sequence and its
+// timeline. The browser draws and edits; every check and computation is a foldkit verb.
+import * as api from './api.js';
+import { PatternModel } from './model.js';
+import { Editor2D } from './editor2d.js';
+import { View3D } from './view3d.js';
+import { Timeline } from './timeline.js';
+import { emptySequence, setFold, pruneSequence, readCMML, writeCMML, anglesAfterEvents } from './cmml.js';
+import * as session from './session.js';
+
+const $ = (id) => document.getElementById(id);
+
+// Everything the page knows; `window.foldkit` exposes it to the browser tests.
+const app = {
+  model: new PatternModel(),
+  sequence: emptySequence(),
+  currentEvent: 1,
+  check: null,        // the last checkPattern() answer
+  simulation: null,   // the last session.simulate() answer
+  stateDof: null,     // dof of the state the scrubber rests on
+  busy: 0,
+  errors: [],
+};
+window.foldkit = app;
+
+const files = () => session.sessionFiles($('name').value.trim() || 'untitled');
+
+function log(text) {
+  $('log').textContent = text;
+}
+
+function format(value, digits = 3) {
+  if (value === undefined || value === null) return '–';
+  if (typeof value === 'number' && !Number.isInteger(value)) return value.toExponential(digits - 1);
+  return String(value);
+}
+
+function setNumber(id, value) {
+  $(id).textContent = format(value);
+}
+
+// Runs one request at a time from the UI; a failure is shown, never thrown at the user.
+async function task(label, work) {
+  app.busy++;
+  document.body.classList.add('busy');
+  try {
+    return await work();
+  } catch (e) {
+    app.errors.push(`${label}: ${e.message}`);
+    log(`${label}: ${e.message}`);
+    return null;
+  } finally {
+    app.busy--;
+    if (!app.busy) document.body.classList.remove('busy');
+  }
+}
+
+// --- the pattern -----------------------------------------------------------------------------
+
+const editor = new Editor2D($('canvas2d'), {
+  model: app.model,
+  onChange: (model) => patternChanged(model),
+  onSelect: (selection) => selectionChanged(selection),
+  onStatus: (text) => { $('hint').textContent = text; },
+});
+const view = new View3D($('view3d'));
+app.editor = editor;
+app.view = view;
+
+let checkTimer = null;
+function patternChanged(model) {
+  app.model = model;
+  app.simulation = null;
+  pruneSequence(app.sequence, model.joints().map((j) => j.id));
+  showSequence();
+  view.setPattern(session.viewPattern(model));
+  view.setAngles(new Float64Array(model.joints().length));
+  setNumber('n-actors', model.actors().length);
+  for (const id of ['n-joints', 'n-dof', 'closure-state', 'closure-max', 'n-collisions', 'verdict']) setNumber(id, null);
+  clearTimeout(checkTimer);
+  checkTimer = setTimeout(() => checkNow(), 300);
+}
+
+/** Saves the pattern and shows foldkit's verdict on it; resolves when the numbers are shown. */
+async function checkNow() {
+  clearTimeout(checkTimer);
+  const model = app.model;
+  if (!model.triangles.length) return null;
+  const check = await task('check', () => session.checkPattern(model, files()));
+  if (!check || model !== app.model) return check;
+  app.check = check;
+  showProblems(check.problems);
+  if (check.ok) {
+    setNumber('n-joints', check.info.joints);
+    setNumber('n-dof', check.dof.dof);
+    setNumber('closure-state', check.dof.closure_error);
+  }
+  return check;
+}
+app.checkNow = checkNow;
+
+// A problem's line in the PMML the page wrote names the actor or joint it concerns.
+function elementAtLine(pmml, line) {
+  const lines = pmml.split('\n').slice(0, line);
+  for (let k = lines.length - 1; k >= 0; k--) {
+    const open = lines[k].match(/<(Actor|Joint)>/);
+    if (open) {
+      const id = pmml.split('\n').slice(k).join('\n').match(/<ID>\s*([-+0-9]+)\s*<\/ID>/);
+      return id ? { kind: open[1], id: Number(id[1]) } : null;
+    }
+  }
+  return null;
+}
+
+function showProblems(problems) {
+  const list = $('problems');
+  list.replaceChildren();
+  editor.clearProblems();
+  const pmml = app.model.toPMML();
+  for (const p of problems) {
+    const item = document.createElement('li');
+    item.textContent = p.line ? `line ${p.line}: ${p.message}` : p.message;
+    const element = p.line ? elementAtLine(pmml, p.line) : null;
+    const where = problemLocation(p.message, element);
+    if (where) editor.markProblem(where);
+    item.addEventListener('click', () => {
+      if (element && element.kind === 'Joint') editor.select({ joints: [element.id] });
+      if (element && element.kind === 'Actor') editor.select({ actors: [element.id] });
+    });
+    list.append(item);
+  }
+}
+
+// foldkit's messages name points as (x, y); else the element's own place.
+function problemLocation(message, element) {
+  const point = message.match(/\(\s*([-+0-9.e]+)\s*,\s*([-+0-9.e]+)/i);
+  if (point) return { x: Number(point[1]), y: Number(point[2]) };
+  if (element && element.kind === 'Joint') {
+    const j = app.model.joints().find((x) => x.id === element.id);
+    if (j) return { x: (j.a.x + j.b.x) / 2, y: (j.a.y + j.b.y) / 2 };
+  }
+  return null;
+}
+
+// --- joints and the sequence -----------------------------------------------------------------
+
+function selectionChanged(selection) {
+  const ids = selection.joints || [];
+  $('selected-joints').textContent = ids.length ? ids.join(', ') : 'none';
+  const joints = app.model.joints().filter((j) => ids.includes(j.id));
+  if (joints.length) {
+    $('spring').value = joints[0].spring;
+    $('damping').value = joints[0].damping;
+    const event = app.sequence.events.find((e) => e.number === app.currentEvent);
+    const fold = event && event.folds.find((f) => f.joint === joints[0].id);
+    if (fold) {
+      $('fold-angle').value = fold.angle;
+      $('fold-velocity').value = fold.velocity;
+    }
+  }
+  if (selection.actors && selection.actors.length && !$('load-actor').value) $('load-actor').value = selection.actors[selection.actors.length - 1];
+}
+
+function showSequence() {
+  timeline.setEvents(app.sequence, app.currentEvent);
+  $('event-number').value = app.currentEvent;
+}
+
+/** Sets the selected joints' fold in the current event (the fold panel's inputs). */
+function setSelectedFolds() {
+  const ids = editor.selection.joints || [];
+  if (!ids.length) return log('select one or more joints first (Select tool, click a crease)');
+  const angle = Number($('fold-angle').value);
+  const velocity = Number($('fold-velocity').value);
+  if (!(angle >= -180 && angle <= 180)) return log('the fold angle must be in [-180, 180] degrees');
+  if (!(velocity > 0)) return log('the velocity must be positive (degrees per second)');
+  app.currentEvent = Number($('event-number').value) || 0;
+  for (const joint of ids) setFold(app.sequence, app.currentEvent, { joint, angle, velocity });
+  showSequence();
+  previewEnd();
+}
+
+function unsetSelectedFolds() {
+  const ids = new Set(editor.selection.joints || []);
+  const event = app.sequence.events.find((e) => e.number === app.currentEvent);
+  if (event) event.folds = event.folds.filter((f) => !ids.has(f.joint));
+  pruneSequence(app.sequence, app.model.joints().map((j) => j.id));
+  showSequence();
+}
+
+// Before a simulation, the 3D view shows the commanded end state (not yet checked by foldkit).
+function previewEnd() {
+  const joints = app.model.joints();
+  const after = anglesAfterEvents(app.sequence, joints.map((j) => j.id));
+  const last = after.length ? after[after.length - 1] : joints.map(() => 0);
+  view.setAngles(Float64Array.from(last, (d) => (d * Math.PI) / 180));
+}
+
+function moveEvent(delta) {
+  const events = app.sequence.events;
+  const k = events.findIndex((e) => e.number === app.currentEvent);
+  const other = events[k + delta];
+  if (k < 0 || !other) return;
+  [events[k].folds, other.folds] = [other.folds, events[k].folds];
+  app.currentEvent = other.number;
+  showSequence();
+}
+
+const timeline = new Timeline($('timeline'), {
+  onEvent: (number) => { app.currentEvent = number; showSequence(); },
+  onScrub: (frame) => showFrame(frame),
+  onScrubEnd: (frame) => measureState(frame),
+});
+
+// --- simulation and the 3D view --------------------------------------------------------------
+
+function showFrame(frame) {
+  const sim = app.simulation;
+  if (!sim || !sim.frames.length) return;
+  view.setAngles(sim.frames[Math.min(frame, sim.frames.length - 1)]);
+  const t = timeline.timeAt(frame);
+  const actorIndex = new Map(app.model.actors().map((id, k) => [id, k]));
+  const hit = sim.result.collisions.filter((c) => c.time <= t + 1e-9);
+  if (hit.length) view.highlight({ actors: hit.flatMap((c) => c.actors.map((a) => actorIndex.get(a))), points: hit.map((c) => c.point) });
+  else view.clearHighlight();
+  timeline.showClock();
+}
+
+// foldkit's DOF and closure error at the state the scrubber rests on.
+async function measureState(frame) {
+  const sim = app.simulation;
+  if (!sim || !sim.frames.length) return null;
+  const joints = app.model.joints();
+  const degrees = Array.from(sim.frames[Math.min(frame, sim.frames.length - 1)], (r) => (r * 180) / Math.PI);
+  const dof = await task('dof', () => session.stateDof(files(), joints.map((j) => j.id), degrees));
+  if (dof && sim === app.simulation) {
+    app.stateDof = dof;
+    setNumber('n-dof', dof.dof);
+    setNumber('closure-state', dof.closure_error);
+  }
+  return dof;
+}
+
+/** Simulates the sequence and shows its trajectory, collisions and closure. */
+async function simulateNow() {
+  const check = await checkNow();
+  if (!check || !check.ok) return log('the pattern is not valid: see the problems listed');
+  if (!app.sequence.events.length) return log('no folds yet: select joints and press "Set fold"');
+  const options = $('collisions').checked ? {} : { 'no-collision': true };
+  const sim = await task('simulate', () => session.simulate(app.model, app.sequence, files(), options));
+  if (!sim) return null;
+  app.simulation = sim;
+  const r = sim.result;
+  setNumber('closure-max', r.max_closure_error);
+  setNumber('n-collisions', r.collision_count);
+  $('verdict').textContent = r.ok ? 'valid' : `invalid: ${r.status}`;
+  log(sim.log);
+  timeline.setTrajectory(sim.frames.length, r.duration, r.collisions);
+  showFrame(timeline.frame);
+  view.fit();
+  await measureState(timeline.frame);
+  return sim;
+}
+app.simulateNow = simulateNow;
+
+async function loadSequence(sequence) {
+  app.sequence = sequence;
+  pruneSequence(app.sequence, app.model.joints().map((j) => j.id));
+  app.currentEvent = sequence.events.length ? sequence.events[sequence.events.length - 1].number : 1;
+  showSequence();
+  return simulateNow();
+}
+
+async function foldNow() {
+  const check = await checkNow();
+  if (!check || !check.ok) return;
+  const options = $('collisions').checked ? {} : { 'no-collision': true };
+  const out = await task('fold', () => session.foldTo(files(), Number($('fraction').value), options));
+  if (!out) return;
+  log(out.run.log);
+  if (out.sequence) await loadSequence(out.sequence);
+}
+
+async function planNow() {
+  const check = await checkNow();
+  if (!check || !check.ok) return;
+  if (!app.sequence.events.length) return log('plan needs a goal: set folds whose end state is the goal');
+  const options = { planner: $('planner').value, time: Number($('plan-time').value), seed: Number($('plan-seed').value) };
+  if (!$('collisions').checked) options['no-collision'] = true;
+  const out = await task('plan', () => session.plan(app.sequence, files(), options));
+  if (!out) return;
+  log(out.run.log);
+  if (out.sequence) await loadSequence(out.sequence);
+  else $('verdict').textContent = `no plan (exit ${out.run.exit})`;
+}
+
+async function stiffnessNow() {
+  const check = await checkNow();
+  if (!check || !check.ok) return;
+  const fixed = $('fixed').value.split(/[\s,]+/).filter(Boolean).map(Number);
+  const load = Number($('load-actor').value);
+  const force = $('force').value.trim().split(/\s+/).map(Number);
+  if (!fixed.length || !Number.isInteger(load) || force.length !== 3 || !force.every(Number.isFinite))
+    return log('stiffness: give fixed actor IDs, the loaded actor and a force "fx fy fz"');
+  const r = await task('stiffness', () => session.stiffness(app.sequence, files(), { fixed, load, force }));
+  if (!r) return;
+  const b = app.model.bounds();
+  const size = Math.hypot(b.maxX - b.minX, b.maxY - b.minY);
+  const scale = r.max_displacement > 0 ? (0.1 * size) / r.max_displacement : 1;
+  const index = new Map(app.model.actors().map((id, k) => [id, k]));
+  view.showDisplacements(r.modules.map((m) => ({ actor: index.get(m.id), dx: m.displacement[0], dy: m.displacement[1], dz: m.displacement[2] })), scale);
+  log(`stiffness: ${r.message}, largest displacement ${format(r.max_displacement)} (drawn ×${format(scale)}), condition ~${format(r.condition_estimate)}`);
+}
+
+// --- files -----------------------------------------------------------------------------------
+
+function setModel(model) {
+  editor.setModel(model);
+  editor.resize();
+  editor.fit();
+  patternChanged(model);
+  view.fit({ reset: true });
+}
+
+function parameters(text) {
+  const out = {};
+  for (const pair of text.split(/\s+/).filter(Boolean)) {
+    const [key, value] = pair.split('=');
+    if (value === undefined) continue;
+    out[key] = /^[-+]?[0-9.]+(e[-+]?[0-9]+)?$/i.test(value) ? Number(value) : value;
+  }
+  return out;
+}
+
+async function generateNow(kind) {
+  if (!kind) return;
+  const model = await task('generate', () => session.generate(kind, parameters($('generate-params').value), files()));
+  if (model) {
+    app.sequence = emptySequence();
+    setModel(model);
+  }
+  return model;
+}
+app.generateNow = generateNow;
+
+async function openNow(path) {
+  if (!path) return;
+  const opened = await task('open', () => session.open(path, files()));
+  if (!opened) return;
+  if (opened.model) {
+    app.sequence = emptySequence();
+    setModel(opened.model);
+  }
+  if (opened.sequence) await loadSequence(opened.sequence);
+}
+
+async function listOpenable() {
+  const listing = await task('files', () => api.listFiles(''));
+  if (!listing) return;
+  const select = $('open');
+  select.replaceChildren(new Option('Open…', ''));
+  for (const e of listing.entries) if (e.type === 'file' && /\.(pmml|fold|cmml)$/i.test(e.name)) select.append(new Option(e.name, e.name));
+}
+
+function download(name, text, type) {
+  const link = document.createElement('a');
+  link.href = typeof text === 'string' && text.startsWith('data:') ? text : URL.createObjectURL(new Blob([text], { type }));
+  link.download = name;
+  link.click();
+}
+
+async function save(kind) {
+  const f = files();
+  const name = (p) => p.split('/').pop();
+  if (kind === 'png') return download(`${$('name').value}.png`, view.screenshot());
+  const check = await checkNow();
+  if (!check || !check.ok) return log('the pattern is not valid: fix the problems listed before saving');
+  if (kind === 'pmml') return log(`saved ${f.pattern} (under the server's root)`);
+  if (kind === 'cmml') {
+    await task('save', () => api.writeFile(f.sequence, writeCMML(app.sequence)));
+    return log(`saved ${f.sequence}`);
+  }
+  const text = await task('export', () => session.exportAs(kind, app.sequence, f));
+  if (text === null) return;
+  log(`saved ${kind === 'fold' ? f.fold : f.svg}`);
+  download(name(kind === 'fold' ? f.fold : f.svg), text, kind === 'fold' ? 'application/json' : 'image/svg+xml');
+}
+
+// --- wiring ----------------------------------------------------------------------------------
+
+function lattice() {
+  const p = parameters($('lattice').value);
+  editor.options = { ...editor.options, ...p };
+}
+
+function wire() {
+  for (const b of document.querySelectorAll('[data-tool]')) {
+    b.addEventListener('click', () => {
+      lattice();
+      editor.setTool(b.dataset.tool);
+      for (const other of document.querySelectorAll('[data-tool]')) other.classList.toggle('active', other === b);
+    });
+  }
+  const actions = { group: () => editor.groupSelection(), ungroup: () => editor.ungroupSelection(), copy: () => editor.copySelection(),
+    paste: () => editor.paste(), delete: () => editor.deleteSelection() };
+  for (const b of document.querySelectorAll('[data-action]')) b.addEventListener('click', () => actions[b.dataset.action]());
+  for (const b of document.querySelectorAll('[data-assign]')) b.addEventListener('click', () => editor.setAssignment(b.dataset.assign));
+  for (const b of document.querySelectorAll('[data-save]')) b.addEventListener('click', () => save(b.dataset.save));
+  $('snap-grid').addEventListener('change', () => {
+    const g = Number($('snap-grid').value);
+    editor.snap = { ...editor.snap, grid: g > 0 ? g : null };
+  });
+  $('lattice').addEventListener('change', lattice);
+  $('undo').addEventListener('click', () => editor.undo());
+  $('redo').addEventListener('click', () => editor.redo());
+  $('generate').addEventListener('change', (e) => { generateNow(e.target.value); e.target.value = ''; });
+  $('open').addEventListener('focus', listOpenable);
+  $('open').addEventListener('change', (e) => { openNow(e.target.value); e.target.value = ''; });
+  $('set-fold').addEventListener('click', setSelectedFolds);
+  $('clear-fold').addEventListener('click', unsetSelectedFolds);
+  $('set-joint').addEventListener('click', () => {
+    for (const id of editor.selection.joints || []) app.model.setJoint(id, { spring: Number($('spring').value), damping: Number($('damping').value) });
+    patternChanged(app.model);
+  });
+  $('event-number').addEventListener('change', () => { app.currentEvent = Number($('event-number').value) || 0; showSequence(); });
+  $('add-event').addEventListener('click', () => {
+    const last = app.sequence.events.length ? app.sequence.events[app.sequence.events.length - 1].number : 0;
+    app.currentEvent = last + 1;
+    showSequence();
+  });
+  $('delete-event').addEventListener('click', () => {
+    app.sequence.events = app.sequence.events.filter((e) => e.number !== app.currentEvent);
+    showSequence();
+  });
+  $('event-earlier').addEventListener('click', () => moveEvent(-1));
+  $('event-later').addEventListener('click', () => moveEvent(1));
+  $('simulate').addEventListener('click', simulateNow);
+  $('fold').addEventListener('click', foldNow);
+  $('plan').addEventListener('click', planNow);
+  $('stiffness').addEventListener('click', stiffnessNow);
+}
+
+async function start() {
+  wire();
+  lattice();
+  editor.snap = { ...editor.snap, grid: Number($('snap-grid').value) || null };
+  const server = await task('server', () => api.index());
+  // The server's files: the first pattern is opened, then the first sequence.
+  if (server && server.files.length) {
+    const pattern = server.files.find((f) => /\.(pmml|fold)$/i.test(f));
+    const sequence = server.files.find((f) => /\.cmml$/i.test(f));
+    if (pattern) {
+      $('name').value = pattern.replace(/^.*\//, '').replace(/\.(pmml|fold)$/i, '') + '-edit';
+      await openNow(pattern);
+    }
+    if (pattern && sequence) await openNow(sequence);
+  }
+  app.ready = true;
+  document.body.dataset.ready = 'true';
+}
+
+app.readCMML = readCMML;
+start();

@@ -1,0 +1,116 @@
+// One pattern being edited and its files under the server's root: NAME.pmml, NAME.cmml,
+// NAME-frames.fold, … Every number the page shows comes back from foldkit through these calls.
+import * as api from './api.js';
+import { writeCMML, readCMML, foldFrameAngles } from './cmml.js';
+import { PatternModel } from './model.js';
+
+/** Files of the session named `name` in `folder` (relative to the server's root). */
+export function sessionFiles(name, folder = '') {
+  const base = (folder ? `${folder}/` : '') + name;
+  return {
+    pattern: `${base}.pmml`, sequence: `${base}.cmml`, frames: `${base}-frames.fold`, state: `${base}-state.cmml`,
+    folded: `${base}-fold.cmml`, plan: `${base}-plan.cmml`, loadcase: `${base}.loadcase`, fold: `${base}.fold`, svg: `${base}.svg`,
+  };
+}
+
+/** The pattern in the form the 3D view and the kinematics take (actors and joints by index). */
+export function viewPattern(model) {
+  const actorIds = model.actors();
+  const actorIndex = new Map(actorIds.map((id, k) => [id, k]));
+  const actors = actorIds.map((id) => ({ id, triangles: model.trianglesOf(id).map((t) => [...model.triangles[t].v]) }));
+  const joints = model.joints().map((j) => ({ id: j.id, v: [j.va, j.vb], actors: j.actors.map((a) => actorIndex.get(a)), assignment: j.assignment }));
+  return { vertices: model.vertices.map((p) => [p.x, p.y]), actors, joints };
+}
+
+/** Writes the pattern and asks foldkit to check it: {ok, problems: [{line, message}], info, dof}.
+ * Invalid patterns answer with every problem and its line (no info, no DOF). */
+export async function checkPattern(model, files) {
+  await api.writeFile(files.pattern, model.toPMML());
+  try {
+    await api.verb('validate', { files: [files.pattern] });
+  } catch (e) {
+    if (!(e instanceof api.ApiError) || e.status !== 400) throw e;
+    const listed = e.result && e.result.files ? e.result.files.flatMap((f) => f.errors) : [];
+    return { ok: false, problems: listed.length ? listed : [{ line: 0, message: e.message }] };
+  }
+  const info = (await api.verb('info', { pattern: files.pattern })).result;
+  const dof = (await api.verb('dof', { pattern: files.pattern })).result;
+  return { ok: true, problems: [], info, dof };
+}
+
+/** DOF and closure error of one state (joint id → degrees), from `foldkit dof --state`. */
+export async function stateDof(files, jointIds, degrees) {
+  const sequence = { title: 'state', events: [{ number: 0, folds: jointIds.map((joint, k) => ({ joint, angle: degrees[k], velocity: 1 })) }] };
+  await api.writeFile(files.state, writeCMML(sequence));
+  return (await api.verb('dof', { pattern: files.pattern, state: files.state })).result;
+}
+
+/** Simulates the sequence: {result (simulate's JSON), exit, frames (radians per joint, in
+ * `joints` order), final}. `options` are simulate's arguments (e.g. {'no-collision': true}). */
+export async function simulate(model, sequence, files, options = {}) {
+  await api.writeFile(files.sequence, writeCMML(sequence));
+  const run = await api.verb('simulate', { pattern: files.pattern, sequence: files.sequence, frames: files.frames,
+    'max-frames': 600, ...options });
+  const trajectory = JSON.parse(await api.readFile(files.frames));
+  const { frames, final } = foldFrameAngles(trajectory, model.joints());
+  return { result: run.result, exit: run.exit, log: run.log, frames, final };
+}
+
+/** Projected folding to `fraction` of the way (foldkit fold): the sequence it wrote. */
+export async function foldTo(files, fraction, options = {}) {
+  const run = await api.verb('fold', { pattern: files.pattern, fraction, output: files.folded, ...options });
+  const sequence = run.exit === 0 ? readCMML(await api.readFile(files.folded)) : null;
+  return { run, sequence };
+}
+
+/** Plans from flat to the sequence's end state (foldkit plan): the planned sequence, or null
+ * with the planner's reason (exit 4). */
+export async function plan(sequence, files, options) {
+  await api.writeFile(files.sequence, writeCMML(sequence));
+  const run = await api.verb('plan', { pattern: files.pattern, goal: files.sequence, output: files.plan, ...options });
+  return { run, sequence: run.exit === 0 ? readCMML(await api.readFile(files.plan)) : null };
+}
+
+/** Static equilibrium of the folded end state under a load (foldkit stiffness). */
+export async function stiffness(sequence, files, { fixed, load, force }) {
+  const loadcase = ['<LoadCase>', `  <Fixed>${fixed.join(' ')}</Fixed>`, '  <Load>', `    <ActorID>${load}</ActorID>`,
+    `    <Force>${force.map(String).join(' ')}</Force>`, '  </Load>', '</LoadCase>', ''].join('\n');
+  await api.writeFile(files.loadcase, loadcase);
+  const args = { pattern: files.pattern, loadcase: files.loadcase };
+  if (sequence.events.length) {
+    await api.writeFile(files.sequence, writeCMML(sequence));
+    args.state = files.sequence;
+  }
+  return (await api.verb('stiffness', args)).result;
+}
+
+/** A generated pattern (foldkit generate KIND), written as the session's PMML and read back. */
+export async function generate(kind, parameters, files) {
+  await api.verb('generate', { kind, ...parameters, output: files.pattern });
+  return PatternModel.fromPMML(await api.readFile(files.pattern));
+}
+
+/** Opens a file of the root: a PMML or FOLD pattern (FOLD through foldkit convert) → {model},
+ * a CMML → {sequence}. */
+export async function open(path, files) {
+  if (/\.cmml$/i.test(path)) return { sequence: readCMML(await api.readFile(path)) };
+  if (/\.fold$/i.test(path)) {
+    await api.verb('convert', { input: path, output: files.pattern });
+    return { model: PatternModel.fromPMML(await api.readFile(files.pattern)) };
+  }
+  if (/\.pmml$/i.test(path)) return { model: PatternModel.fromPMML(await api.readFile(path)) };
+  throw new Error(`${path}: open a .pmml, .fold or .cmml file`);
+}
+
+/** Exports through foldkit convert: FOLD (with one frame per event when there is a sequence) or
+ * SVG (of the end state); returns the file's text. */
+export async function exportAs(kind, sequence, files) {
+  const output = kind === 'fold' ? files.fold : files.svg;
+  if (sequence.events.length) {
+    await api.writeFile(files.sequence, writeCMML(sequence));
+    await api.verb('convert', { input: files.sequence, pattern: files.pattern, output });
+  } else {
+    await api.verb('convert', { input: files.pattern, output });
+  }
+  return api.readFile(output);
+}

@@ -1,0 +1,80 @@
+// cmml.js against foldkit itself: the CMML the page writes is read by the CLI as the same
+// sequence, and the angles read from a simulated trajectory (FOLD frames, the opposite sign)
+// equal the simulator's own final angles per joint.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdtempSync, writeFileSync, readFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { spawnSync } from 'node:child_process';
+import { writeCMML, readCMML, setFold, pruneSequence, anglesAfterEvents, foldFrameAngles } from '../src/cmml.js';
+
+const cli = process.env.FOLDKIT_CLI;
+const run = (args) => {
+  const r = spawnSync(cli, args, { encoding: 'utf8', timeout: 60000 });
+  assert.equal(r.status, 0, `foldkit ${args.join(' ')}: ${r.stderr}`);
+  return args.includes('--json') ? JSON.parse(r.stdout) : r;
+};
+
+test('setFold keeps one fold per joint and event, events in order', () => {
+  const s = { title: 't', events: [] };
+  setFold(s, 2, { joint: 1, angle: 30, velocity: 10 });
+  setFold(s, 1, { joint: 1, angle: 10, velocity: 10 });
+  setFold(s, 2, { joint: 1, angle: -45, velocity: 5 });
+  setFold(s, 2, { joint: 3, angle: 90, velocity: 5 });
+  assert.deepEqual(s.events.map((e) => e.number), [1, 2]);
+  assert.deepEqual(s.events[1].folds, [{ joint: 1, angle: -45, velocity: 5 }, { joint: 3, angle: 90, velocity: 5 }]);
+  // Unchanged angles carry through: joint 3 keeps 0 after event 1, joint 1 keeps -45.
+  assert.deepEqual(anglesAfterEvents(s, [1, 3]), [[10, 0], [-45, 90]]);
+  pruneSequence(s, [3]);
+  assert.deepEqual(s.events.map((e) => e.number), [2]);
+});
+
+test('writeCMML and readCMML round-trip exactly, numbers included', () => {
+  const s = { title: 'a & <b>', events: [{ number: 0, folds: [{ joint: 7, angle: 0.1 + 0.2, velocity: 1e-3 }] },
+    { number: 5, folds: [{ joint: 2, angle: -180, velocity: 90 }, { joint: 3, angle: 179.99999999999997, velocity: 30 }] }] };
+  assert.deepEqual(readCMML(writeCMML(s)), s);
+  assert.throws(() => readCMML('<PMML/>'), /not a CMML/);
+  assert.throws(() => readCMML('<CMML><Fold><EventNumber>1</EventNumber><ID>x</ID><FoldAngle>1</FoldAngle><Velocity>1</Velocity></Fold></CMML>'), /not a number/);
+});
+
+test('foldkit reads the CMML the page writes as the same sequence', { skip: !cli && 'FOLDKIT_CLI is not set' }, () => {
+  const dir = mkdtempSync(join(tmpdir(), 'foldkit-cmml-'));
+  run(['generate', 'miura', '--rows', '2', '--cols', '2', '-o', join(dir, 'm.pmml')]);
+  const s = { title: 'page', events: [{ number: 1, folds: [{ joint: 1, angle: -30.5, velocity: 45 }, { joint: 2, angle: 12.25, velocity: 45 }] },
+    { number: 2, folds: [{ joint: 1, angle: -40, velocity: 20 }] }] };
+  writeFileSync(join(dir, 's.cmml'), writeCMML(s));
+  run(['validate', join(dir, 's.cmml'), '--pattern', join(dir, 'm.pmml')]);
+  run(['convert', join(dir, 's.cmml'), join(dir, 'again.cmml'), '--pattern', join(dir, 'm.pmml')]);
+  const again = readCMML(readFileSync(join(dir, 'again.cmml'), 'utf8'));
+  // foldkit's one-event CMML of the end state: joint 1 at -40, joint 2 at 12.25, the others 0.
+  const end = new Map(again.events.flatMap((e) => e.folds).map((f) => [f.joint, f.angle]));
+  assert.equal(end.get(1), -40);
+  assert.equal(end.get(2), 12.25);
+});
+
+test('trajectory frames read back as the simulator\'s angles, in foldkit\'s sign', { skip: !cli && 'FOLDKIT_CLI is not set' }, () => {
+  const dir = mkdtempSync(join(tmpdir(), 'foldkit-frames-'));
+  const pmml = join(dir, 'm.pmml');
+  run(['generate', 'miura', '--rows', '3', '--cols', '2', '-o', pmml]);
+  run(['fold', pmml, '--fraction', '0.6', '-o', join(dir, 'f.cmml')]);
+  const sim = run(['simulate', pmml, join(dir, 'f.cmml'), '--frames', join(dir, 't.fold'), '--max-frames', '50', '--json']);
+  // The joints' end points straight from the PMML foldkit wrote (not through cmml.js).
+  const info = JSON.parse(readFileSync(join(dir, 't.fold'), 'utf8'));
+  const joints = sim.final_angles.map(({ joint }) => joint);
+  const pattern = readFileSync(pmml, 'utf8');
+  const ends = new Map([...pattern.matchAll(/<ID>(\d+)<\/ID>\s*<Coords>([^<]*)<\/Coords>/g)].map((m) => {
+    const c = m[2].trim().split(/\s+/).map(Number);
+    return [Number(m[1]), { a: { x: c[0], y: c[1] }, b: { x: c[2], y: c[3] } }];
+  }));
+  const list = joints.map((id) => ({ id, ...ends.get(id) }));
+  const { frames, final } = foldFrameAngles(info, list);
+  assert.ok(frames.length >= 2 && frames.length <= 51, `${frames.length} frames`);
+  sim.final_angles.forEach(({ angle }, k) => {
+    assert.ok(Math.abs((final[k] * 180) / Math.PI - angle) < 1e-9, `joint ${joints[k]}: ${(final[k] * 180) / Math.PI} vs ${angle}`);
+    assert.ok(Math.abs((frames[frames.length - 1][k] * 180) / Math.PI - angle) < 1e-9);
+    assert.equal(frames[0][k], 0);
+  });
+  assert.ok(sim.final_angles.some(({ angle }) => angle > 1) && sim.final_angles.some(({ angle }) => angle < -1), 'both signs occur');
+  assert.throws(() => foldFrameAngles(info, [{ id: 99, a: { x: 0.5, y: 0.5 }, b: { x: 9, y: 9 } }]), /changed since it was simulated/);
+});
