@@ -36,7 +36,7 @@ Command add_serve(CLI::App& root) {
     std::vector<std::string> files;
     std::string host = "127.0.0.1", root = ".", web = default_web_folder();
     int port = 8080;
-    double max_body_mb = 16.0, max_plan_time = 60.0, max_time = 300.0;
+    double max_body_mb = 256.0, max_plan_time = 60.0, max_time = 300.0;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("serve", "Serve the JSON API of the verbs on a local HTTP server (docs/SERVE.md)");

@@ -20,7 +20,7 @@ namespace foldkit::apps {
 
 struct ServeOptions {
   std::filesystem::path root = ".";     // every file a request names is under it
-  std::size_t max_body = 16u << 20;     // bytes of a request body; larger ones are refused (413)
+  std::size_t max_body = 256u << 20;    // bytes of a request body; larger ones are refused (413)
   std::size_t max_file = 64u << 20;     // bytes a GET /api/file returns at most
   WorkLimits limits;
   std::vector<std::string> files;       // files named on the command line (under root), listed by GET /api

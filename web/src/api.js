@@ -24,14 +24,27 @@ async function answer(response) {
   return body;
 }
 
+// The server runs one verb at a time and answers 503 to a second: the page queues its own
+// verbs, and waits out another client's (up to a minute).
+let queue = Promise.resolve();
+
+async function post(name, args) {
+  for (let tries = 0, wait = 100; ; tries++, wait = Math.min(2 * wait, 2000)) {
+    const response = await fetch(`/api/${name}`, {
+      method: 'POST',
+      headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify(args),
+    });
+    if (response.status !== 503 || tries >= 35) return answer(response);
+    await new Promise((resolve) => setTimeout(resolve, wait));
+  }
+}
+
 /** Runs a verb: `{verb, exit, log, result}`; throws ApiError when the server refuses. */
-export async function verb(name, args) {
-  const response = await fetch(`/api/${name}`, {
-    method: 'POST',
-    headers: { 'Content-Type': 'application/json' },
-    body: JSON.stringify(args),
-  });
-  return answer(response);
+export function verb(name, args) {
+  const run = queue.then(() => post(name, args));
+  queue = run.catch(() => {});
+  return run;
 }
 
 /** `GET /api`: the server's verbs, the files it was started on and its limits. */

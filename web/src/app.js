@@ -71,7 +71,9 @@ let checkTimer = null;
 function patternChanged(model) {
   app.model = model;
   app.simulation = null;
+  const folds = foldCount(app.sequence);
   pruneSequence(app.sequence, model.joints().map((j) => j.id));
+  if (foldCount(app.sequence) !== folds) sequenceEdited();
   showSequence();
   view.setPattern(session.viewPattern(model));
   view.setAngles(new Float64Array(model.joints().length));
@@ -161,6 +163,15 @@ function selectionChanged(selection) {
   if (selection.actors && selection.actors.length && !$('load-actor').value) $('load-actor').value = selection.actors[selection.actors.length - 1];
 }
 
+// The sequence no longer matches the file it was read from.
+function sequenceEdited() {
+  delete app.sequence.file;
+}
+
+function foldCount(sequence) {
+  return sequence.events.reduce((n, e) => n + e.folds.length, 0);
+}
+
 function showSequence() {
   timeline.setEvents(app.sequence, app.currentEvent);
   $('event-number').value = app.currentEvent;
@@ -176,6 +187,7 @@ function setSelectedFolds() {
   if (!(velocity > 0)) return log('the velocity must be positive (degrees per second)');
   app.currentEvent = Number($('event-number').value) || 0;
   for (const joint of ids) setFold(app.sequence, app.currentEvent, { joint, angle, velocity });
+  sequenceEdited();
   showSequence();
   previewEnd();
 }
@@ -185,6 +197,7 @@ function unsetSelectedFolds() {
   const event = app.sequence.events.find((e) => e.number === app.currentEvent);
   if (event) event.folds = event.folds.filter((f) => !ids.has(f.joint));
   pruneSequence(app.sequence, app.model.joints().map((j) => j.id));
+  sequenceEdited();
   showSequence();
 }
 
@@ -202,6 +215,7 @@ function moveEvent(delta) {
   const other = events[k + delta];
   if (k < 0 || !other) return;
   [events[k].folds, other.folds] = [other.folds, events[k].folds];
+  sequenceEdited();
   app.currentEvent = other.number;
   showSequence();
 }
@@ -420,7 +434,7 @@ function wire() {
   $('clear-fold').addEventListener('click', unsetSelectedFolds);
   $('set-joint').addEventListener('click', () => {
     for (const id of editor.selection.joints || []) app.model.setJoint(id, { spring: Number($('spring').value), damping: Number($('damping').value) });
-    patternChanged(app.model);
+    editor.commit();  // an undoable edit like any other; it tells patternChanged
   });
   $('event-number').addEventListener('change', () => { app.currentEvent = Number($('event-number').value) || 0; showSequence(); });
   $('add-event').addEventListener('click', () => {
@@ -430,6 +444,7 @@ function wire() {
   });
   $('delete-event').addEventListener('click', () => {
     app.sequence.events = app.sequence.events.filter((e) => e.number !== app.currentEvent);
+    sequenceEdited();
     showSequence();
   });
   $('event-earlier').addEventListener('click', () => moveEvent(-1));
@@ -443,6 +458,7 @@ function wire() {
 async function start() {
   wire();
   lattice();
+  app.interactiveAt = performance.now();  // ms after navigation began: the page answers input from here
   editor.snap = { ...editor.snap, grid: Number($('snap-grid').value) || null };
   const server = await task('server', () => api.index());
   // The server's files: the first pattern is opened, then the first sequence.

@@ -13,6 +13,14 @@ export function sessionFiles(name, folder = '') {
   };
 }
 
+/** Where foldkit reads `sequence` from: the file it came from while unedited (`sequence.file`,
+ * a fold of a large sheet is tens of MB), else the session's CMML, written now. */
+export async function sequencePath(sequence, files) {
+  if (sequence.file) return sequence.file;
+  await api.writeFile(files.sequence, writeCMML(sequence));
+  return files.sequence;
+}
+
 /** The pattern in the form the 3D view and the kinematics take (actors and joints by index). */
 export function viewPattern(model) {
   const actorIds = model.actors();
@@ -48,8 +56,8 @@ export async function stateDof(files, jointIds, degrees) {
 /** Simulates the sequence: {result (simulate's JSON), exit, frames (radians per joint, in
  * `joints` order), final}. `options` are simulate's arguments (e.g. {'no-collision': true}). */
 export async function simulate(model, sequence, files, options = {}) {
-  await api.writeFile(files.sequence, writeCMML(sequence));
-  const run = await api.verb('simulate', { pattern: files.pattern, sequence: files.sequence, frames: files.frames,
+  const path = await sequencePath(sequence, files);
+  const run = await api.verb('simulate', { pattern: files.pattern, sequence: path, frames: files.frames,
     'max-frames': 600, ...options });
   const trajectory = JSON.parse(await api.readFile(files.frames));
   const { frames, final } = foldFrameAngles(trajectory, model.joints());
@@ -59,16 +67,16 @@ export async function simulate(model, sequence, files, options = {}) {
 /** Projected folding to `fraction` of the way (foldkit fold): the sequence it wrote. */
 export async function foldTo(files, fraction, options = {}) {
   const run = await api.verb('fold', { pattern: files.pattern, fraction, output: files.folded, ...options });
-  const sequence = run.exit === 0 ? readCMML(await api.readFile(files.folded)) : null;
+  const sequence = run.exit === 0 ? await readSequence(files.folded) : null;
   return { run, sequence };
 }
 
 /** Plans from flat to the sequence's end state (foldkit plan): the planned sequence, or null
  * with the planner's reason (exit 4). */
 export async function plan(sequence, files, options) {
-  await api.writeFile(files.sequence, writeCMML(sequence));
-  const run = await api.verb('plan', { pattern: files.pattern, goal: files.sequence, output: files.plan, ...options });
-  return { run, sequence: run.exit === 0 ? readCMML(await api.readFile(files.plan)) : null };
+  const goal = await sequencePath(sequence, files);
+  const run = await api.verb('plan', { pattern: files.pattern, goal, output: files.plan, ...options });
+  return { run, sequence: run.exit === 0 ? await readSequence(files.plan) : null };
 }
 
 /** Static equilibrium of the folded end state under a load (foldkit stiffness). */
@@ -77,11 +85,15 @@ export async function stiffness(sequence, files, { fixed, load, force }) {
     `    <Force>${force.map(String).join(' ')}</Force>`, '  </Load>', '</LoadCase>', ''].join('\n');
   await api.writeFile(files.loadcase, loadcase);
   const args = { pattern: files.pattern, loadcase: files.loadcase };
-  if (sequence.events.length) {
-    await api.writeFile(files.sequence, writeCMML(sequence));
-    args.state = files.sequence;
-  }
+  if (sequence.events.length) args.state = await sequencePath(sequence, files);
   return (await api.verb('stiffness', args)).result;
+}
+
+/** A CMML file of the root, remembered as the sequence's file until the page edits it. */
+export async function readSequence(path) {
+  const sequence = readCMML(await api.readFile(path));
+  sequence.file = path;
+  return sequence;
 }
 
 /** A generated pattern (foldkit generate KIND), written as the session's PMML and read back. */
@@ -93,7 +105,7 @@ export async function generate(kind, parameters, files) {
 /** Opens a file of the root: a PMML or FOLD pattern (FOLD through foldkit convert) → {model},
  * a CMML → {sequence}. */
 export async function open(path, files) {
-  if (/\.cmml$/i.test(path)) return { sequence: readCMML(await api.readFile(path)) };
+  if (/\.cmml$/i.test(path)) return { sequence: await readSequence(path) };
   if (/\.fold$/i.test(path)) {
     await api.verb('convert', { input: path, output: files.pattern });
     return { model: PatternModel.fromPMML(await api.readFile(files.pattern)) };
@@ -107,8 +119,7 @@ export async function open(path, files) {
 export async function exportAs(kind, sequence, files) {
   const output = kind === 'fold' ? files.fold : files.svg;
   if (sequence.events.length) {
-    await api.writeFile(files.sequence, writeCMML(sequence));
-    await api.verb('convert', { input: files.sequence, pattern: files.pattern, output });
+    await api.verb('convert', { input: await sequencePath(sequence, files), pattern: files.pattern, output });
   } else {
     await api.verb('convert', { input: files.pattern, output });
   }

@@ -95,3 +95,113 @@ test('the files named on the command line open, simulate, and show the CLI\'s nu
   await keepScreenshot(page, 'serve-miura');
   assert.deepEqual(page.errors, []);
 });
+
+// Model point → the page's pixel for the mouse.
+async function at(page, x, y) {
+  return page.evaluate((p) => window.foldkit.editor.toClient(p), { x, y });
+}
+
+async function click(page, x, y, modifiers = []) {
+  const p = await at(page, x, y);
+  for (const key of modifiers) await page.keyboard.down(key);
+  await page.mouse.click(p.x, p.y);
+  for (const key of modifiers) await page.keyboard.up(key);
+}
+
+async function drag(page, from, to) {
+  const a = await at(page, ...from);
+  const b = await at(page, ...to);
+  await page.mouse.move(a.x, a.y);
+  await page.mouse.down();
+  await page.mouse.move((a.x + b.x) / 2, (a.y + b.y) / 2, { steps: 4 });
+  await page.mouse.move(b.x, b.y, { steps: 4 });
+  await page.mouse.up();
+}
+
+async function tool(page, name) {
+  await page.click(`[data-tool="${name}"]`);
+}
+
+async function checked(page) {
+  return page.evaluate(() => window.foldkit.checkNow());
+}
+
+test('a pattern drawn with the mouse, grouped, folded and simulated matches the CLI on the files it saved', async () => {
+  const { root, server } = await serve('draw');
+  const page = await openApp(browser, server.url);
+  await page.$eval('#name', (e) => { e.value = 'drawn'; });
+  // A 2 × 2 grid lattice of unit cells, dragged from (0, 0) to (2, 2).
+  await page.$eval('#lattice', (e) => { e.value = 'rows=2 cols=2 diagonals=none'; });
+  await tool(page, 'grid');
+  await drag(page, [0, 0], [2, 2]);
+  // A triangle beside it, sharing the grid's edge (2, 0)-(2, 1): clicks snap to the 0.5 grid.
+  await tool(page, 'triangle');
+  await click(page, 2, 0);
+  await click(page, 3, 0);
+  await click(page, 2, 1);
+  let check = await checked(page);
+  assert.ok(check.ok, JSON.stringify(check.problems));
+  // 4 cells and the triangle; joints: 4 between the cells and 1 to the triangle.
+  assert.equal(await shown(page, 'n-actors'), 5);
+  assert.equal(await shown(page, 'n-joints'), 5);
+  // Group the two lower cells (both triangles of each, whichever way the cells are split): the
+  // crease between them goes.
+  await tool(page, 'select');
+  await click(page, 0.5, 0.1);
+  for (const [x, y] of [[0.5, 0.9], [1.5, 0.1], [1.5, 0.9]]) await click(page, x, y, ['Shift']);
+  await page.click('[data-action="group"]');
+  check = await checked(page);
+  assert.ok(check.ok, JSON.stringify(check.problems));
+  assert.equal(await shown(page, 'n-actors'), 4);
+  assert.equal(await shown(page, 'n-joints'), 4);
+  // Undo and redo the grouping.
+  await page.click('#undo');
+  assert.equal((await checked(page)).info.joints, 5);
+  await page.click('#redo');
+  assert.equal((await checked(page)).info.joints, 4);
+  const info = foldkit(['info', join(root, 'drawn.pmml'), '--json']).json;
+  assert.equal(info.joints, 4);
+  assert.equal(info.actors, 4);
+  // Fold the triangle up by 60 degrees (a valley), in event 1, and simulate.
+  await click(page, 2, 0.5);
+  assert.equal(await page.$eval('#selected-joints', (e) => e.textContent.split(',').length), 1);
+  await page.$eval('#fold-angle', (e) => { e.value = '-60'; });
+  await page.$eval('#fold-velocity', (e) => { e.value = '30'; });
+  await page.$eval('#event-number', (e) => { e.value = '1'; });
+  await page.click('#set-fold');
+  await page.evaluate(() => window.foldkit.simulateNow());
+  await idle(page);
+  const cli = cliNumbers(root, 'drawn.pmml', 'drawn.cmml');
+  assert.equal(cli.sim.events.length, 1);
+  assert.equal(await shown(page, 'n-joints'), cli.info.joints);
+  assert.equal(await shown(page, 'n-collisions'), cli.sim.collision_count);
+  assert.ok(close(await shown(page, 'closure-max'), cli.sim.max_closure_error));
+  assert.equal(await shown(page, 'n-dof'), cli.dof.dof);
+  assert.ok(close(await shown(page, 'closure-state'), cli.dof.closure_error) || (await shown(page, 'closure-state')) < 1e-9);
+  const folded = cli.sim.final_angles.find((a) => Math.abs(a.angle) > 1);
+  assert.ok(folded && Math.abs(folded.angle + 60) < 1e-6, JSON.stringify(cli.sim.final_angles));
+  // Saved as FOLD through foldkit convert: the CLI reads it back as the same pattern.
+  await page.click('[data-save="fold"]');
+  await idle(page);
+  const again = foldkit(['info', join(root, 'drawn.fold'), '--json']).json;
+  assert.equal(again.joints, 4);
+  assert.equal(again.triangles, info.triangles);
+  await assertNotBlank(page, 'folded drawing');
+  await keepScreenshot(page, 'serve-drawn');
+  assert.deepEqual(page.errors, []);
+});
+
+test('a pattern foldkit refuses lists its problems at their lines and marks them', async () => {
+  const { server } = await serve('bad');
+  const page = await openApp(browser, server.url);
+  // Two triangles that overlap: foldkit names the overlap, the page lists it.
+  await tool(page, 'triangle');
+  for (const [x, y] of [[0, 0], [2, 0], [0, 2], [0.5, 0.5], [2.5, 0.5], [0.5, 2.5]]) await click(page, x, y);
+  const check = await checked(page);
+  assert.equal(check.ok, false);
+  const items = await page.$$eval('#problems li', (list) => list.map((e) => e.textContent));
+  assert.ok(items.length >= 1, 'problems listed');
+  assert.match(items.join('\n'), /line \d+: .*overlap/);
+  assert.equal(await page.$eval('#n-joints', (e) => e.textContent), '–');
+  assert.deepEqual(page.errors, []);
+});

@@ -70,9 +70,10 @@ export async function openApp(browser, url) {
   page.setDefaultTimeout(30000);
   page.errors = [];
   page.on('pageerror', (e) => page.errors.push(String(e)));
-  page.on('console', (m) => { if (m.type() === 'error') page.errors.push(m.text()); });
+  // Script errors count; the browser's own note of an HTTP 4xx answer (a refusal the page shows) does not.
+  page.on('console', (m) => { if (m.type() === 'error' && !/^Failed to load resource: the server responded with a status of 4/.test(m.text())) page.errors.push(m.text()); });
   await page.goto(url, { waitUntil: 'load' });
-  await page.waitForSelector('body[data-ready="true"]');
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 60000 });
   await idle(page);
   return page;
 }
