@@ -57,6 +57,7 @@ Command add_serve(CLI::App& root) {
             o.root = opt->root;
             o.files = opt->files;
             o.web = opt->web;
+            o.host = opt->host;
             o.max_body = static_cast<std::size_t>(opt->max_body_mb * 1024 * 1024);
             o.limits.max_plan_time = opt->max_plan_time;
             o.limits.max_time = opt->max_time;

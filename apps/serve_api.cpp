@@ -1,6 +1,7 @@
 #include "serve_api.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -54,15 +55,46 @@ bool text_format(const std::string& path) {
   return false;
 }
 
+// A file of the root as data: never as a page or a script, whatever its name (GET /api/file adds
+// nosniff and a sandbox, so not even an SVG runs script on the API's origin).
 std::string content_type(const std::string& path) {
   if (has_extension(path, ".svg")) return "image/svg+xml";
+  if (has_extension(path, ".fold") || has_extension(path, ".json")) return "application/json";
+  if (has_extension(path, ".pmml") || has_extension(path, ".cmml")) return "application/xml";
+  return "text/plain; charset=utf-8";
+}
+
+std::string app_content_type(const std::string& path) {
   if (has_extension(path, ".html")) return "text/html; charset=utf-8";
   if (has_extension(path, ".js")) return "text/javascript; charset=utf-8";
   if (has_extension(path, ".css")) return "text/css; charset=utf-8";
   if (has_extension(path, ".png")) return "image/png";
-  if (has_extension(path, ".fold") || has_extension(path, ".json")) return "application/json";
-  if (has_extension(path, ".pmml") || has_extension(path, ".cmml")) return "application/xml";
-  return "text/plain";
+  return content_type(path);
+}
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+bool loopback_name(const std::string& host) {
+  return host == "localhost" || host == "::1" || host == "[::1]" || host.rfind("127.", 0) == 0;
+}
+
+// Why a request did not come from this server's own pages or a local program: a web page elsewhere
+// that posts to it (CSRF) or a name that resolves here (DNS rebinding) must not run verbs or read
+// files. Empty when it may be served.
+std::string foreign_request(const httplib::Request& req, const std::string& bound) {
+  const std::string host = req.get_header_value("Host");
+  std::string name = host.substr(0, host[0] == '[' ? host.find(']') + 1 : host.rfind(':'));
+  if (name.empty()) name = host;
+  if (loopback_name(bound) && !loopback_name(lowercase(name)) && lowercase(name) != lowercase(bound))
+    return "Host '" + host + "' is not this machine: the server listens on " + bound + " and answers only its own names";
+  const std::string origin = req.get_header_value("Origin");
+  if (!origin.empty() && origin != "http://" + host)
+    return "requests from pages of " + origin + " are refused: only the server's own page may use the API";
+  if (req.get_header_value("Sec-Fetch-Site") == "cross-site") return "cross-site requests are refused";
+  return "";
 }
 
 // The CLI's messages name files by the absolute paths the server passed; a client named them
@@ -142,8 +174,19 @@ void ServeApi::install(httplib::Server& server) {
   // 0.5 s; none: 0.01 s and 0.2 s), and on this machine's own network compression gains nothing.
   // The library asks the request's Accept-Encoding, and its pre-routing hook sees that request
   // before any handler (the request object is not const, only the hook's view of it).
-  server.set_pre_routing_handler([](const httplib::Request& req, httplib::Response&) {
+  // The same hook refuses requests from elsewhere (foreign_request), and verbs not sent as JSON: a
+  // page of another site can post a form or text/plain without the browser asking first.
+  server.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
     const_cast<httplib::Request&>(req).headers.erase("Accept-Encoding");
+    const std::string why = foreign_request(req, options_.host);
+    if (!why.empty()) {
+      refuse(res, 403, why);
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    if (req.method == "POST" && req.get_header_value("Content-Type").rfind("application/json", 0) != 0) {
+      refuse(res, 415, "send the verb's arguments as a JSON object with Content-Type: application/json");
+      return httplib::Server::HandlerResponse::Handled;
+    }
     return httplib::Server::HandlerResponse::Unhandled;
   });
 
@@ -198,6 +241,8 @@ void ServeApi::get_file(const httplib::Request& req, httplib::Response& res) con
     const fs::path p = paths_.input(name);
     if (fs::file_size(p) > options_.max_file) return refuse(res, 413, name + ": larger than the server returns", kInvalidInput);
     res.set_content(read_file(p), content_type(name));
+    res.set_header("X-Content-Type-Options", "nosniff");
+    res.set_header("Content-Security-Policy", "sandbox");
   } catch (const PathRefused& e) {
     refuse(res, e);
   }
@@ -210,8 +255,9 @@ void ServeApi::get_app_file(const httplib::Request& req, httplib::Response& res)
   if (!app_file(name)) return refuse(res, 404, req.path + ": not a file of the browser app", kInvalidInput);
   try {
     const fs::path p = web_->input(name);
-    res.set_content(read_file(p), content_type(name));
+    res.set_content(read_file(p), app_content_type(name));
     res.set_header("Cache-Control", "no-cache");  // an edited module shows on reload
+    res.set_header("X-Content-Type-Options", "nosniff");
   } catch (const PathRefused& e) {
     refuse(res, 404, req.path + ": " + e.what(), kInvalidInput);
   }

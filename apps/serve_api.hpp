@@ -25,6 +25,7 @@ struct ServeOptions {
   WorkLimits limits;
   std::vector<std::string> files;       // files named on the command line (under root), listed by GET /api
   std::filesystem::path web;            // the browser app's folder (web/); empty: the API only
+  std::string host = "127.0.0.1";       // the address it listens on: on a loopback one, only loopback names are served
 };
 
 class ServeApi {

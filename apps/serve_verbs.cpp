@@ -98,7 +98,7 @@ std::vector<ArgSpec> generate_args() {
   std::vector<ArgSpec> args = {kind, option_arg("output", K::Output, true), option_arg("title", K::Text), option_arg("sectors", K::Text)};
   for (const char* n : {"rows", "cols", "units", "cubes", "rings", "spokes", "degree", "panels", "seed"}) args.push_back(option_arg(n, K::Integer));
   for (const char* n : {"spring", "damping", "a", "b", "angle", "length", "half-width", "bow", "tile", "cell", "ring-width", "width", "height",
-                        "side", "twist", "pleat"})
+                        "side", "twist", "pleat", "radius"})
     args.push_back(option_arg(n, K::Number));
   return args;
 }

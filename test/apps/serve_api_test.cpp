@@ -491,4 +491,44 @@ TEST(ServeApi, ServesTheBrowserAppAndNothingElse) {
   EXPECT_EQ(foldkit({"serve", "--web", web + "/src", "--root", s.root()}).exit, 2);
 }
 
+// Only this machine's own pages and programs are served: a page of another site that posts to the
+// server (CSRF), a name that resolves to it (DNS rebinding) and a verb not sent as JSON are refused
+// before anything runs; files come back as data, never as a page that could script the API.
+TEST(ServeApi, RequestsFromOtherSitesAreRefused) {
+  Server s("foreign");
+  ASSERT_GT(s.port(), 0) << s.log();
+  generate(s, {"miura", "--rows", "2", "--cols", "2"}, "m2.pmml");
+  const std::string here = "127.0.0.1:" + std::to_string(s.port());
+  const std::string body = R"({"kind": "grid", "rows": 1, "cols": 1, "output": "m2.pmml"})";
+  const std::string before = slurp(s.path("m2.pmml"));
+  const auto post = [&](const httplib::Headers& headers, const std::string& type = "application/json") {
+    const auto r = s.client().Post("/api/generate", headers, body, type.c_str());
+    return r ? r->status : -1;
+  };
+  EXPECT_EQ(post({{"Host", "evil.example"}}), 403);
+  EXPECT_EQ(post({{"Host", "evil.example:" + std::to_string(s.port())}}), 403);
+  EXPECT_EQ(post({{"Origin", "http://evil.example"}}), 403);
+  EXPECT_EQ(post({{"Origin", "http://localhost:3000"}}), 403);  // another port of this machine is another site
+  EXPECT_EQ(post({{"Origin", "null"}}), 403);
+  EXPECT_EQ(post({{"Sec-Fetch-Site", "cross-site"}}), 403);
+  EXPECT_EQ(post({}, "text/plain"), 415);  // what a form or a no-cors fetch can send
+  EXPECT_EQ(slurp(s.path("m2.pmml")), before);
+  const auto read = s.client().Get("/api/file?path=m2.pmml", {{"Host", "rebound.example:" + std::to_string(s.port())}});
+  ASSERT_TRUE(read);
+  EXPECT_EQ(read->status, 403);
+  EXPECT_EQ(read->body.find("<PMML>"), std::string::npos);
+  // The server's own page, and local names.
+  EXPECT_EQ(post({{"Origin", "http://" + here}}), 200);
+  EXPECT_EQ(s.client().Get("/api", {{"Host", "localhost:" + std::to_string(s.port())}})->status, 200);
+  EXPECT_EQ(s.client().Get("/api", {{"Host", "[::1]:" + std::to_string(s.port())}})->status, 200);
+  // A page among the root's files comes back as text that cannot run.
+  std::ofstream(s.path("page.html")) << "<script>fetch('/api/file?path=m2.pmml')</script>";
+  const auto html = s.client().Get("/api/file?path=page.html");
+  ASSERT_TRUE(html);
+  EXPECT_EQ(html->status, 200);
+  EXPECT_EQ(html->get_header_value("Content-Type"), "text/plain; charset=utf-8");
+  EXPECT_EQ(html->get_header_value("X-Content-Type-Options"), "nosniff");
+  EXPECT_EQ(html->get_header_value("Content-Security-Policy"), "sandbox");
+}
+
 }  // namespace

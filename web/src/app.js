@@ -5,7 +5,7 @@ import { PatternModel } from './model.js';
 import { Editor2D } from './editor2d.js';
 import { View3D } from './view3d.js';
 import { Timeline } from './timeline.js';
-import { emptySequence, setFold, pruneSequence, readCMML, writeCMML, anglesAfterEvents } from './cmml.js';
+import { emptySequence, setFold, readCMML, writeCMML, anglesAfterEvents } from './cmml.js';
 import * as session from './session.js';
 
 const $ = (id) => document.getElementById(id);
@@ -71,28 +71,36 @@ let checkTimer = null;
 function patternChanged(model) {
   app.model = model;
   app.simulation = null;
-  const folds = foldCount(app.sequence);
-  pruneSequence(app.sequence, model.joints().map((j) => j.id));
-  if (foldCount(app.sequence) !== folds) sequenceEdited();
+  app.stateDof = null;
+  timeline.setTrajectory(0, 0, []);
+  // Folds of joints an edit removed stay in the sequence (undo may bring the joints back); foldkit
+  // is given the others (session.sequencePath).
   showSequence();
   view.setPattern(session.viewPattern(model));
   view.setAngles(new Float64Array(model.joints().length));
-  setNumber('n-actors', model.actors().length);
-  for (const id of ['n-joints', 'n-dof', 'closure-state', 'closure-max', 'n-collisions', 'verdict']) setNumber(id, null);
+  for (const id of ['n-actors', 'n-joints', 'n-dof', 'closure-state', 'closure-max', 'n-collisions', 'verdict']) setNumber(id, null);
   clearTimeout(checkTimer);
   checkTimer = setTimeout(() => checkNow(), 300);
+}
+
+// Whether `model` at `version` is still what the page shows (the editor edits it in place).
+function current(model, version) {
+  return model === app.model && model.version === version;
 }
 
 /** Saves the pattern and shows foldkit's verdict on it; resolves when the numbers are shown. */
 async function checkNow() {
   clearTimeout(checkTimer);
   const model = app.model;
+  const version = model.version;
   if (!model.triangles.length) return null;
   const check = await task('check', () => session.checkPattern(model, files()));
-  if (!check || model !== app.model) return check;
+  // An edit while foldkit checked: its answer is about a pattern no longer shown.
+  if (!check || !current(model, version)) return null;
   app.check = check;
   showProblems(check.problems);
   if (check.ok) {
+    setNumber('n-actors', check.info.actors);
     setNumber('n-joints', check.info.joints);
     setNumber('n-dof', check.dof.dof);
     setNumber('closure-state', check.dof.closure_error);
@@ -168,10 +176,6 @@ function sequenceEdited() {
   delete app.sequence.file;
 }
 
-function foldCount(sequence) {
-  return sequence.events.reduce((n, e) => n + e.folds.length, 0);
-}
-
 function showSequence() {
   timeline.setEvents(app.sequence, app.currentEvent);
   $('event-number').value = app.currentEvent;
@@ -196,7 +200,7 @@ function unsetSelectedFolds() {
   const ids = new Set(editor.selection.joints || []);
   const event = app.sequence.events.find((e) => e.number === app.currentEvent);
   if (event) event.folds = event.folds.filter((f) => !ids.has(f.joint));
-  pruneSequence(app.sequence, app.model.joints().map((j) => j.id));
+  app.sequence.events = app.sequence.events.filter((e) => e.folds.length);
   sequenceEdited();
   showSequence();
 }
@@ -225,6 +229,7 @@ const timeline = new Timeline($('timeline'), {
   onScrub: (frame) => showFrame(frame),
   onScrubEnd: (frame) => measureState(frame),
 });
+app.timeline = timeline;
 
 // --- simulation and the 3D view --------------------------------------------------------------
 
@@ -246,7 +251,7 @@ async function measureState(frame) {
   if (!sim || !sim.frames.length) return null;
   const joints = app.model.joints();
   const degrees = Array.from(sim.frames[Math.min(frame, sim.frames.length - 1)], (r) => (r * 180) / Math.PI);
-  const dof = await task('dof', () => session.stateDof(files(), joints.map((j) => j.id), degrees));
+  const dof = await task('dof', () => session.stateDof(sim.files, joints.map((j) => j.id), degrees));
   if (dof && sim === app.simulation) {
     app.stateDof = dof;
     setNumber('n-dof', dof.dof);
@@ -261,8 +266,13 @@ async function simulateNow() {
   if (!check || !check.ok) return log('the pattern is not valid: see the problems listed');
   if (!app.sequence.events.length) return log('no folds yet: select joints and press "Set fold"');
   const options = $('collisions').checked ? {} : { 'no-collision': true };
-  const sim = await task('simulate', () => session.simulate(app.model, app.sequence, files(), options));
+  const { model } = app;
+  const version = model.version;
+  const f = files();
+  const sim = await task('simulate', () => session.simulate(model, app.sequence, f, options));
   if (!sim) return null;
+  if (!current(model, version)) return log('the pattern changed while it was simulated: simulate again');
+  sim.files = f;
   app.simulation = sim;
   const r = sim.result;
   setNumber('closure-max', r.max_closure_error);
@@ -270,8 +280,10 @@ async function simulateNow() {
   $('verdict').textContent = r.ok ? 'valid' : `invalid: ${r.status}`;
   log(sim.log);
   timeline.setTrajectory(sim.frames.length, r.duration, r.collisions);
-  showFrame(timeline.frame);
+  // Framed on the first state (the flat sheet, as a rule the widest), so no frame leaves the view.
+  if (sim.frames.length) view.setAngles(sim.frames[0]);
   view.fit();
+  showFrame(timeline.frame);
   await measureState(timeline.frame);
   return sim;
 }
@@ -279,7 +291,6 @@ app.simulateNow = simulateNow;
 
 async function loadSequence(sequence) {
   app.sequence = sequence;
-  pruneSequence(app.sequence, app.model.joints().map((j) => j.id));
   app.currentEvent = sequence.events.length ? sequence.events[sequence.events.length - 1].number : 1;
   showSequence();
   return simulateNow();
@@ -301,7 +312,7 @@ async function planNow() {
   if (!app.sequence.events.length) return log('plan needs a goal: set folds whose end state is the goal');
   const options = { planner: $('planner').value, time: Number($('plan-time').value), seed: Number($('plan-seed').value) };
   if (!$('collisions').checked) options['no-collision'] = true;
-  const out = await task('plan', () => session.plan(app.sequence, files(), options));
+  const out = await task('plan', () => session.plan(app.model, app.sequence, files(), options));
   if (!out) return;
   log(out.run.log);
   if (out.sequence) await loadSequence(out.sequence);
@@ -316,7 +327,7 @@ async function stiffnessNow() {
   const force = $('force').value.trim().split(/\s+/).map(Number);
   if (!fixed.length || !Number.isInteger(load) || force.length !== 3 || !force.every(Number.isFinite))
     return log('stiffness: give fixed actor IDs, the loaded actor and a force "fx fy fz"');
-  const r = await task('stiffness', () => session.stiffness(app.sequence, files(), { fixed, load, force }));
+  const r = await task('stiffness', () => session.stiffness(app.model, app.sequence, files(), { fixed, load, force }));
   if (!r) return;
   const b = app.model.bounds();
   const size = Math.hypot(b.maxX - b.minX, b.maxY - b.minY);
@@ -394,7 +405,7 @@ async function save(kind) {
     await task('save', () => api.writeFile(f.sequence, writeCMML(app.sequence)));
     return log(`saved ${f.sequence}`);
   }
-  const text = await task('export', () => session.exportAs(kind, app.sequence, f));
+  const text = await task('export', () => session.exportAs(kind, app.model, app.sequence, f));
   if (text === null) return;
   log(`saved ${kind === 'fold' ? f.fold : f.svg}`);
   download(name(kind === 'fold' ? f.fold : f.svg), text, kind === 'fold' ? 'application/json' : 'image/svg+xml');
@@ -433,7 +444,11 @@ function wire() {
   $('set-fold').addEventListener('click', setSelectedFolds);
   $('clear-fold').addEventListener('click', unsetSelectedFolds);
   $('set-joint').addEventListener('click', () => {
-    for (const id of editor.selection.joints || []) app.model.setJoint(id, { spring: Number($('spring').value), damping: Number($('damping').value) });
+    const spring = Number($('spring').value);
+    const damping = Number($('damping').value);
+    if (!(spring >= 0 && damping >= 0 && Number.isFinite(spring) && Number.isFinite(damping)))
+      return log('spring and damping must be finite and not negative');
+    for (const id of editor.selection.joints || []) app.model.setJoint(id, { spring, damping });
     editor.commit();  // an undoable edit like any other; it tells patternChanged
   });
   $('event-number').addEventListener('change', () => { app.currentEvent = Number($('event-number').value) || 0; showSequence(); });

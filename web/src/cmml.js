@@ -78,13 +78,6 @@ export function setFold(sequence, number, fold) {
   return event;
 }
 
-/** Drops joints that no longer exist (after an edit of the pattern) and events left empty. */
-export function pruneSequence(sequence, jointIds) {
-  const alive = new Set(jointIds);
-  for (const event of sequence.events) event.folds = event.folds.filter((f) => alive.has(f.joint));
-  sequence.events = sequence.events.filter((e) => e.folds.length > 0);
-}
-
 function coordKey(p, scale) {
   return `${Math.round(p[0] / scale)},${Math.round(p[1] / scale)}`;
 }

@@ -4,7 +4,8 @@ import * as api from './api.js';
 import { writeCMML, readCMML, foldFrameAngles } from './cmml.js';
 import { PatternModel } from './model.js';
 
-/** Files of the session named `name` in `folder` (relative to the server's root). */
+/** Files of the session named `name` in `folder` (relative to the server's root); the page writes
+ * and overwrites them as it goes. */
 export function sessionFiles(name, folder = '') {
   const base = (folder ? `${folder}/` : '') + name;
   return {
@@ -14,10 +15,16 @@ export function sessionFiles(name, folder = '') {
 }
 
 /** Where foldkit reads `sequence` from: the file it came from while unedited (`sequence.file`,
- * a fold of a large sheet is tens of MB), else the session's CMML, written now. */
-export async function sequencePath(sequence, files) {
-  if (sequence.file) return sequence.file;
-  await api.writeFile(files.sequence, writeCMML(sequence));
+ * a fold of a large sheet is tens of MB), else the session's CMML, written now. Folds of joints
+ * the pattern no longer has (an edit removed them; undo may bring them back) are left out of
+ * what foldkit reads. */
+export async function sequencePath(sequence, files, model) {
+  const alive = new Set(model.joints().map((j) => j.id));
+  const live = sequence.events.map((e) => ({ number: e.number, folds: e.folds.filter((f) => alive.has(f.joint)) }))
+    .filter((e) => e.folds.length);
+  const dropped = sequence.events.reduce((n, e) => n + e.folds.length, 0) - live.reduce((n, e) => n + e.folds.length, 0);
+  if (sequence.file && !dropped) return sequence.file;
+  await api.writeFile(files.sequence, writeCMML({ title: sequence.title, events: live }));
   return files.sequence;
 }
 
@@ -56,7 +63,7 @@ export async function stateDof(files, jointIds, degrees) {
 /** Simulates the sequence: {result (simulate's JSON), exit, frames (radians per joint, in
  * `joints` order), final}. `options` are simulate's arguments (e.g. {'no-collision': true}). */
 export async function simulate(model, sequence, files, options = {}) {
-  const path = await sequencePath(sequence, files);
+  const path = await sequencePath(sequence, files, model);
   const run = await api.verb('simulate', { pattern: files.pattern, sequence: path, frames: files.frames,
     'max-frames': 600, ...options });
   const trajectory = JSON.parse(await api.readFile(files.frames));
@@ -73,19 +80,19 @@ export async function foldTo(files, fraction, options = {}) {
 
 /** Plans from flat to the sequence's end state (foldkit plan): the planned sequence, or null
  * with the planner's reason (exit 4). */
-export async function plan(sequence, files, options) {
-  const goal = await sequencePath(sequence, files);
+export async function plan(model, sequence, files, options) {
+  const goal = await sequencePath(sequence, files, model);
   const run = await api.verb('plan', { pattern: files.pattern, goal, output: files.plan, ...options });
   return { run, sequence: run.exit === 0 ? await readSequence(files.plan) : null };
 }
 
 /** Static equilibrium of the folded end state under a load (foldkit stiffness). */
-export async function stiffness(sequence, files, { fixed, load, force }) {
+export async function stiffness(model, sequence, files, { fixed, load, force }) {
   const loadcase = ['<LoadCase>', `  <Fixed>${fixed.join(' ')}</Fixed>`, '  <Load>', `    <ActorID>${load}</ActorID>`,
     `    <Force>${force.map(String).join(' ')}</Force>`, '  </Load>', '</LoadCase>', ''].join('\n');
   await api.writeFile(files.loadcase, loadcase);
   const args = { pattern: files.pattern, loadcase: files.loadcase };
-  if (sequence.events.length) args.state = await sequencePath(sequence, files);
+  if (sequence.events.length) args.state = await sequencePath(sequence, files, model);
   return (await api.verb('stiffness', args)).result;
 }
 
@@ -116,10 +123,10 @@ export async function open(path, files) {
 
 /** Exports through foldkit convert: FOLD (with one frame per event when there is a sequence) or
  * SVG (of the end state); returns the file's text. */
-export async function exportAs(kind, sequence, files) {
+export async function exportAs(kind, model, sequence, files) {
   const output = kind === 'fold' ? files.fold : files.svg;
   if (sequence.events.length) {
-    await api.verb('convert', { input: await sequencePath(sequence, files), pattern: files.pattern, output });
+    await api.verb('convert', { input: await sequencePath(sequence, files, model), pattern: files.pattern, output });
   } else {
     await api.verb('convert', { input: files.pattern, output });
   }

@@ -92,9 +92,9 @@ export class View3D {
   /**
    * @param {HTMLElement} container the canvas fills it and follows its size
    * @param {{background?: number|string, colourBySign?: boolean}} [options] clear colour (default
-   *   light grey); colourBySign: the initial value of the colourBySign property
+   *   blue-grey, against which the paper-white facets stand out); colourBySign: the initial value of the colourBySign property
    */
-  constructor(container, { background = 0xf0f0f0, colourBySign = false } = {}) {
+  constructor(container, { background = 0xd9dee5, colourBySign = false } = {}) {
     this.container = container;
     this._colourBySign = colourBySign;
     this._disposed = false;
@@ -386,9 +386,16 @@ export class View3D {
     });
   }
 
-  /** @returns {{triangles: number, creases: number, lastSetAnglesMs: number, lastRenderMs: number}} */
+  /** Sizes, the last frame's costs and what is highlighted (facets, contact points).
+   * @returns {{triangles: number, creases: number, lastSetAnglesMs: number, lastRenderMs: number, highlighted: number, contacts: number, minZ: number, maxZ: number}} */
   stats() {
-    return { ...this._stats };
+    let minZ = Infinity, maxZ = -Infinity;
+    const position = this._sheet ? this._sheet.getAttribute('position') : null;
+    for (let k = 2; position && k < position.array.length; k += 3) {
+      minZ = Math.min(minZ, position.array[k]);
+      maxZ = Math.max(maxZ, position.array[k]);
+    }
+    return { ...this._stats, highlighted: this._highlighted ? this._highlighted.size : 0, contacts: this._contacts.children.length, minZ, maxZ };
   }
 
   /** Frees the GPU resources, stops observing the container and removes the canvas. */

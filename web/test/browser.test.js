@@ -3,24 +3,36 @@
 // number the page shows compared with the CLI's own answer on the same files.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync, writeFileSync, readFileSync } from 'node:fs';
+import { mkdirSync, rmSync } from 'node:fs';
 import { join } from 'node:path';
 import { foldkit, tempRoot, startServer, launchBrowser, openApp, idle, shown } from './harness.js';
 
 let browser = null;
 const servers = [];
+const roots = [];
+const limit = { timeout: 180000 };  // per test; every wait inside is bounded too
+
+// Even when the runner is stopped (ctest's timeout), no server outlives the tests.
+process.on('exit', () => {
+  for (const s of servers) try { process.kill(s.pid, 'SIGKILL'); } catch (_) { /* already gone */ }
+});
 
 before(async () => {
   browser = await launchBrowser();
 });
 
 after(async () => {
-  if (browser) await browser.close();
-  await Promise.all(servers.map((s) => s.stop()));
+  try {
+    if (browser) await browser.close();
+  } finally {
+    await Promise.all(servers.map((s) => s.stop()));
+    for (const root of roots) rmSync(root, { recursive: true, force: true });
+  }
 });
 
 async function serve(name, files = [], prepare = () => {}) {
   const root = tempRoot(name);
+  roots.push(root);
   prepare(root);
   const server = await startServer(root, files);
   servers.push(server);
@@ -75,7 +87,7 @@ function close(shownValue, exact) {
   return exact === 0 ? shownValue === 0 : Math.abs(shownValue - exact) <= 0.006 * Math.abs(exact);
 }
 
-test('the files named on the command line open, simulate, and show the CLI\'s numbers', async () => {
+test('the files named on the command line open, simulate, and show the CLI\'s numbers', limit, async () => {
   const { root } = await serve('demo', ['miura.pmml', 'miura-folded.cmml'], (dir) => {
     foldkit(['generate', 'miura', '--rows', '4', '--cols', '4', '-o', join(dir, 'miura.pmml')]);
     foldkit(['fold', join(dir, 'miura.pmml'), '--fraction', '0.9', '-o', join(dir, 'miura-folded.cmml')]);
@@ -88,8 +100,17 @@ test('the files named on the command line open, simulate, and show the CLI\'s nu
   assert.equal(await shown(page, 'n-actors'), cli.info.actors);
   assert.equal(await shown(page, 'n-collisions'), cli.sim.collision_count);
   assert.ok(close(await shown(page, 'closure-max'), cli.sim.max_closure_error), 'closure error of the sequence');
-  // The scrubber rests on the end state: its DOF is the CLI's at the sequence's end state.
+  // The scrubber rests on the end state: its DOF is the CLI's at the sequence's end state, and
+  // closed as foldkit's end state is.
   assert.equal(await shown(page, 'n-dof'), cli.dof.dof);
+  assert.ok((await shown(page, 'closure-state')) <= Math.max(1e-9, 10 * cli.dof.closure_error));
+  // The page's end state, joint by joint (its frames matched to its joints, in foldkit's sign),
+  // is the simulator's: the mountains and valleys are where the CLI has them.
+  const pageEnd = await page.evaluate(() => window.foldkit.model.joints().map((j, k) => [j.id, (window.foldkit.simulation.final[k] * 180) / Math.PI]));
+  const cliEnd = new Map(cli.sim.final_angles.map((a) => [a.joint, a.angle]));
+  assert.equal(pageEnd.length, cliEnd.size);
+  for (const [id, angle] of pageEnd) assert.ok(Math.abs(angle - cliEnd.get(id)) < 1e-9, `joint ${id}: page ${angle}, CLI ${cliEnd.get(id)}`);
+  assert.ok(pageEnd.some(([, a]) => a > 30) && pageEnd.some(([, a]) => a < -30), 'both mountains and valleys are folded');
   assert.equal(await page.$eval('#verdict', (e) => e.textContent), 'valid');
   await assertNotBlank(page, 'folded Miura-ori');
   await keepScreenshot(page, 'serve-miura');
@@ -126,7 +147,7 @@ async function checked(page) {
   return page.evaluate(() => window.foldkit.checkNow());
 }
 
-test('a pattern drawn with the mouse, grouped, folded and simulated matches the CLI on the files it saved', async () => {
+test('a pattern drawn with the mouse, grouped, folded and simulated matches the CLI on the files it saved', limit, async () => {
   const { root, server } = await serve('draw');
   const page = await openApp(browser, server.url);
   await page.$eval('#name', (e) => { e.value = 'drawn'; });
@@ -164,11 +185,21 @@ test('a pattern drawn with the mouse, grouped, folded and simulated matches the 
   assert.equal(info.actors, 4);
   // Fold the triangle up by 60 degrees (a valley), in event 1, and simulate.
   await click(page, 2, 0.5);
-  assert.equal(await page.$eval('#selected-joints', (e) => e.textContent.split(',').length), 1);
+  const crease = await page.evaluate(() => {
+    const [id] = window.foldkit.editor.selection.joints;
+    const j = window.foldkit.model.joints().find((x) => x.id === id);
+    return { id, ends: [[j.a.x, j.a.y], [j.b.x, j.b.y]].sort((p, q) => p[1] - q[1]) };
+  });
+  assert.deepEqual(crease.ends, [[2, 0], [2, 1]], 'the click picked the triangle\'s crease');
   await page.$eval('#fold-angle', (e) => { e.value = '-60'; });
   await page.$eval('#fold-velocity', (e) => { e.value = '30'; });
   await page.$eval('#event-number', (e) => { e.value = '1'; });
   await page.click('#set-fold');
+  // Deleting the triangle takes its crease, undo brings both back, and the fold with them.
+  await click(page, 2.3, 0.2);
+  await page.click('[data-action="delete"]');
+  assert.equal((await checked(page)).info.joints, 3);
+  await page.click('#undo');
   await page.evaluate(() => window.foldkit.simulateNow());
   await idle(page);
   const cli = cliNumbers(root, 'drawn.pmml', 'drawn.cmml');
@@ -178,8 +209,12 @@ test('a pattern drawn with the mouse, grouped, folded and simulated matches the 
   assert.ok(close(await shown(page, 'closure-max'), cli.sim.max_closure_error));
   assert.equal(await shown(page, 'n-dof'), cli.dof.dof);
   assert.ok(close(await shown(page, 'closure-state'), cli.dof.closure_error) || (await shown(page, 'closure-state')) < 1e-9);
-  const folded = cli.sim.final_angles.find((a) => Math.abs(a.angle) > 1);
-  assert.ok(folded && Math.abs(folded.angle + 60) < 1e-6, JSON.stringify(cli.sim.final_angles));
+  // Only the triangle's crease moved, to -60° (the CLI's end state on the files the page saved).
+  for (const a of cli.sim.final_angles) assert.ok(Math.abs(a.angle - (a.joint === crease.id ? -60 : 0)) < 1e-6, JSON.stringify(cli.sim.final_angles));
+  // A valley: in the page's 3D view the triangle rises (by sin 60° at its far corner) and the rest
+  // stays in the plane (the first actor, a grid cell, is the kinematic root, as in foldkit).
+  const { minZ, maxZ } = await page.evaluate(() => window.foldkit.view.stats());
+  assert.ok(Math.abs(maxZ - Math.sin(Math.PI / 3)) < 1e-3 && Math.abs(minZ) < 1e-6, `z from ${minZ} to ${maxZ}`);
   // Saved as FOLD through foldkit convert: the CLI reads it back as the same pattern.
   await page.click('[data-save="fold"]');
   await idle(page);
@@ -191,7 +226,7 @@ test('a pattern drawn with the mouse, grouped, folded and simulated matches the 
   assert.deepEqual(page.errors, []);
 });
 
-test('a pattern foldkit refuses lists its problems at their lines and marks them', async () => {
+test('a pattern foldkit refuses lists its problems at their lines and marks them', limit, async () => {
   const { server } = await serve('bad');
   const page = await openApp(browser, server.url);
   // Two triangles that overlap: foldkit names the overlap, the page lists it.
@@ -203,5 +238,34 @@ test('a pattern foldkit refuses lists its problems at their lines and marks them
   assert.ok(items.length >= 1, 'problems listed');
   assert.match(items.join('\n'), /line \d+: .*overlap/);
   assert.equal(await page.$eval('#n-joints', (e) => e.textContent), '–');
+  assert.deepEqual(page.errors, []);
+});
+
+test('a generated strip folded through itself shows the CLI\'s collisions on the view and the timeline', limit, async () => {
+  const { root, server } = await serve('collide');
+  const page = await openApp(browser, server.url);
+  await page.$eval('#name', (e) => { e.value = 'strip'; });
+  await page.$eval('#generate-params', (e) => { e.value = 'panels=3'; });
+  await page.select('#generate', 'strip');
+  await page.waitForFunction(() => window.foldkit.model.triangles.length > 0);
+  assert.equal((await checked(page)).info.joints, 2);
+  // Both creases to 170°, mountain, in one event: the outer panels pass through each other.
+  await page.evaluate(() => window.foldkit.editor.select({ joints: window.foldkit.model.joints().map((j) => j.id) }));
+  await page.$eval('#fold-angle', (e) => { e.value = '170'; });
+  await page.click('#set-fold');
+  await page.evaluate(() => window.foldkit.simulateNow());
+  await idle(page);
+  const cli = cliNumbers(root, 'strip.pmml', 'strip.cmml');
+  assert.ok(cli.sim.collision_count > 0, 'the CLI sees the collision');
+  assert.equal(await shown(page, 'n-collisions'), cli.sim.collision_count);
+  assert.equal(await page.$eval('#verdict', (e) => e.textContent), `invalid: ${cli.sim.status}`);
+  const marks = await page.$$eval('.collision-mark', (list) => list.length);
+  assert.equal(marks, cli.sim.collisions.length);
+  // At the end the colliding panels are drawn red and the contact points marked; at the start, not.
+  const highlighted = () => page.evaluate(() => window.foldkit.view.stats().highlighted);
+  assert.ok((await highlighted()) > 0, 'colliding facets highlighted at the end');
+  await page.evaluate(() => window.foldkit.timeline.seek(0));
+  assert.equal(await highlighted(), 0);
+  await keepScreenshot(page, 'serve-collision');
   assert.deepEqual(page.errors, []);
 });
