@@ -3,7 +3,7 @@
 // number the page shows compared with the CLI's own answer on the same files.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync, rmSync } from 'node:fs';
+import { mkdirSync, rmSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { foldkit, tempRoot, startServer, launchBrowser, openApp, idle, shown } from './harness.js';
 
@@ -267,5 +267,69 @@ test('a generated strip folded through itself shows the CLI\'s collisions on the
   await page.evaluate(() => window.foldkit.timeline.seek(0));
   assert.equal(await highlighted(), 0);
   await keepScreenshot(page, 'serve-collision');
+  assert.deepEqual(page.errors, []);
+});
+
+test('a Miura-ori drawn from the grid lattice folds as foldkit\'s own Miura-ori generator', limit, async () => {
+  const { root, server } = await serve('miura-drawn');
+  const page = await openApp(browser, server.url);
+  await page.$eval('#name', (e) => { e.value = 'drawn-miura'; });
+  await page.$eval('#lattice', (e) => { e.value = 'rows=2 cols=2 diagonals=none'; });
+  await tool(page, 'grid');
+  await drag(page, [0, 0], [2, 2]);
+  // The middle column of corners half a cell up: the cells become parallelograms, the middle row
+  // of creases a zig-zag.
+  await tool(page, 'select');
+  await click(page, 1, 0);
+  await click(page, 1, 1, ['Shift']);
+  await click(page, 1, 2, ['Shift']);
+  await tool(page, 'move');
+  await drag(page, [1, 1], [1, 1.5]);
+  // Mountains and the one valley of a Miura-ori vertex: the lower straight crease is the valley.
+  await tool(page, 'select');
+  await click(page, 1, 1);
+  await page.click('[data-assign="V"]');
+  await click(page, 1, 2);
+  await click(page, 0.5, 1.25, ['Shift']);
+  await click(page, 1.5, 1.25, ['Shift']);
+  await page.click('[data-assign="M"]');
+  const check = await checked(page);
+  assert.ok(check.ok, JSON.stringify(check.problems));
+  assert.equal(check.info.interior_vertices, 1);
+  // Projected folding to 0.9 from the page, then its simulation.
+  await page.$eval('#fraction', (e) => { e.value = '0.9'; });
+  await page.click('#fold');
+  await page.waitForFunction(() => window.foldkit.simulation !== null, { timeout: 60000 });
+  await idle(page);
+  assert.equal(await page.$eval('#verdict', (e) => e.textContent), 'valid');
+  // The oracle: foldkit's generator makes the same sheet (a parallelogram angle of atan 2), and
+  // its fold to 0.9 puts every crease (found by its end points) at the angle the page's fold did.
+  const oracle = join(root, 'oracle');
+  mkdirSync(oracle);
+  foldkit(['generate', 'miura', '--rows', '2', '--cols', '2', '--angle', String((Math.atan(2) * 180) / Math.PI), '-o', join(oracle, 'm.pmml')]);
+  foldkit(['fold', join(oracle, 'm.pmml'), '--fraction', '0.9', '-o', join(oracle, 'f.cmml')]);
+  const theirs = foldkit(['simulate', join(oracle, 'm.pmml'), join(oracle, 'f.cmml'), '--json']).json;
+  const ends = (text) => new Map([...text.matchAll(/<ID>(\d+)<\/ID>\s*<Coords>([^<]*)<\/Coords>/g)].map((m) => {
+    const c = m[2].trim().split(/\s+/).map((v) => Math.round(Number(v) * 1e6) / 1e6);
+    const [a, b] = [[c[0], c[1]], [c[2], c[3]]].sort((p, q) => p[0] - q[0] || p[1] - q[1]);
+    return [Number(m[1]), JSON.stringify([a, b])];
+  }));
+  const theirEnds = ends(readFileSync(join(oracle, 'm.pmml'), 'utf8'));
+  const byPlace = new Map(theirs.final_angles.map((a) => [theirEnds.get(a.joint), a.angle]));
+  const ours = await page.evaluate(() => window.foldkit.model.joints().map((j, k) => ({
+    ends: [[j.a.x, j.a.y], [j.b.x, j.b.y]], angle: (window.foldkit.simulation.final[k] * 180) / Math.PI })));
+  assert.equal(ours.length, 4);
+  for (const { ends: e, angle } of ours) {
+    const key = JSON.stringify(e.map(([x, y]) => [Math.round(x * 1e6) / 1e6, Math.round(y * 1e6) / 1e6]).sort((p, q) => p[0] - q[0] || p[1] - q[1]));
+    assert.ok(byPlace.has(key), `no crease of the generator's Miura-ori at ${key}`);
+    assert.ok(Math.abs(angle - byPlace.get(key)) < 1e-6, `crease ${key}: page ${angle}, generator ${byPlace.get(key)}`);
+  }
+  assert.ok(ours.some((o) => o.angle > 90) && ours.some((o) => o.angle < -90), 'folded well past halfway');
+  // And the CLI agrees with the page on the files the page saved.
+  const cli = cliNumbers(root, 'drawn-miura.pmml', 'drawn-miura-fold.cmml');
+  assert.equal(await shown(page, 'n-dof'), cli.dof.dof);
+  assert.ok(close(await shown(page, 'closure-max'), cli.sim.max_closure_error));
+  await assertNotBlank(page, 'drawn Miura-ori');
+  await keepScreenshot(page, 'serve-miura-drawn');
   assert.deepEqual(page.errors, []);
 });
