@@ -333,6 +333,7 @@ async function stiffnessNow() {
   const size = Math.hypot(b.maxX - b.minX, b.maxY - b.minY);
   const scale = r.max_displacement > 0 ? (0.1 * size) / r.max_displacement : 1;
   const index = new Map(app.model.actors().map((id, k) => [id, k]));
+  app.stiffness = r;
   view.showDisplacements(r.modules.map((m) => ({ actor: index.get(m.id), dx: m.displacement[0], dy: m.displacement[1], dz: m.displacement[2] })), scale);
   log(`stiffness: ${r.message}, largest displacement ${format(r.max_displacement)} (drawn ×${format(scale)}), condition ~${format(r.condition_estimate)}`);
 }

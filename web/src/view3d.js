@@ -387,7 +387,7 @@ export class View3D {
   }
 
   /** Sizes, the last frame's costs and what is highlighted (facets, contact points).
-   * @returns {{triangles: number, creases: number, lastSetAnglesMs: number, lastRenderMs: number, highlighted: number, contacts: number, minZ: number, maxZ: number}} */
+   * @returns {{triangles: number, creases: number, lastSetAnglesMs: number, lastRenderMs: number, highlighted: number, contacts: number, minZ: number, maxZ: number, displacements: number}} */
   stats() {
     let minZ = Infinity, maxZ = -Infinity;
     const position = this._sheet ? this._sheet.getAttribute('position') : null;
@@ -395,7 +395,8 @@ export class View3D {
       minZ = Math.min(minZ, position.array[k]);
       maxZ = Math.max(maxZ, position.array[k]);
     }
-    return { ...this._stats, highlighted: this._highlighted ? this._highlighted.size : 0, contacts: this._contacts.children.length, minZ, maxZ };
+    return { ...this._stats, highlighted: this._highlighted ? this._highlighted.size : 0, contacts: this._contacts.children.length, minZ, maxZ,
+      displacements: this._displacements ? this._displacements.list.length : 0 };
   }
 
   /** Frees the GPU resources, stops observing the container and removes the canvas. */

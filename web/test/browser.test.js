@@ -333,3 +333,44 @@ test('a Miura-ori drawn from the grid lattice folds as foldkit\'s own Miura-ori 
   await keepScreenshot(page, 'serve-miura-drawn');
   assert.deepEqual(page.errors, []);
 });
+
+test('Plan and Stiffness answer as the CLI does on the files the page saved', limit, async () => {
+  const { root, server } = await serve('plan');
+  const page = await openApp(browser, server.url);
+  await page.$eval('#name', (e) => { e.value = 'm'; });
+  await page.$eval('#generate-params', (e) => { e.value = 'rows=2 cols=2'; });
+  await page.select('#generate', 'miura');
+  await page.waitForFunction(() => window.foldkit.model.triangles.length > 0);
+  // A closed goal from Fold, then a plan from flat to it: the same planner, time and seed give
+  // the CLI's plan, waypoint for waypoint.
+  await page.$eval('#fraction', (e) => { e.value = '0.5'; });
+  await page.click('#fold');
+  await page.waitForFunction(() => window.foldkit.simulation !== null, { timeout: 60000 });
+  await idle(page);
+  await page.$eval('#plan-time', (e) => { e.value = '2'; });
+  await page.$eval('#plan-seed', (e) => { e.value = '7'; });
+  await page.evaluate(() => { window.foldkit.simulation = null; });
+  await page.click('#plan');
+  await page.waitForFunction(() => window.foldkit.simulation !== null, { timeout: 90000 });
+  await idle(page);
+  assert.equal(await page.$eval('#verdict', (e) => e.textContent), 'valid');
+  const planned = await page.evaluate(() => window.foldkit.sequence.events.length);
+  const cliPlan = join(root, 'cli-plan.cmml');
+  const plan = foldkit(['plan', join(root, 'm.pmml'), '--goal', join(root, 'm-fold.cmml'), '--planner', 'RRTConnect', '--time', '2', '--seed', '7',
+    '-o', cliPlan, '--json']).json;
+  assert.equal(readFileSync(cliPlan, 'utf8'), readFileSync(join(root, 'm-plan.cmml'), 'utf8'), 'the page\'s plan is the CLI\'s');
+  assert.ok(planned >= 1 && plan.ok !== false, JSON.stringify(plan).slice(0, 200));
+  // Stiffness of the planned end state, actor 1 fixed, a load on actor 4.
+  await page.$eval('#fixed', (e) => { e.value = '1'; });
+  await page.$eval('#load-actor', (e) => { e.value = '4'; });
+  await page.$eval('#force', (e) => { e.value = '0 0 -1'; });
+  await page.click('#stiffness');
+  await page.waitForFunction(() => window.foldkit.stiffness !== undefined, { timeout: 60000 });
+  await idle(page);
+  const ours = await page.evaluate(() => window.foldkit.stiffness);
+  const theirs = foldkit(['stiffness', join(root, 'm.pmml'), join(root, 'm.loadcase'), '--state', join(root, 'm-plan.cmml'), '--json']).json;
+  assert.equal(ours.converged, true);
+  assert.equal(ours.max_displacement, theirs.max_displacement);
+  assert.equal(await page.evaluate(() => window.foldkit.view.stats().displacements), theirs.modules.length);
+  assert.deepEqual(page.errors, []);
+});
