@@ -109,6 +109,14 @@ async function checkNow() {
 }
 app.checkNow = checkNow;
 
+// Whether a verb may run on the pattern; says why not (no answer: an edit or a failed request
+// came in between, and the log already tells which).
+function checkedValid(check) {
+  if (check && !check.ok) log('the pattern is not valid: see the problems listed');
+  else if (!check && app.model.triangles.length === 0) log('draw or open a pattern first');
+  return Boolean(check && check.ok);
+}
+
 // A problem's line in the PMML the page wrote names the actor or joint it concerns.
 function elementAtLine(pmml, line) {
   const lines = pmml.split('\n').slice(0, line);
@@ -263,7 +271,7 @@ async function measureState(frame) {
 /** Simulates the sequence and shows its trajectory, collisions and closure. */
 async function simulateNow() {
   const check = await checkNow();
-  if (!check || !check.ok) return log('the pattern is not valid: see the problems listed');
+  if (!checkedValid(check)) return null;
   if (!app.sequence.events.length) return log('no folds yet: select joints and press "Set fold"');
   const options = $('collisions').checked ? {} : { 'no-collision': true };
   const { model } = app;
@@ -298,7 +306,7 @@ async function loadSequence(sequence) {
 
 async function foldNow() {
   const check = await checkNow();
-  if (!check || !check.ok) return;
+  if (!checkedValid(check)) return;
   const options = $('collisions').checked ? {} : { 'no-collision': true };
   const out = await task('fold', () => session.foldTo(files(), Number($('fraction').value), options));
   if (!out) return;
@@ -308,7 +316,7 @@ async function foldNow() {
 
 async function planNow() {
   const check = await checkNow();
-  if (!check || !check.ok) return;
+  if (!checkedValid(check)) return;
   if (!app.sequence.events.length) return log('plan needs a goal: set folds whose end state is the goal');
   const options = { planner: $('planner').value, time: Number($('plan-time').value), seed: Number($('plan-seed').value) };
   if (!$('collisions').checked) options['no-collision'] = true;
@@ -321,7 +329,7 @@ async function planNow() {
 
 async function stiffnessNow() {
   const check = await checkNow();
-  if (!check || !check.ok) return;
+  if (!checkedValid(check)) return;
   const fixed = $('fixed').value.split(/[\s,]+/).filter(Boolean).map(Number);
   const load = Number($('load-actor').value);
   const force = $('force').value.trim().split(/\s+/).map(Number);
@@ -400,7 +408,7 @@ async function save(kind) {
   const name = (p) => p.split('/').pop();
   if (kind === 'png') return download(`${$('name').value}.png`, view.screenshot());
   const check = await checkNow();
-  if (!check || !check.ok) return log('the pattern is not valid: fix the problems listed before saving');
+  if (!checkedValid(check)) return;
   if (kind === 'pmml') return log(`saved ${f.pattern} (under the server's root)`);
   if (kind === 'cmml') {
     await task('save', () => api.writeFile(f.sequence, writeCMML(app.sequence)));
