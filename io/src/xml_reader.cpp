@@ -161,8 +161,9 @@ std::optional<std::pair<std::size_t, std::string>> bad_reference(std::string_vie
 
 XmlInput::~XmlInput() = default;
 
-XmlInput::XmlInput(const std::string& text, std::string name)
-    : doc_(std::make_unique<tinyxml2::XMLDocument>(true, tinyxml2::PRESERVE_WHITESPACE)), name_(std::move(name)) {
+XmlInput::XmlInput(const std::string& text, std::string name, int first_line)
+    : doc_(std::make_unique<tinyxml2::XMLDocument>(true, tinyxml2::PRESERVE_WHITESPACE)), name_(std::move(name)),
+      line_offset_(first_line - 1) {
   if (const auto nul = text.find('\0'); nul != std::string::npos)
     fail(line_at(text, nul), "contains NUL bytes: not an XML text file");
   // The declaration first: a Latin-1 file is better told so than pointed at its first byte.
@@ -211,9 +212,11 @@ const tinyxml2::XMLElement& XmlInput::root(const char* expected) const {
   return *r;
 }
 
-void XmlInput::fail(int line, const std::string& message) const { throw ParseError(name_, line, message); }
+void XmlInput::fail(int line, const std::string& message) const { throw ParseError(name_, line + line_offset_, message); }
 
 void XmlInput::fail(const tinyxml2::XMLNode& at, const std::string& message) const { fail(at.GetLineNum(), message); }
+
+int XmlInput::line(const tinyxml2::XMLNode& node) const { return node.GetLineNum() + line_offset_; }
 
 std::string XmlInput::leaf_text(const tinyxml2::XMLElement& e) const {
   check_no_attributes(*this, e);

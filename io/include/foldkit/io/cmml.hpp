@@ -1,6 +1,8 @@
 #pragma once
 /// @file
 /// CMML fold sequences (paper Table 2): reading and writing.
+#include <cstddef>
+#include <optional>
 #include <string>
 
 #include "foldkit/geometry/fold_sequence.hpp"
@@ -26,5 +28,19 @@ geometry::FoldSequence read_cmml(const std::string& path);
 /// @throws std::invalid_argument for a non-finite angle or velocity, a velocity ≤ 0, or one
 ///         whose degrees overflow or are too small to read back as positive
 std::string write_cmml(const geometry::FoldSequence& sequence);
+
+namespace detail {
+
+/// parse_cmml() of a large file, a slice of about `slice_bytes` of <Fold> elements at a time, so
+/// that only one slice's XML document is in memory (parse_cmml uses it from 4 MB on). Empty for a
+/// file it does not read this way (a comment, CDATA, a processing instruction or a DOCTYPE after
+/// <CMML>) and for any problem, which reading the whole file reports; otherwise equal to reading
+/// it whole (lines included).
+/// @param text         the file's content
+/// @param name         the file name of the lines
+/// @param slice_bytes  about how many bytes of <Fold> elements each slice holds
+std::optional<geometry::FoldSequence> parse_cmml_sliced(const std::string& text, const std::string& name, std::size_t slice_bytes);
+
+}  // namespace detail
 
 }  // namespace foldkit::io

@@ -25,9 +25,13 @@ namespace foldkit::io::detail {
 class XmlInput {
  public:
   /// Parses `text`; `name` (a file name) locates every error.
+  /// @param text        the XML text
+  /// @param name        the file name of every error
+  /// @param first_line  the line of the file `text` starts on, when it is a slice of a file
+  ///                    (every line reported and returned by line() counts from there)
   /// @throws ParseError for NUL bytes, a declared encoding other than UTF-8, bytes that are not
   ///         UTF-8 XML characters, bad character references, or an XML syntax error
-  XmlInput(const std::string& text, std::string name);
+  XmlInput(const std::string& text, std::string name, int first_line = 1);
   ~XmlInput();  ///< Frees the parsed document.
   XmlInput(const XmlInput&) = delete;             ///< Not copyable.
   XmlInput& operator=(const XmlInput&) = delete;  ///< Not copyable.
@@ -70,12 +74,15 @@ class XmlInput {
 
   /// The file name given to the constructor.
   const std::string& name() const { return name_; }
+  /// The line of the file `node` is on.
+  int line(const tinyxml2::XMLNode& node) const;
 
  private:
   void check_decoded(const tinyxml2::XMLNode& node) const;
 
   std::unique_ptr<tinyxml2::XMLDocument> doc_;
   std::string name_;
+  int line_offset_ = 0;  // the lines of the file before the text parsed
 };
 
 /// Text for an XML element: markup characters escaped, CR as a reference, and anything that may
