@@ -52,7 +52,8 @@ export function sideOf(pattern, joint, actor) {
  */
 export function buildTree(pattern, root = 0) {
   const n = pattern.actors.length, m = pattern.joints.length;
-  if (!(root >= 0 && root < n)) throw new RangeError('buildTree: root actor index out of range');
+  // An empty sheet (the editor's, before anything is drawn) has an empty tree.
+  if (!(root >= 0 && root < n) && !(n === 0 && root === 0)) throw new RangeError('buildTree: root actor index out of range');
   // Adjacency lists in joint order (boost's vecS out-edge lists keep insertion order).
   const adjacency = Array.from({ length: n }, () => []);
   pattern.joints.forEach((j, index) => {
@@ -68,7 +69,7 @@ export function buildTree(pattern, root = 0) {
   };
   const seen = new Uint8Array(n);
   let head = 0, tail = 0; // tree.order doubles as the BFS queue
-  for (let start = -1; start < n; ++start) {
+  for (let start = n === 0 ? 0 : -1; start < n; ++start) {
     const r = start < 0 ? root : start;
     if (seen[r]) continue;
     seen[r] = 1;

@@ -374,3 +374,102 @@ test('Plan and Stiffness answer as the CLI does on the files the page saved', li
   assert.equal(await page.evaluate(() => window.foldkit.view.stats().displacements), theirs.modules.length);
   assert.deepEqual(page.errors, []);
 });
+
+// The corners of the model, as sorted "x,y" keys rounded to 1e-9.
+async function corners(page) {
+  return page.evaluate(() => {
+    const m = window.foldkit.model;
+    const used = new Set(m.triangles.flatMap((t) => t.v));
+    return [...used].map((i) => `${(Math.round(m.vertices[i].x * 1e9) / 1e9) + 0},${(Math.round(m.vertices[i].y * 1e9) / 1e9) + 0}`).sort();
+  });
+}
+
+function keys(points) {
+  return points.map(([x, y]) => `${(Math.round(x * 1e9) / 1e9) + 0},${(Math.round(y * 1e9) / 1e9) + 0}`).sort();
+}
+
+test('every drawing tool, driven by the mouse, makes a pattern foldkit accepts and moves corners where geometry says', limit, async () => {
+  const { server } = await serve('tools');
+  const page = await openApp(browser, server.url);
+  const hint = () => page.$eval('#hint', (e) => e.textContent);
+  // Polygon: an L of six corners, closed with Enter: ear-clipped into 4 triangles, one actor.
+  const L = [[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]];
+  await tool(page, 'polygon');
+  for (const [x, y] of L) await click(page, x, y);
+  await page.keyboard.press('Enter');
+  let check = await checked(page);
+  assert.ok(check.ok, JSON.stringify(check.problems));
+  assert.deepEqual([check.info.actors, check.info.triangles, check.info.joints], [1, 4, 0]);
+  assert.deepEqual(await corners(page), keys(L));
+  // Measure: two corners give their distance, a third the angle at the second.
+  await tool(page, 'measure');
+  for (const [x, y] of [[0, 0], [2, 0], [2, 1]]) await click(page, x, y);
+  assert.match(await hint(), /Length 2, 1; angle 90°/);
+  // Rotate the selection a quarter turn about the centre of its box (1, 1): Shift snaps to 15°.
+  const selectAll = async (r = 2.4) => {
+    await tool(page, 'select');
+    await drag(page, [-r, -r], [r, r]);
+  };
+  const about = (f) => keys(L.map(([x, y]) => f(x - 1, y - 1)).map(([x, y]) => [x + 1, y + 1]));
+  await selectAll();
+  await tool(page, 'rotate');
+  await page.keyboard.down('Shift');
+  await drag(page, [2.3, 1], [1.02, 2.3]);
+  await page.keyboard.up('Shift');
+  assert.deepEqual(await corners(page), about((x, y) => [-y, x]));
+  await page.click('#undo');
+  assert.deepEqual(await corners(page), keys(L));
+  // Scale by 2 (drag from 1 to 2 away from the centre, Shift rounds to 0.1), then mirror in x.
+  await selectAll();
+  await tool(page, 'scale');
+  await page.keyboard.down('Shift');
+  await drag(page, [2, 1], [3, 1]);
+  await page.keyboard.up('Shift');
+  assert.deepEqual(await corners(page), about((x, y) => [2 * x, 2 * y]));
+  await page.click('#undo');
+  await selectAll();
+  await tool(page, 'mirror');
+  await click(page, 1, 0.5);
+  assert.deepEqual(await corners(page), about((x, y) => [-x, y]));
+  check = await checked(page);
+  assert.ok(check.ok, JSON.stringify(check.problems));
+  await page.click('#undo');
+  // Split the bottom edge at its middle, then merge the new corner back: still a valid pattern.
+  await tool(page, 'split');
+  await click(page, 1, 0);
+  assert.deepEqual(await corners(page), keys([...L, [1, 0]]));
+  check = await checked(page);
+  assert.ok(check.ok, JSON.stringify(check.problems));
+  assert.equal(check.info.triangles, 5);
+  await tool(page, 'merge');
+  await click(page, 1, 0);
+  await click(page, 0, 0);
+  assert.deepEqual(await corners(page), keys(L));
+  check = await checked(page);
+  assert.ok(check.ok, JSON.stringify(check.problems));
+  assert.equal(check.info.triangles, 4);
+  // Circular lattice: 2 rings of 6 spokes dragged out to radius 2 away from the L is the pattern
+  // `foldkit generate circular --rings 2 --spokes 6 --ring-width 1` makes, count for count.
+  await selectAll();
+  await page.click('[data-action="delete"]');
+  await page.$eval('#lattice', (e) => { e.value = 'rings=2 spokes=6'; });
+  await tool(page, 'circular');
+  await drag(page, [0, 0], [2, 0]);
+  check = await checked(page);
+  assert.ok(check.ok, JSON.stringify(check.problems));
+  const dir = tempRoot('circular');
+  roots.push(dir);
+  foldkit(['generate', 'circular', '--rings', '2', '--spokes', '6', '--ring-width', '1', '-o', join(dir, 'c.pmml')]);
+  const theirs = foldkit(['info', join(dir, 'c.pmml'), '--json']).json;
+  for (const key of ['actors', 'joints', 'triangles', 'vertices', 'interior_vertices', 'boundary_edges'])
+    assert.equal(check.info[key], theirs[key], key);
+  // Copy and paste: a second lattice beside the first, grouped as the first is.
+  await selectAll(2.6);
+  assert.equal(await page.evaluate(() => window.foldkit.editor.selection.triangles.length), theirs.triangles);
+  await page.click('[data-action="copy"]');
+  await page.click('[data-action="paste"]');
+  check = await checked(page);
+  assert.ok(check.ok, JSON.stringify(check.problems));
+  assert.deepEqual([check.info.actors, check.info.joints], [2 * theirs.actors, 2 * theirs.joints]);
+  assert.deepEqual(page.errors, []);
+});

@@ -216,3 +216,11 @@ test('foldedVertices and facetPoses fill the arrays they are given', () => {
   // Layout: actor 2's first triangle (corners (2,0), (3,0), (3,1)) starts at 9 × 4.
   assertClose([...corners.slice(36, 45)], [1, 0, -1, 2, 0, -1, 2, 1, -1], 1e-6, 'actor 2, triangle 0');
 });
+
+test('an empty sheet has an empty tree and no poses; a root out of range is refused', () => {
+  const empty = { vertices: [], actors: [], joints: [] };
+  const tree = buildTree(empty);
+  assert.equal(tree.order.length, 0);
+  assert.equal(facetPoses(empty, tree, new Float64Array(0)).length, 0);
+  assert.throws(() => buildTree(empty, 1), RangeError);
+});
