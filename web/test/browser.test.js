@@ -143,6 +143,22 @@ async function tool(page, name) {
   await page.click(`[data-tool="${name}"]`);
 }
 
+// Names the session and drags out a 2 × 2 grid lattice of unit cells from (0, 0) to (2, 2).
+async function gridOfFour(page, name) {
+  await page.$eval('#name', (e, value) => { e.value = value; }, name);
+  await page.$eval('#lattice', (e) => { e.value = 'rows=2 cols=2 diagonals=none'; });
+  await tool(page, 'grid');
+  await drag(page, [0, 0], [2, 2]);
+}
+
+// Names the session and picks `kind` from the Generate menu with `options`; resolves once drawn.
+async function generated(page, name, kind, options) {
+  await page.$eval('#name', (e, value) => { e.value = value; }, name);
+  await page.$eval('#generate-params', (e, value) => { e.value = value; }, options);
+  await page.select('#generate', kind);
+  await page.waitForFunction(() => window.foldkit.model.triangles.length > 0);
+}
+
 async function checked(page) {
   return page.evaluate(() => window.foldkit.checkNow());
 }
@@ -150,11 +166,7 @@ async function checked(page) {
 test('a pattern drawn with the mouse, grouped, folded and simulated matches the CLI on the files it saved', limit, async () => {
   const { root, server } = await serve('draw');
   const page = await openApp(browser, server.url);
-  await page.$eval('#name', (e) => { e.value = 'drawn'; });
-  // A 2 × 2 grid lattice of unit cells, dragged from (0, 0) to (2, 2).
-  await page.$eval('#lattice', (e) => { e.value = 'rows=2 cols=2 diagonals=none'; });
-  await tool(page, 'grid');
-  await drag(page, [0, 0], [2, 2]);
+  await gridOfFour(page, 'drawn');
   // A triangle beside it, sharing the grid's edge (2, 0)-(2, 1): clicks snap to the 0.5 grid.
   await tool(page, 'triangle');
   await click(page, 2, 0);
@@ -244,10 +256,7 @@ test('a pattern foldkit refuses lists its problems at their lines and marks them
 test('a generated strip folded through itself shows the CLI\'s collisions on the view and the timeline', limit, async () => {
   const { root, server } = await serve('collide');
   const page = await openApp(browser, server.url);
-  await page.$eval('#name', (e) => { e.value = 'strip'; });
-  await page.$eval('#generate-params', (e) => { e.value = 'panels=3'; });
-  await page.select('#generate', 'strip');
-  await page.waitForFunction(() => window.foldkit.model.triangles.length > 0);
+  await generated(page, 'strip', 'strip', 'panels=3');
   assert.equal((await checked(page)).info.joints, 2);
   // Both creases to 170°, mountain, in one event: the outer panels pass through each other.
   await page.evaluate(() => window.foldkit.editor.select({ joints: window.foldkit.model.joints().map((j) => j.id) }));
@@ -273,10 +282,7 @@ test('a generated strip folded through itself shows the CLI\'s collisions on the
 test('a Miura-ori drawn from the grid lattice folds as foldkit\'s own Miura-ori generator', limit, async () => {
   const { root, server } = await serve('miura-drawn');
   const page = await openApp(browser, server.url);
-  await page.$eval('#name', (e) => { e.value = 'drawn-miura'; });
-  await page.$eval('#lattice', (e) => { e.value = 'rows=2 cols=2 diagonals=none'; });
-  await tool(page, 'grid');
-  await drag(page, [0, 0], [2, 2]);
+  await gridOfFour(page, 'drawn-miura');
   // The middle column of corners half a cell up: the cells become parallelograms, the middle row
   // of creases a zig-zag.
   await tool(page, 'select');
@@ -337,10 +343,7 @@ test('a Miura-ori drawn from the grid lattice folds as foldkit\'s own Miura-ori 
 test('Plan and Stiffness answer as the CLI does on the files the page saved', limit, async () => {
   const { root, server } = await serve('plan');
   const page = await openApp(browser, server.url);
-  await page.$eval('#name', (e) => { e.value = 'm'; });
-  await page.$eval('#generate-params', (e) => { e.value = 'rows=2 cols=2'; });
-  await page.select('#generate', 'miura');
-  await page.waitForFunction(() => window.foldkit.model.triangles.length > 0);
+  await generated(page, 'm', 'miura', 'rows=2 cols=2');
   // A closed goal from Fold, then a plan from flat to it: the same planner, time and seed give
   // the CLI's plan, waypoint for waypoint.
   await page.$eval('#fraction', (e) => { e.value = '0.5'; });
