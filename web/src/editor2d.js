@@ -231,7 +231,7 @@ export class Editor2D {
     this._cancel();
     const s = this.history.undo();
     if (s) this._restored(s);
-    else this.onStatus('Nothing to undo');
+    this.onStatus(s ? 'Undone' : 'Nothing to undo');
   }
 
   /** Redo the last undone edit. */
@@ -239,7 +239,7 @@ export class Editor2D {
     this._cancel();
     const s = this.history.redo();
     if (s) this._restored(s);
-    else this.onStatus('Nothing to redo');
+    this.onStatus(s ? 'Redone' : 'Nothing to redo');
   }
 
   /** Put the selected triangles (and those of selected actors) into one new actor. */
