@@ -39,7 +39,7 @@ void save_pattern(const std::string& path, const geometry::CreasePattern& patter
   std::string text;
   switch (kind_of(path)) {
     case FileKind::Pmml: text = io::write_pmml(pattern); break;
-    case FileKind::Fold: text = io::write_fold(pattern, {state, {}}); break;
+    case FileKind::Fold: text = io::write_fold(pattern, {state, {}, {}}); break;
     case FileKind::Svg: {
       io::SvgOptions svg;
       svg.joint_ids = joint_ids;

@@ -71,8 +71,14 @@ std::string trajectory_fold(const geometry::CreasePattern& pattern, const simula
   out.state = r.final_state;
   const std::size_t n = r.frames.size();
   const std::size_t stride = std::max<std::size_t>(1, (n + max_frames - 1) / std::max<std::size_t>(1, max_frames));
-  for (std::size_t i = 0; i < n; i += stride) out.frames.push_back(r.frames[i].state);
-  if (n > 0 && (n - 1) % stride != 0) out.frames.push_back(r.frames.back().state);
+  for (std::size_t i = 0; i < n; i += stride) {
+    out.frames.push_back(r.frames[i].state);
+    out.frame_times.push_back(r.frames[i].time);
+  }
+  if (n > 0 && (n - 1) % stride != 0) {
+    out.frames.push_back(r.frames.back().state);
+    out.frame_times.push_back(r.frames.back().time);
+  }
   return io::write_fold(pattern, out);
 }
 

@@ -1,5 +1,6 @@
 // FOLD export: the triangle mesh as faces, every mesh edge as an edge record. See docs/FOLD.md.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <unordered_map>
@@ -146,6 +147,11 @@ std::string row(std::initializer_list<std::string> items) {
 std::string write_fold(const CreasePattern& pattern, const FoldExport& extra) {
   if (extra.state) check_size(*extra.state, pattern, "the state");
   for (const FoldState& frame : extra.frames) check_size(frame, pattern, "a frame");
+  if (!extra.frame_times.empty() && extra.frame_times.size() != extra.frames.size())
+    throw std::invalid_argument("write_fold: " + std::to_string(extra.frame_times.size()) + " frame times for " +
+                                std::to_string(extra.frames.size()) + " frames");
+  for (double t : extra.frame_times)
+    if (!std::isfinite(t)) throw std::invalid_argument("write_fold: a frame time is not a finite number");
 
   const std::vector<MeshEdge> edges = mesh_edges(pattern);
   std::vector<int> joint(edges.size(), -1);  // joint index per mesh edge, -1: boundary or inside an actor
@@ -208,6 +214,7 @@ std::string write_fold(const CreasePattern& pattern, const FoldExport& extra) {
       out += (i ? ",\n" : "\n");
       out += "    {\n      \"frame_inherit\": true,\n      \"frame_parent\": 0,\n      \"edges_foldAngle\": ";
       inner.scalars(fold_angles(extra.frames[i]));
+      if (!extra.frame_times.empty()) out += ",\n      \"foldkit:time\": " + format_number(extra.frame_times[i]);
       out += "\n    }";
     }
     out += "\n  ]";

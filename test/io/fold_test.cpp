@@ -101,11 +101,11 @@ TEST(FoldFixtures, EveryFileImportsExportsAndReimports) {
       EXPECT_TRUE(first.state->angles.allFinite());
     }
 
-    const std::string text = write_fold(first.pattern, FoldExport{first.state, first.frames});
+    const std::string text = write_fold(first.pattern, FoldExport{first.state, first.frames, {}});
     const FoldImport second = parse_fold(text, path + " (exported)");
     expect_same_model(first, second, path);
     // Exporting the re-import reproduces the export exactly.
-    EXPECT_EQ(write_fold(second.pattern, FoldExport{second.state, second.frames}), text);
+    EXPECT_EQ(write_fold(second.pattern, FoldExport{second.state, second.frames, {}}), text);
   }
   EXPECT_GE(files, 13);
 }
@@ -121,7 +121,7 @@ TEST(FoldFixtures, DiagonalCreasePatternIsOneValleyAt180) {
   EXPECT_NEAR(total_area(fold.pattern), 1.0, 1e-15);
   EXPECT_TRUE(fold.warnings.empty());
 
-  const json out = json::parse(write_fold(fold.pattern, FoldExport{fold.state, {}}));
+  const json out = json::parse(write_fold(fold.pattern, FoldExport{fold.state, {}, {}}));
   bool found = false;
   for (std::size_t e = 0; e < out["edges_vertices"].size(); ++e)
     if (out["edges_assignment"][e] == "V") {
@@ -263,7 +263,7 @@ TEST(FoldSign, ValleyFoldedUpIsNegative) {
   EXPECT_NEAR(angle(fold, 3), -kPi / 2, 1e-12);
   EXPECT_NEAR(total_area(fold.pattern), 1.0, 1e-12);
   // The FOLD export gives the valley FOLD's sign: +90.
-  const json out = json::parse(write_fold(fold.pattern, FoldExport{fold.state, {}}));
+  const json out = json::parse(write_fold(fold.pattern, FoldExport{fold.state, {}, {}}));
   for (std::size_t e = 0; e < out["edges_vertices"].size(); ++e)
     if (out["edges_assignment"][e] != "B") {
       EXPECT_EQ(out["edges_assignment"][e], "V");
@@ -296,10 +296,22 @@ TEST(FoldSign, FoldAngleIsNegatedAndNullMeansFlat) {
   EXPECT_NEAR(fold.frames[0].angles[0], 90.5 * kPi / 180, 1e-15);
   EXPECT_EQ(fold.frames[1].angles[0], 0.0);
 
-  const FoldImport again = parse_fold(write_fold(fold.pattern, FoldExport{fold.state, fold.frames}), "again.fold");
+  const FoldImport again = parse_fold(write_fold(fold.pattern, FoldExport{fold.state, fold.frames, {}}), "again.fold");
   ASSERT_EQ(again.frames.size(), 2U);
   EXPECT_EQ(again.state->angles[0], fold.state->angles[0]);  // bit for bit
   EXPECT_EQ(again.frames[0].angles[0], fold.frames[0].angles[0]);
+
+  // A simulated trajectory's frame times go into each frame as "foldkit:time", which readers
+  // (foldkit's own included) may ignore; they must be one finite time per frame.
+  const std::string timed = write_fold(fold.pattern, FoldExport{fold.state, fold.frames, {0.0, 0.1 + 0.2}});
+  const json frames = json::parse(timed)["file_frames"];
+  ASSERT_EQ(frames.size(), 2U);
+  EXPECT_EQ(frames[0]["foldkit:time"].get<double>(), 0.0);
+  EXPECT_EQ(frames[1]["foldkit:time"].get<double>(), 0.1 + 0.2);  // shortest decimals that read back
+  EXPECT_EQ(parse_fold(timed, "timed.fold").frames.size(), 2U);
+  EXPECT_FALSE(json::parse(write_fold(fold.pattern, FoldExport{fold.state, fold.frames, {}}))["file_frames"][0].contains("foldkit:time"));
+  EXPECT_THROW(write_fold(fold.pattern, FoldExport{fold.state, fold.frames, {0.0}}), std::invalid_argument);
+  EXPECT_THROW(write_fold(fold.pattern, FoldExport{fold.state, fold.frames, {0.0, std::nan("")}}), std::invalid_argument);
 }
 
 // Three strips side by side: a mountain crease at x = 1 (joint 9), a valley at x = 2 (joint 10).
@@ -330,7 +342,7 @@ TEST(FoldWrite, JointAtAngleZeroKeepsItsOwnAssignment) {
   EXPECT_EQ(joint(fold.pattern, 10).assignment, Assignment::Valley);
 
   // An all-flat state (say, the first frame of a sequence) keeps M and V rather than writing F.
-  const std::string flat = write_fold(fold.pattern, FoldExport{geometry::FoldState::flat(fold.pattern), {}});
+  const std::string flat = write_fold(fold.pattern, FoldExport{geometry::FoldState::flat(fold.pattern), {}, {}});
   auto letters = crease_letters(flat);
   ASSERT_EQ(letters.size(), 2U);
   EXPECT_EQ(letters[1.0], std::make_pair(std::string("M"), 0.0));
@@ -343,7 +355,7 @@ TEST(FoldWrite, JointAtAngleZeroKeepsItsOwnAssignment) {
   // A bent joint still takes its letter from the sign: the valley bent as a mountain is "M".
   geometry::FoldState bent = geometry::FoldState::flat(fold.pattern);
   bent.angles[*fold.pattern.joint_index(10)] = 0.5;
-  letters = crease_letters(write_fold(fold.pattern, FoldExport{bent, {}}));
+  letters = crease_letters(write_fold(fold.pattern, FoldExport{bent, {}, {}}));
   EXPECT_EQ(letters[1.0].first, "M");
   EXPECT_EQ(letters[2.0].first, "M");
   EXPECT_LT(letters[2.0].second, 0.0);  // FOLD counts mountains negative

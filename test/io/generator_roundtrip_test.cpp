@@ -63,7 +63,7 @@ TEST(GeneratorRoundTrip, FoldKeepsGeometryAndAngles) {
     const geometry::CreasePattern p = geometry::build_or_throw(c.make());
     geometry::FoldState state = geometry::FoldState::flat(p);
     for (Eigen::Index j = 0; j < state.angles.size(); ++j) state.angles[j] = 0.01 * static_cast<double>(j % 7) - 0.03;
-    const io::FoldImport back = io::parse_fold(io::write_fold(p, {state, {}}), c.name);
+    const io::FoldImport back = io::parse_fold(io::write_fold(p, {state, {}, {}}), c.name);
     EXPECT_EQ(back.pattern.actors().size(), p.actors().size()) << c.name;
     EXPECT_EQ(back.pattern.joints().size(), p.joints().size()) << c.name;
     EXPECT_EQ(back.pattern.vertices().size(), p.vertices().size()) << c.name;

@@ -287,7 +287,7 @@ async function simulateNow() {
   setNumber('n-collisions', r.collision_count);
   $('verdict').textContent = r.ok ? 'valid' : `invalid: ${r.status}`;
   log(sim.log);
-  timeline.setTrajectory(sim.frames.length, r.duration, r.collisions);
+  timeline.setTrajectory(sim.frames.length, r.duration, r.collisions, sim.times);
   // Framed on the first state (the flat sheet, as a rule the widest), so no frame leaves the view.
   if (sim.frames.length) view.setAngles(sim.frames[0]);
   view.fit();

@@ -85,7 +85,7 @@ function coordKey(p, scale) {
 /** The frames of a FOLD trajectory (`foldkit simulate --frames`) as radians per joint in
  * foldkit's sign (positive = mountain; FOLD's is the opposite), matched to `joints` ({a, b} end
  * points) by the coordinates of their ends, which foldkit writes as read. Returns
- * {frames: Float64Array[], final: Float64Array}. */
+ * {frames: Float64Array[], final: Float64Array, times: seconds per frame, or null}. */
 export function foldFrameAngles(fold, joints) {
   const coords = fold.vertices_coords;
   let extent = 0;
@@ -110,5 +110,7 @@ export function foldFrameAngles(fold, joints) {
     return out;
   };
   const frames = (fold.file_frames || []).map((f) => toRadians(f.edges_foldAngle || fold.edges_foldAngle));
-  return { frames, final: toRadians(fold.edges_foldAngle || []) };
+  // foldkit simulate gives each frame its time ("foldkit:time"); other writers do not.
+  const times = (fold.file_frames || []).map((f) => f['foldkit:time']);
+  return { frames, final: toRadians(fold.edges_foldAngle || []), times: times.length && times.every(Number.isFinite) ? times : null };
 }

@@ -63,14 +63,14 @@ export async function stateDof(files, jointIds, degrees) {
 }
 
 /** Simulates the sequence: {result (simulate's JSON), exit, frames (radians per joint, in
- * `joints` order), final}. `options` are simulate's arguments (e.g. {'no-collision': true}). */
+ * `joints` order), final, times (seconds per frame)}. `options` are simulate's arguments (e.g. {'no-collision': true}). */
 export async function simulate(model, sequence, files, options = {}) {
   const path = await sequencePath(sequence, files, model);
   const run = await api.verb('simulate', { pattern: files.pattern, sequence: path, frames: files.frames,
     'max-frames': 600, ...options });
   const trajectory = JSON.parse(await api.readFile(files.frames));
-  const { frames, final } = foldFrameAngles(trajectory, model.joints());
-  return { result: run.result, exit: run.exit, log: run.log, frames, final };
+  const { frames, final, times } = foldFrameAngles(trajectory, model.joints());
+  return { result: run.result, exit: run.exit, log: run.log, frames, final, times };
 }
 
 /** Projected folding to `fraction` of the way (foldkit fold): the sequence it wrote. */

@@ -42,11 +42,13 @@ export class Timeline {
     }
   }
 
-  /** A new trajectory of `frameCount` frames over `duration` seconds, collisions at their times. */
-  setTrajectory(frameCount, duration, collisions) {
+  /** A new trajectory of `frameCount` frames over `duration` seconds, collisions at their times;
+   * `times`: each frame's time (else the frames are taken as evenly spaced). */
+  setTrajectory(frameCount, duration, collisions, times = null) {
     this.stop();
     this.frameCount = frameCount;
     this.duration = duration;
+    this.times = times && times.length === frameCount ? times : null;
     this.slider.max = Math.max(0, frameCount - 1);
     this.slider.value = Math.max(0, frameCount - 1);
     this.slider.disabled = frameCount < 2;
@@ -61,8 +63,9 @@ export class Timeline {
     this.showClock();
   }
 
-  /** Seconds into the trajectory at `frame` (the simulator's frames are evenly spaced). */
+  /** Seconds into the trajectory at `frame`. */
   timeAt(frame) {
+    if (this.times) return this.times[Math.max(0, Math.min(this.frameCount - 1, frame))];
     return this.frameCount > 1 ? (this.duration * frame) / (this.frameCount - 1) : this.duration;
   }
 

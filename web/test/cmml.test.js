@@ -66,8 +66,13 @@ test('trajectory frames read back as the simulator\'s angles, in foldkit\'s sign
     return [Number(m[1]), { a: { x: c[0], y: c[1] }, b: { x: c[2], y: c[3] } }];
   }));
   const list = joints.map((id) => ({ id, ...ends.get(id) }));
-  const { frames, final } = foldFrameAngles(info, list);
+  const { frames, final, times } = foldFrameAngles(info, list);
   assert.ok(frames.length >= 2 && frames.length <= 51, `${frames.length} frames`);
+  // Each frame's time: from 0, increasing, the last at the end of the simulation.
+  assert.equal(times.length, frames.length);
+  assert.equal(times[0], 0);
+  for (let k = 1; k < times.length; k++) assert.ok(times[k] > times[k - 1], `frame ${k} at ${times[k]}`);
+  assert.ok(Math.abs(times[times.length - 1] - sim.duration) < 1e-9, `${times[times.length - 1]} vs ${sim.duration}`);
   sim.final_angles.forEach(({ angle }, k) => {
     assert.ok(Math.abs((final[k] * 180) / Math.PI - angle) < 1e-9, `joint ${joints[k]}: ${(final[k] * 180) / Math.PI} vs ${angle}`);
     assert.ok(Math.abs((frames[frames.length - 1][k] * 180) / Math.PI - angle) < 1e-9);

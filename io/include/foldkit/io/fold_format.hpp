@@ -45,10 +45,14 @@ FoldImport read_fold(const std::string& path, const geometry::BuildOptions& opti
 struct FoldExport {
   std::optional<geometry::FoldState> state;   ///< written as edges_foldAngle of the key frame
   std::vector<geometry::FoldState> frames;     ///< written as file_frames (inheriting the key frame)
+  /// Seconds from the start of each frame (a simulated trajectory), written in each frame as
+  /// the custom key "foldkit:time"; empty: not written.
+  std::vector<double> frame_times;
 };
 /// The FOLD JSON of `pattern`. Triangles become faces, every triangle side an edge
 /// (docs/FOLD.md). Joint IDs are not kept: re-import numbers joints by edge index + 1.
-/// @throws std::invalid_argument when a state or frame does not hold one angle per joint
+/// @throws std::invalid_argument when a state or frame does not hold one angle per joint, or
+///         frame_times is neither empty nor one finite time per frame
 std::string write_fold(const geometry::CreasePattern& pattern, const FoldExport& extra = {});
 
 }  // namespace foldkit::io
