@@ -3,9 +3,9 @@
 // number the page shows compared with the CLI's own answer on the same files.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync, rmSync, readFileSync } from 'node:fs';
+import { copyFileSync, mkdirSync, rmSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { foldkit, tempRoot, startServer, launchBrowser, openApp, idle, shown } from './harness.js';
+import { foldkit, tempRoot, startServer, launchBrowser, openApp, idle, shown, webDir } from './harness.js';
 
 let browser = null;
 const servers = [];
@@ -474,5 +474,31 @@ test('every drawing tool, driven by the mouse, makes a pattern foldkit accepts a
   check = await checked(page);
   assert.ok(check.ok, JSON.stringify(check.problems));
   assert.deepEqual([check.info.actors, check.info.joints], [2 * theirs.actors, 2 * theirs.joints]);
+  assert.deepEqual(page.errors, []);
+});
+
+test('the paper\'s bird base, opened from a FOLD file, folds in the page as the CLI folds the file', limit, async () => {
+  const fixture = join(webDir, '..', '..', 'shared', 'fixtures', 'fold', 'osbo_rigid-origami__birdBase.fold');
+  const { root, server } = await serve('bird', ['birdBase.fold'], (dir) => copyFileSync(fixture, join(dir, 'birdBase.fold')));
+  const page = await openApp(browser, server.url);
+  const check = await checked(page);
+  assert.ok(check.ok, JSON.stringify(check.problems));
+  const info = foldkit(['info', join(root, 'birdBase.fold'), '--json']).json;
+  assert.deepEqual([check.info.actors, check.info.joints, check.info.interior_vertices], [info.actors, info.joints, info.interior_vertices]);
+  await page.$eval('#fraction', (e) => { e.value = '0.5'; });
+  await page.click('#fold');
+  await page.waitForFunction(() => window.foldkit.simulation !== null, { timeout: 60000 });
+  await idle(page);
+  assert.equal(await page.$eval('#verdict', (e) => e.textContent), 'valid');
+  // The CLI on the FOLD file itself (joints numbered by edge, as the page's are).
+  foldkit(['fold', join(root, 'birdBase.fold'), '--fraction', '0.5', '-o', join(root, 'cli.cmml')]);
+  const sim = foldkit(['simulate', join(root, 'birdBase.fold'), join(root, 'cli.cmml'), '--json']).json;
+  const theirs = new Map(sim.final_angles.map((a) => [a.joint, a.angle]));
+  const ours = await page.evaluate(() => window.foldkit.model.joints().map((j, k) => [j.id, (window.foldkit.simulation.final[k] * 180) / Math.PI]));
+  assert.equal(ours.length, theirs.size);
+  for (const [id, angle] of ours) assert.ok(Math.abs(angle - theirs.get(id)) < 1e-6, `joint ${id}: page ${angle}, CLI ${theirs.get(id)}`);
+  assert.ok(ours.some(([, a]) => Math.abs(a) > 45), 'folded');
+  assert.equal(await shown(page, 'n-dof'), foldkit(['dof', join(root, 'birdBase.fold'), '--state', join(root, 'cli.cmml'), '--json']).json.dof);
+  await keepScreenshot(page, 'serve-bird-base');
   assert.deepEqual(page.errors, []);
 });
