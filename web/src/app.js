@@ -447,6 +447,10 @@ function wire() {
   $('lattice').addEventListener('change', lattice);
   $('undo').addEventListener('click', () => editor.undo());
   $('redo').addEventListener('click', () => editor.redo());
+  $('fit').addEventListener('click', () => {
+    editor.fit();
+    view.fit();
+  });
   $('generate').addEventListener('change', (e) => { generateNow(e.target.value); e.target.value = ''; });
   $('open').addEventListener('focus', listOpenable);
   $('open').addEventListener('change', (e) => { openNow(e.target.value); e.target.value = ''; });

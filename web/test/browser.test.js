@@ -174,6 +174,14 @@ test('a pattern drawn with the mouse, grouped, folded and simulated matches the 
   await click(page, 2, 1);
   let check = await checked(page);
   assert.ok(check.ok, JSON.stringify(check.problems));
+  // Fit frames the drawing: its corners then span most of the 2D view's width or height.
+  await page.click('#fit');
+  const span = await page.evaluate(() => {
+    const e = window.foldkit.editor, c = e.canvas.getBoundingClientRect();
+    const a = e.toClient({ x: 0, y: 0 }), b = e.toClient({ x: 3, y: 2 });
+    return Math.max(Math.abs(b.x - a.x) / c.width, Math.abs(b.y - a.y) / c.height);
+  });
+  assert.ok(span > 0.8 && span <= 1, `the drawing spans ${span} of the view`);
   // 4 cells and the triangle; joints: 4 between the cells and 1 to the triangle.
   assert.equal(await shown(page, 'n-actors'), 5);
   assert.equal(await shown(page, 'n-joints'), 5);
