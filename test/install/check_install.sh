@@ -30,6 +30,32 @@ if cmake -S "$source_dir/examples/use_foldkit" -B "$prefix/no-planners" -DCMAKE_
   exit 1
 fi
 "$prefix/install/bin/foldkit" --version
+# The browser app, when built: the installed foldkit serve finds it beside itself and serves the
+# page, its modules and three.js's from share/foldkit/web.
+if [ -f "$prefix/install/share/foldkit/web/index.html" ]; then
+  (cd "$prefix" && exec "$prefix/install/bin/foldkit" serve --port 0 --root "$prefix" 2>"$prefix/serve.log") &
+  server=$!
+  trap 'kill "$server" 2>/dev/null || true; rm -rf "$prefix"' EXIT
+  for _ in $(seq 1 100); do grep -q 'http://' "$prefix/serve.log" 2>/dev/null && break; sleep 0.1; done
+  url=$(grep -o 'http://[0-9.:]*/' "$prefix/serve.log")
+  /usr/bin/python3 - "$url" "$prefix/install/share/foldkit/web" <<'PY'
+import sys, urllib.request, urllib.error
+url, web = sys.argv[1], sys.argv[2]
+direct = urllib.request.build_opener(urllib.request.ProxyHandler({}))  # never through a proxy
+def get(path):
+    try:
+        with direct.open(url + path, timeout=10) as r:
+            return r.status, r.read()
+    except urllib.error.HTTPError as e:
+        return e.code, b""
+assert get("")[1] == open(web + "/index.html", "rb").read(), "GET / is not the installed page"
+for path in ["src/app.js", "node_modules/three/build/three.module.js", "node_modules/three/examples/jsm/controls/OrbitControls.js"]:
+    assert get(path)[0] == 200, path
+assert get("node_modules/three/package.json")[0] == 404
+print("serve: the installed app is served")
+PY
+  kill $server
+fi
 # The Python package, when built: importable from the installed tree alone.
 module=$(find "$prefix/install" -name '_foldkit*.so' | head -n 1)
 if [ -n "$module" ]; then
