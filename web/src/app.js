@@ -89,12 +89,20 @@ function current(model, version) {
 }
 
 /** Saves the pattern and shows foldkit's verdict on it; resolves when the numbers are shown. */
+// The check of one version of the pattern, shared by whoever asks while it runs or after.
+let lastCheck = null;
+
 async function checkNow() {
   clearTimeout(checkTimer);
   const model = app.model;
   const version = model.version;
   if (!model.triangles.length) return null;
-  const check = await task('check', () => session.checkPattern(model, files()));
+  const name = files().pattern;
+  if (!lastCheck || lastCheck.model !== model || lastCheck.version !== version || lastCheck.name !== name)
+    lastCheck = { model, version, name, answer: task('check', () => session.checkPattern(model, files())) };
+  const asked = lastCheck;
+  const check = await asked.answer;
+  if (!check && lastCheck === asked) lastCheck = null;  // a failed request is asked again next time
   // An edit while foldkit checked: its answer is about a pattern no longer shown.
   if (!check || !current(model, version)) return null;
   app.check = check;
