@@ -80,6 +80,10 @@ TEST(CmmlSliced, FoldkitsOwnOutputReadsAsWhole) {
     SCOPED_TRACE(std::to_string(events) + " events × " + std::to_string(joints) + " joints");
     EXPECT_TRUE(agree(written(events, joints)));
   }
+  // Windows line ends: lines still counted as the whole reading counts them.
+  std::string crlf;
+  for (char c : written(20, 40)) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  EXPECT_TRUE(agree(crlf));
   EXPECT_TRUE(agree("<CMML></CMML>"));
   EXPECT_TRUE(agree("\xEF\xBB\xBF<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n\n<CMML>\n<Title>t</Title>\n</CMML>\n"));
   // Titles anywhere, and the second one refused across slices as in one piece.
@@ -109,7 +113,7 @@ TEST(CmmlSliced, DeclinesWhatItDoesNotReadAndTheWholeReadingDecides) {
 // reading must never accept one the whole reading refuses, and must read the good ones alike.
 TEST(CmmlSliced, RandomCorruptionsReadAsWhole) {
   const std::string base = written(6, 9);
-  const std::vector<std::string> inserts = {"<", ">", "&", "&amp;", "&#0;", "</Fold>", "<Fold>", "<Title>x</Title>", "\n", " ",
+  const std::vector<std::string> inserts = {"<", ">", "&", "&amp;", "&#0;", "</Fold>", "<Fold>", "<Title>x</Title>", "\n", " ", "\r", "\r\n", "&#10;",
                                             "<ID>2</ID>", "<X/>", " a=\"1\"", "\xFF", "<Velocity>1</Velocity>", "</CMML>", "-",
                                             "<EventNumber>1</EventNumber>", "9", "</Velocity>"};
   std::mt19937 rng(11);
