@@ -5,30 +5,20 @@
 // Miura-ori 4 × 4 folded to 0.9 and a Miura 10 × 10 folded to 0.5 (`foldkit fold`).
 #include <benchmark/benchmark.h>
 
-#include <chrono>
-#include <csignal>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <stdexcept>
 #include <string>
-#include <thread>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <httplib.h>
+#include "serve_process.hpp"
+
+#include <httplib.h>  // last: its <resolv.h> macros would break headers included after it
 
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 void run(const std::string& command) {
   if (std::system(command.c_str()) != 0) throw std::runtime_error("failed: " + command);
@@ -36,11 +26,20 @@ void run(const std::string& command) {
 
 // One server for the whole program, on files made by the CLI in a temporary root.
 struct Served {
-  std::string root = (fs::temp_directory_path() / ("bench-serve-" + std::to_string(getpid()))).string();
-  pid_t pid = -1;
-  int port = 0;
+  // Removed after the server has stopped (members go in reverse order).
+  struct Root {
+    std::string path;
+    ~Root() {
+      fs::remove_all(path);
+      fs::remove(path + ".log");
+    }
+  } root_folder{make_root()};
+  const std::string& root = root_folder.path;
+  foldkit::bench::ServeProcess process{FOLDKIT_CLI, root, root + ".log"};
+  int port = process.port();
 
-  Served() {
+  static std::string make_root() {
+    const std::string root = (fs::temp_directory_path() / ("bench-serve-" + std::to_string(getpid()))).string();
     fs::create_directories(root);
     const std::string cli = FOLDKIT_CLI;
     for (const auto& [n, fraction] : {std::pair<int, const char*>{4, "0.9"}, {10, "0.5"}}) {
@@ -48,25 +47,10 @@ struct Served {
       run(cli + " generate miura --rows " + std::to_string(n) + " --cols " + std::to_string(n) + " -o " + m + ".pmml 2>/dev/null");
       run(cli + " fold " + m + ".pmml --fraction " + fraction + " -o " + m + ".cmml 2>/dev/null");
     }
-    const std::string log = root + "/serve.log";
-    pid = fork();
-    if (pid == 0) {
-      freopen(log.c_str(), "w", stderr);
-      execl(cli.c_str(), cli.c_str(), "serve", "--port", "0", "--root", root.c_str(), static_cast<char*>(nullptr));
-      _exit(127);
-    }
-    for (int i = 0; i < 200 && port == 0; ++i) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(25));
-      const std::string text = slurp(log);
-      const auto at = text.find("127.0.0.1:");
-      if (at != std::string::npos && text.find('/', at) != std::string::npos) port = std::stoi(text.substr(at + 10));
-    }
-    if (port == 0) throw std::runtime_error("foldkit serve did not start: " + slurp(log));
+    return root;
   }
-  ~Served() {
-    kill(pid, SIGTERM);
-    waitpid(pid, nullptr, 0);
-    fs::remove_all(root);
+  Served() {
+    if (port == 0) throw std::runtime_error("foldkit serve did not start: " + process.log());
   }
 };
 

@@ -100,7 +100,9 @@ TEST(FoldCli, ChordToleranceSizesTheSteps) {
     ASSERT_EQ(r.exit, 0) << tolerance << ": " << r.err;
     const auto j = nlohmann::json::parse(r.out);
     const double chord = j["max_chord_error"].get<double>();
-    if (std::string(tolerance) != "0") EXPECT_LE(chord, std::stod(tolerance)) << tolerance;
+    if (std::string(tolerance) != "0") {
+      EXPECT_LE(chord, std::stod(tolerance)) << tolerance;
+    }
     EXPECT_GT(j["steps"].get<int>(), last_steps) << tolerance;
     last_steps = j["steps"].get<int>();
     EXPECT_TRUE(j["replay_ok"].get<bool>()) << tolerance;

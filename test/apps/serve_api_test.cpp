@@ -3,21 +3,18 @@
 // (the API must answer exactly as the verbs do), the file system (what was written where), and
 // HTTP status codes for what must be refused.
 #include <chrono>
-#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <random>
 #include <thread>
 
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "serve_process.hpp"
 
 #include <httplib.h>  // last: its <resolv.h> macros would break headers included after it
 
@@ -33,62 +30,34 @@ using nlohmann::json;
 class Server {
  public:
   explicit Server(const std::string& name, const std::vector<std::string>& extra = {})
-      : root_(foldkit::test::temp_dir() + "/serve-" + name), log_(root_ + ".log") {
-    fs::remove_all(root_);
-    fs::create_directories(root_);
-    std::vector<std::string> args = {foldkit::test::cli_path(), "serve", "--port", "0", "--root", root_};
-    args.insert(args.end(), extra.begin(), extra.end());
-    pid_ = fork();
-    if (pid_ == 0) {
-      const int fd = open(log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      dup2(fd, 1);
-      dup2(fd, 2);
-      std::vector<char*> argv;
-      for (auto& a : args) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      execv(argv[0], argv.data());
-      _exit(127);
-    }
-    // The port it chose is on its first line.
-    for (int i = 0; i < 200 && port_ == 0; ++i) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-      const std::string text = slurp(log_);
-      const auto at = text.find("http://127.0.0.1:");
-      if (at != std::string::npos && text.find('/', at + 17) != std::string::npos) port_ = std::stoi(text.substr(at + 17));
-    }
-  }
-  ~Server() {
-    kill(pid_, SIGTERM);
-    for (int i = 0; i < 100; ++i) {
-      if (waitpid(pid_, nullptr, WNOHANG) == pid_) return;
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    kill(pid_, SIGKILL);
-    waitpid(pid_, nullptr, 0);
-  }
-  Server(const Server&) = delete;
-  Server& operator=(const Server&) = delete;
+      : root_(fresh_root(name)), process_(foldkit::test::cli_path(), root_, root_ + ".log", extra) {}
 
-  int port() const { return port_; }
+  int port() const { return process_.port(); }
   const std::string& root() const { return root_; }
   std::string path(const std::string& name) const { return root_ + "/" + name; }
-  std::string log() const { return slurp(log_); }
+  std::string log() const { return process_.log(); }
 
   httplib::Result post(const std::string& verb, const json& body) const {
-    httplib::Client c("127.0.0.1", port_);
+    httplib::Client c("127.0.0.1", port());
     c.set_read_timeout(120, 0);
     return c.Post(("/api/" + verb).c_str(), body.dump(), "application/json");
   }
   httplib::Client client() const {
-    httplib::Client c("127.0.0.1", port_);
+    httplib::Client c("127.0.0.1", port());
     c.set_read_timeout(120, 0);
     return c;
   }
 
  private:
-  std::string root_, log_;
-  pid_t pid_ = -1;
-  int port_ = 0;
+  static std::string fresh_root(const std::string& name) {
+    const std::string root = foldkit::test::temp_dir() + "/serve-" + name;
+    fs::remove_all(root);
+    fs::create_directories(root);
+    return root;
+  }
+
+  std::string root_;
+  foldkit::bench::ServeProcess process_;
 };
 
 // The CLI's --json with the server's root taken out of paths and the wall-clock keys dropped, as
