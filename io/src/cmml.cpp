@@ -14,6 +14,7 @@
 #include "foldkit/io/number_format.hpp"
 #include "foldkit/io/parse_error.hpp"
 #include "foldkit/io/xml_reader.hpp"
+#include "text_lines.hpp"
 
 namespace foldkit::io {
 namespace {
@@ -129,7 +130,7 @@ std::optional<geometry::FoldSequence> parse_cmml_sliced(const std::string& text,
       body.find("<?") != std::string_view::npos || body.find("<CMML") != std::string_view::npos || body.find("</CMML") != std::string_view::npos)
     return std::nullopt;
   CmmlReading reading;
-  int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + open, '\n'));
+  int line = line_at(text, open);
   try {
     for (std::size_t at = 0; at < body.size();) {
       std::size_t end = std::min(body.size(), at + std::max<std::size_t>(slice_bytes, 1));
