@@ -53,7 +53,8 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
       ->check(CLI::NonNegativeNumber);
   app->add_flag("--free-signs", opt.free_signs, "Ignore the pattern's mountain/valley assignment");
   app->add_flag("--no-fallback", opt.no_fallback,
-                "Single vertex: no spherical Carpenter path when the planner finds none in a quarter of --time");
+                "No way through flat when the planner finds none in a quarter of --time: no spherical Carpenter path "
+                "(single vertex), no start -> flat -> goal plan (driving space, folded --start)");
   app->add_option("-o,--output", opt.output, "Output CMML")->required();
   app->add_flag("--json", opt.json, "Print one JSON object on stdout");
 }
@@ -126,6 +127,7 @@ int report(const PlanArgs& opt, const planners::PlanResult& r) {
                      {"planner", r.planner},
                      {"space", r.space},
                      {"fallback", r.fallback},
+                     {"via_flat", r.via_flat},
                      {"time", r.time},
                      {"path_length", r.path_length},
                      {"max_closure_error", r.max_closure_error},

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 
@@ -175,7 +176,7 @@ std::string other_branch(const geometry::ClosureSystem& system, const geometry::
          "(crease " + std::to_string(driving) + ") with crease " + std::to_string(id) + " at " +
          std::to_string(reached.angles[worst] * 180.0 / M_PI) + " deg instead of the goal's " +
          std::to_string(goal.angles[worst] * 180.0 / M_PI) + " deg; the branches meet only at a singular state "
-         "(flat, for a Miura sheet), which no motion of the driving space passes: plan each end from flat instead";
+         "(flat, for a Miura sheet), which no motion of the driving space passes";
 }
 
 // The driving-crease space: the chart is chosen at the goal (or, when the goal is singular, at
@@ -303,6 +304,31 @@ PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
   return setup;
 }
 
+namespace {
+
+// The states strictly between `a` and `b` on the driving space's motion from one to the other,
+// appended to `out`: the interval of the motion is halved until neighbours differ by at most
+// `step` in every crease (or after 16 halvings; densify() then judges the gap).
+void driving_motion(const PlanSetup& setup, const ob::State* a, const ob::State* b, double step, ob::State* tmp,
+                    std::vector<FoldState>& out) {
+  FoldState fa, fb;
+  if (!setup.reader(a, fa) || !setup.reader(b, fb)) return;
+  const std::function<void(double, const FoldState&, double, const FoldState&, int)> fill =
+      [&](double ta, const FoldState& sa, double tb, const FoldState& sb, int depth) {
+        if (depth == 0 || (sb.angles - sa.angles).cwiseAbs().maxCoeff() <= step) return;
+        const double tm = 0.5 * (ta + tb);
+        setup.driving->interpolate(a, b, tm, tmp);
+        FoldState sm;
+        if (!setup.reader(tmp, sm)) return;
+        fill(ta, sa, tm, sm, depth - 1);
+        out.push_back(sm);
+        fill(tm, sm, tb, sb, depth - 1);
+      };
+  fill(0.0, fa, 1.0, fb, 16);
+}
+
+}  // namespace
+
 std::optional<std::vector<FoldState>> path_waypoints(const PlanSetup& setup, og::PathGeometric path, const PlanRequest& req,
                                                      bool to_goal, std::string* why) {
   // The path's states, densified along the space's own interpolation: single-vertex segments
@@ -322,6 +348,18 @@ std::optional<std::vector<FoldState>> path_waypoints(const PlanSetup& setup, og:
           states.push_back(f);
         }
       }
+      if (setup.reader(path.getState(i), f)) states.push_back(f);
+    }
+    setup.si->freeState(tmp);
+  } else if (setup.driving) {
+    // The driving space's own motions, halved until no crease moves more than the waypoint step
+    // between neighbours: near a fold of the chart the passives move much faster than the driving
+    // angles, and OMPL's path.interpolate() (spaced by the driving distance) left gaps there that
+    // densify()'s straight projections could not bridge (a Resch plan was refused as a jump).
+    ob::State* tmp = setup.si->allocState();
+    for (unsigned int i = 0; i < static_cast<unsigned int>(path.getStateCount()); ++i) {
+      FoldState f;
+      if (i > 0) driving_motion(setup, path.getState(i - 1), path.getState(i), req.waypoint_step, tmp, states);
       if (setup.reader(path.getState(i), f)) states.push_back(f);
     }
     setup.si->freeState(tmp);
@@ -397,6 +435,79 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanRequest
 
 }  // namespace
 
+namespace {
+
+// Closure along the waypoints, the CMML, and the simulator's replay: every path passes these,
+// whichever way it was found. `success` is the status message of a plan that passes.
+PlanResult& finish(const PlanRequest& req, const PlanSetup& setup, std::vector<FoldState> waypoints, PlanResult& result,
+                   const std::string& success) {
+  result.waypoints = std::move(waypoints);
+  result.path_length = 0.0;
+  for (std::size_t i = 0; i < result.waypoints.size(); ++i) {
+    result.max_closure_error = std::max(result.max_closure_error, setup.system->max_error(result.waypoints[i]));
+    if (i > 0) result.path_length += (result.waypoints[i].angles - result.waypoints[i - 1].angles).norm();
+  }
+  if (result.max_closure_error > 1e-6) {
+    result.status = {geometry::StatusCode::ClosureViolated,
+                     "the planned path is not closed (error " + std::to_string(result.max_closure_error) + " rad)"};
+    return result;
+  }
+  result.sequence = plan_sequence(req, setup, result.waypoints);
+  if (req.replay) {
+    simulation::SimulationOptions so;
+    so.collisions = req.collisions;
+    so.progress = req.progress;
+    result.replay = simulation::simulate(*req.pattern, result.sequence, so);
+    result.max_closure_error = std::max(result.max_closure_error, result.replay->max_closure_error);
+    if (!result.replay->status) {
+      result.status = {result.replay->status.code, "the simulator rejects the plan: " + result.replay->status.message};
+      return result;
+    }
+  }
+  result.status = {geometry::StatusCode::Success, success};
+  return result;
+}
+
+// Start → flat → goal: a plan from flat to the start, reversed, then one from flat to the goal,
+// each in a driving space of its own, with the time left split between them. Every branch of a
+// sheet's closed states passes through flat, so this joins ends that no motion of one driving
+// space joins (another branch, or sheets of a multi-DOF pattern that meet only at singular
+// states). `why`: why the direct way was given up.
+PlanResult& plan_via_flat(const PlanRequest& req, const PlanSetup& setup, PlanResult& result, const std::string& why) {
+  PlanRequest leg = req;
+  leg.start.reset();
+  leg.start_sequence = {};
+  leg.replay = false;
+  leg.progress = nullptr;
+  const double left = std::max(0.0, req.time - result.time);
+  leg.time = std::max(1e-3, 0.5 * left);
+  leg.goal = setup.start;
+  const PlanResult out = plan(leg);
+  result.time += out.time;
+  if (!out.status) {
+    result.status = {out.status.code == geometry::StatusCode::LimitReached ? geometry::StatusCode::LimitReached
+                                                                            : geometry::StatusCode::NoProgress,
+                     "no plan: " + why + "; via flat: no plan from flat to the start (" + out.status.message + ")"};
+    return result;
+  }
+  leg.goal = req.goal;
+  leg.time = std::max(1e-3, req.time - result.time);
+  const PlanResult in = plan(leg);
+  result.time += in.time;
+  if (!in.status) {
+    result.status = {in.status.code == geometry::StatusCode::LimitReached ? geometry::StatusCode::LimitReached
+                                                                           : geometry::StatusCode::NoProgress,
+                     "no plan: " + why + "; via flat: no plan from flat to the goal (" + in.status.message + ")"};
+    return result;
+  }
+  std::vector<FoldState> waypoints(out.waypoints.rbegin(), out.waypoints.rend());
+  waypoints.insert(waypoints.end(), in.waypoints.begin() + 1, in.waypoints.end());
+  result.fallback = result.via_flat = true;
+  return finish(req, setup, std::move(waypoints), result, "solved via flat (" + why + ")");
+}
+
+}  // namespace
+
 PlanResult plan(const PlanRequest& req) {
   if (!req.pattern) throw std::invalid_argument("plan: no pattern");
   if (!(req.time > 0.0) || !std::isfinite(req.time)) throw std::invalid_argument("plan: the time limit must be positive");
@@ -411,11 +522,20 @@ PlanResult plan(const PlanRequest& req) {
     result.status = {geometry::StatusCode::Collision, setup.blocked};
     return result;
   }
+  // A folded start in the driving space: when the planner finds no way in kSamplerShare of the
+  // time, or the goal is known to lie on another branch, the plan goes through flat.
+  const bool via_flat = req.fallback && setup.driving && setup.start.angles.cwiseAbs().maxCoeff() > 0.0;
   if (!setup.unreachable.empty()) {
-    result.status = {geometry::StatusCode::NoProgress, "no plan: " + setup.unreachable};
+    if (via_flat) return plan_via_flat(req, setup, result, setup.unreachable);
+    result.status = {geometry::StatusCode::NoProgress, "no plan: " + setup.unreachable + ": plan each end from flat instead"};
     return result;
   }
-  std::optional<og::PathGeometric> path = solve(setup, req, result);
+  PlanRequest direct = req;
+  if (via_flat) direct.time = kSamplerShare * req.time;
+  std::optional<og::PathGeometric> path = solve(setup, direct, result);
+  if (!path && via_flat)
+    return plan_via_flat(req, setup, result,
+                         req.planner + " found no direct plan in " + std::to_string(direct.time) + " s (" + result.status.message + ")");
   if (!path) return result;
   if (req.simplify) {
     og::PathSimplifier simplifier(setup.si);
@@ -428,35 +548,10 @@ PlanResult plan(const PlanRequest& req) {
     result.status = {geometry::StatusCode::ClosureViolated, why};
     return result;
   }
-  // Every path is checked: closed everywhere, no jumps, from the start to the goal.
-  result.waypoints = *dense;
-  for (std::size_t i = 0; i < result.waypoints.size(); ++i) {
-    result.max_closure_error = std::max(result.max_closure_error, setup.system->max_error(result.waypoints[i]));
-    if (i > 0) result.path_length += (result.waypoints[i].angles - result.waypoints[i - 1].angles).norm();
-  }
-  if (result.max_closure_error > 1e-6) {
-    result.status = {geometry::StatusCode::ClosureViolated,
-                     "the planned path is not closed (error " + std::to_string(result.max_closure_error) + " rad)"};
-    return result;
-  }
-
-  result.sequence = plan_sequence(req, setup, result.waypoints);
-  if (req.replay) {
-    simulation::SimulationOptions so;
-    so.collisions = req.collisions;
-    so.progress = req.progress;
-    result.replay = simulation::simulate(*req.pattern, result.sequence, so);
-    result.max_closure_error = std::max(result.max_closure_error, result.replay->max_closure_error);
-    if (!result.replay->status) {
-      result.status = {result.replay->status.code, "the simulator rejects the plan: " + result.replay->status.message};
-      return result;
-    }
-  }
-  result.status = {geometry::StatusCode::Success,
-                   result.fallback ? "solved by the Carpenter fallback (" + req.planner + " found no plan in " +
-                                         std::to_string(kSamplerShare * req.time) + " s)"
-                                   : std::string("solved")};
-  return result;
+  return finish(req, setup, *dense, result,
+                result.fallback ? "solved by the Carpenter fallback (" + req.planner + " found no plan in " +
+                                      std::to_string(kSamplerShare * req.time) + " s)"
+                                : std::string("solved"));
 }
 
 }  // namespace foldkit::planners

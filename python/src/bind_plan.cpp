@@ -17,7 +17,9 @@ void bind_result(py::module_& m) {
       .def_readonly("space", &PlanResult::space, "The space searched: 'single-vertex', 'driving', 'projected', 'atlas' or 'tangent-bundle'.")
       .def_readonly("time", &PlanResult::time, "Seconds the planner ran (the fallback included).")
       .def_readonly("fallback", &PlanResult::fallback,
-                    "Whether the path came from the single-vertex fallback (Carpenter's rule on the sphere).")
+                    "Whether the path came from a fallback: Carpenter's rule on the sphere (single vertex) or via flat.")
+      .def_readonly("via_flat", &PlanResult::via_flat,
+                    "Whether the path goes start, flat, goal as two plans from flat (driving space, folded start).")
       .def_readonly("path_length", &PlanResult::path_length, "Σ joint-angle distance between waypoints, radians.")
       .def_readonly("max_closure_error", &PlanResult::max_closure_error, "Largest loop error over waypoints and replay, radians.")
       .def_property_readonly(
@@ -84,9 +86,11 @@ void bind_plan(py::module_& m) {
       "FoldSequence otherwise). Planning runs "
       "an OMPL planner by name, as `foldkit plan`: space 'auto', 'single-vertex', 'driving', 'projected', 'atlas' or "
       "'tangent-bundle'; `time` seconds at most; the same seed gives the same plan. `params` sets planner parameters by "
-      "OMPL's names, e.g. {'range': '0.3'} (ValueError for one the planner does not have). On a single "
-      "vertex, `fallback` takes the path of Carpenter's rule on the sphere (start, flat, goal) when the planner finds none "
-      "in a quarter of `time`; the result's `fallback` says so. Returns a PlanResult (check `solved`).");
+      "OMPL's names, e.g. {'range': '0.3'} (ValueError for one the planner does not have). When the planner finds "
+      "none in a quarter of `time`, `fallback` goes through flat: on a single vertex the path of Carpenter's rule on the "
+      "sphere (start, flat, goal); in the driving space from a folded start, a plan from flat to the start, reversed, then "
+      "one from flat to the goal (at once for a goal known to lie on another branch). The result's `fallback` and "
+      "`via_flat` say so. Returns a PlanResult (check `solved`).");
   m.def("planners", &planners::planner_names, "The planner names plan() accepts.");
 }
 

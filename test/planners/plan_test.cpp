@@ -363,17 +363,35 @@ TEST(Plan, GoalOnAnotherBranchIsNamedNotSearched) {
   req.goal = *b;
   req.use_assignment = false;
   req.time = 30.0;
+  req.fallback = false;
   const PlanResult r = plan(req);
   EXPECT_EQ(r.status.code, foldkit::geometry::StatusCode::NoProgress) << r.status.message;
   EXPECT_NE(r.status.message.find("another branch"), std::string::npos) << r.status.message;
   EXPECT_EQ(r.time, 0.0);  // decided before the planner ran, not at the 30 s limit
   RecordProperty("message", r.status.message);
+  // With the fallback the plan goes start → flat → goal at once: two plans from flat, well
+  // within the time, every waypoint closed, through the flat sheet.
+  req.fallback = true;
+  req.replay = false;  // the start has no sequence from flat here; the waypoints are checked instead
+  const PlanResult via = plan(req);
+  ASSERT_TRUE(via.status.ok()) << via.status.message;
+  EXPECT_TRUE(via.via_flat);
+  EXPECT_NE(via.status.message.find("another branch"), std::string::npos) << via.status.message;
+  EXPECT_LT(via.time, 0.5 * req.time);
+  double nearest_flat = 1.0;
+  for (const FoldState& w : via.waypoints) {
+    EXPECT_LE(sys.max_error(w), 1e-10);
+    nearest_flat = std::min(nearest_flat, w.angles.cwiseAbs().maxCoeff());
+  }
+  EXPECT_EQ(nearest_flat, 0.0);
+  EXPECT_LT((via.waypoints.front().angles - a.angles).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((via.waypoints.back().angles - b->angles).cwiseAbs().maxCoeff(), 1e-6);
   // The same start to a goal on its own branch is planned as before.
   req.goal = folded_along_assignment(p, 1.0);
-  req.replay = false;  // the start has no sequence from flat here; the waypoints are checked instead
   const PlanResult same = plan(req);
   for (const FoldState& w : same.waypoints) EXPECT_LE(sys.max_error(w), 1e-10);
   EXPECT_TRUE(same.status.ok()) << same.status.message;
+  EXPECT_FALSE(same.via_flat);
 }
 
 // Property test (issue 16): Miura sheets of random size and parallelogram angle, each flat to a

@@ -57,12 +57,14 @@ def test_plan_single_vertex_matches_cli(cli, tmp_path):
     assert np.max(np.abs(np.diff(w, axis=0))) <= 0.02 + 1e-12
     assert max(foldkit.closure_error(p, s) for s in w) <= 1e-6
     assert r.replay.valid and not r.fallback and expected["fallback"] is False
+    assert not r.via_flat and expected["via_flat"] is False
     # RRT held to steps of 1e-7 rad finds nothing: the Carpenter fallback plans, as the CLI's.
     rc, expected, err = cli("plan", pmml, "--goal", goal_cmml, "--planner", "RRT", "--param", "range=1e-7", "--time", 0.4,
                             "-o", tmp_path / "fallback.cmml")
     assert rc == 0, err
     r = foldkit.plan(p, goal, planner="RRT", params={"range": "1e-7"}, time=0.4)
     assert r.solved and r.fallback and expected["fallback"] is True and r.replay.valid
+    assert not r.via_flat and expected["via_flat"] is False  # Carpenter's path, not two plans from flat
     assert not foldkit.plan(p, goal, planner="RRT", params={"range": "1e-7"}, time=0.4, fallback=False).solved
 
 

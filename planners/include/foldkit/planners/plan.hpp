@@ -72,10 +72,16 @@ struct PlanRequest {
   bool use_assignment = true;  ///< mountain/valley assignments of the pattern become angle bounds
   bool numerical_jacobian = false;  ///< constrained spaces: OMPL's finite differences (a baseline)
   bool simplify = true;       ///< shorten the path with OMPL's PathSimplifier (reduce vertices, shortcut)
-  /// Single-vertex space: when the planner finds no plan in a quarter of `time` (kSamplerShare),
-  /// take the path of Carpenter's rule on the sphere (start → flat → goal,
-  /// CarpenterFallbackPlanner), which reaches every closed, non-crossing state. Off: the planner
-  /// has all of `time`.
+  /// When the planner finds no plan in a quarter of `time` (kSamplerShare), go through flat:
+  /// - single-vertex space: the path of Carpenter's rule on the sphere (start → flat → goal,
+  ///   CarpenterFallbackPlanner), which reaches every closed, non-crossing state;
+  /// - driving space, from a start that is not flat: a plan from flat to the start, reversed,
+  ///   then one from flat to the goal, with the rest of `time` split between them (also at once,
+  ///   without searching, when the goal is known to lie on another branch). Every branch of a
+  ///   sheet's closed states meets the others at flat, so this joins ends that no motion of one
+  ///   driving space joins.
+  ///
+  /// Off: the planner has all of `time`, and a goal on another branch is named (NoProgress).
   bool fallback = true;
   /// Constrained spaces: when ≥ 0, the ambient box the sampler draws from (and the plan stays in)
   /// is narrowed to [min(start, goal) − margin, max(start, goal) + margin] per crease (within the
@@ -100,14 +106,18 @@ struct PlanResult {
   /// StatusCode::LimitReached (no plan within the time), StatusCode::Collision (the way out of
   /// the start collides, or the replay found one), StatusCode::ClosureViolated (the path leaves
   /// the closure manifold, or the replay says so), StatusCode::NoProgress (the planner found
-  /// nothing and the single-vertex fallback failed: the message says why).
+  /// nothing and the fallback failed, or the goal lies on another branch and the fallback is
+  /// off: the message says why).
   geometry::Status status;
   std::string planner,          ///< the planner's name, as requested
       space;                    ///< the space searched: "single-vertex", "driving", "projected", "atlas" or "tangent-bundle"
   double time = 0.0;            ///< seconds the planner ran (the fallback included)
-  /// Whether the path came from the single-vertex fallback (PlanRequest::fallback) rather than
+  /// Whether the path came from a fallback (PlanRequest::fallback) rather than from one run of
   /// the planner.
   bool fallback = false;
+  /// Whether the path goes start → flat → goal as two plans from flat (PlanRequest::fallback in
+  /// the driving space); `time` counts the direct attempt and both plans.
+  bool via_flat = false;
   double path_length = 0.0;     ///< Σ Euclidean joint-angle distance between waypoints, radians
   double max_closure_error = 0.0;  ///< largest loop error over the waypoints and the replay, radians
   std::vector<geometry::FoldState> waypoints;  ///< start … goal, dense (at most waypoint_step apart per joint)
