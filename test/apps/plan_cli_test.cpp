@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "resch_states.hpp"
 #include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/geometry/projection.hpp"
@@ -206,6 +207,42 @@ TEST(PlanCli, SingleVertexFallbackAndNoFallback) {
   EXPECT_EQ(none.exit, 4) << none.err;
   EXPECT_FALSE(nlohmann::json::parse(none.out)["fallback"].get<bool>());
   EXPECT_LT(nlohmann::json::parse(none.out)["time"].get<double>(), 4.0);  // 0.4 s asked; 10× slack for sanitizers
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// A folded start and a goal on a sheet no motion of one driving space reaches (Resch A → B,
+// test/support/resch_states.hpp): the plan goes through flat (JSON via_flat), the start's CMML
+// comes first and `foldkit simulate` accepts the whole file; with --no-fallback it is exit 4
+// within its time and nothing is written.
+TEST(PlanCli, FoldedStartPlansThroughFlat) {
+  const std::string dir = temp_dir() + "/plan-via-flat", a = dir + "/a.cmml", b = dir + "/b.cmml", out = dir + "/plan.cmml";
+  std::filesystem::create_directories(dir);
+  const std::string resch = foldkit::test::resch_path();
+  ASSERT_EQ(foldkit({"fold", resch, "--fraction", "0.5", "--velocity", foldkit::test::kReschVelocityA, "-o", a}).exit, 0);
+  ASSERT_EQ(foldkit({"fold", resch, "--fraction", "0.5", "--velocity", foldkit::test::kReschVelocityB, "-o", b}).exit, 0);
+  std::filesystem::remove(out);
+  const auto r = foldkit({"plan", resch, "--start", a, "--goal", b, "--time", "2", "-o", out, "--json"});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["via_flat"].get<bool>());
+  EXPECT_TRUE(j["fallback"].get<bool>());
+  EXPECT_NE(j["message"].get<std::string>().find("via flat"), std::string::npos) << j["message"];
+  const auto sim = foldkit({"simulate", resch, out, "--json"});
+  EXPECT_EQ(sim.exit, 0) << sim.err;
+  // The plan starts with the start's own sequence (the fold of A), event for event.
+  const auto start = foldkit::io::read_cmml(a), plan = foldkit::io::read_cmml(out);
+  ASSERT_GT(plan.events.size(), start.events.size());
+  for (std::size_t e = 0; e < start.events.size(); ++e) {
+    ASSERT_EQ(plan.events[e].folds.size(), start.events[e].folds.size()) << "event " << e;
+    for (std::size_t k = 0; k < start.events[e].folds.size(); ++k) {
+      EXPECT_EQ(plan.events[e].folds[k].joint_id, start.events[e].folds[k].joint_id);
+      EXPECT_DOUBLE_EQ(plan.events[e].folds[k].angle, start.events[e].folds[k].angle);
+    }
+  }
+  std::filesystem::remove(out);
+  const auto none = foldkit({"plan", resch, "--start", a, "--goal", b, "--time", "0.5", "--no-fallback", "-o", out, "--json"});
+  EXPECT_EQ(none.exit, 4) << none.err;
+  EXPECT_FALSE(nlohmann::json::parse(none.out)["via_flat"].get<bool>());
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
