@@ -21,6 +21,7 @@
 #include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/planners/carpenter_fallback.hpp"
+#include "plan_finish.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/statespaces/closure_constraint.hpp"
 #include "foldkit/statespaces/driving_space.hpp"
@@ -435,79 +436,6 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanRequest
 
 }  // namespace
 
-namespace {
-
-// Closure along the waypoints, the CMML, and the simulator's replay: every path passes these,
-// whichever way it was found. `success` is the status message of a plan that passes.
-PlanResult& finish(const PlanRequest& req, const PlanSetup& setup, std::vector<FoldState> waypoints, PlanResult& result,
-                   const std::string& success) {
-  result.waypoints = std::move(waypoints);
-  result.path_length = 0.0;
-  for (std::size_t i = 0; i < result.waypoints.size(); ++i) {
-    result.max_closure_error = std::max(result.max_closure_error, setup.system->max_error(result.waypoints[i]));
-    if (i > 0) result.path_length += (result.waypoints[i].angles - result.waypoints[i - 1].angles).norm();
-  }
-  if (result.max_closure_error > 1e-6) {
-    result.status = {geometry::StatusCode::ClosureViolated,
-                     "the planned path is not closed (error " + std::to_string(result.max_closure_error) + " rad)"};
-    return result;
-  }
-  result.sequence = plan_sequence(req, setup, result.waypoints);
-  if (req.replay) {
-    simulation::SimulationOptions so;
-    so.collisions = req.collisions;
-    so.progress = req.progress;
-    result.replay = simulation::simulate(*req.pattern, result.sequence, so);
-    result.max_closure_error = std::max(result.max_closure_error, result.replay->max_closure_error);
-    if (!result.replay->status) {
-      result.status = {result.replay->status.code, "the simulator rejects the plan: " + result.replay->status.message};
-      return result;
-    }
-  }
-  result.status = {geometry::StatusCode::Success, success};
-  return result;
-}
-
-// Start → flat → goal: a plan from flat to the start, reversed, then one from flat to the goal,
-// each in a driving space of its own, with the time left split between them. Every branch of a
-// sheet's closed states passes through flat, so this joins ends that no motion of one driving
-// space joins (another branch, or sheets of a multi-DOF pattern that meet only at singular
-// states). `why`: why the direct way was given up.
-PlanResult& plan_via_flat(const PlanRequest& req, const PlanSetup& setup, PlanResult& result, const std::string& why) {
-  PlanRequest leg = req;
-  leg.start.reset();
-  leg.start_sequence = {};
-  leg.replay = false;
-  leg.progress = nullptr;
-  const double left = std::max(0.0, req.time - result.time);
-  leg.time = std::max(1e-3, 0.5 * left);
-  leg.goal = setup.start;
-  const PlanResult out = plan(leg);
-  result.time += out.time;
-  if (!out.status) {
-    result.status = {out.status.code == geometry::StatusCode::LimitReached ? geometry::StatusCode::LimitReached
-                                                                            : geometry::StatusCode::NoProgress,
-                     "no plan: " + why + "; via flat: no plan from flat to the start (" + out.status.message + ")"};
-    return result;
-  }
-  leg.goal = req.goal;
-  leg.time = std::max(1e-3, req.time - result.time);
-  const PlanResult in = plan(leg);
-  result.time += in.time;
-  if (!in.status) {
-    result.status = {in.status.code == geometry::StatusCode::LimitReached ? geometry::StatusCode::LimitReached
-                                                                           : geometry::StatusCode::NoProgress,
-                     "no plan: " + why + "; via flat: no plan from flat to the goal (" + in.status.message + ")"};
-    return result;
-  }
-  std::vector<FoldState> waypoints(out.waypoints.rbegin(), out.waypoints.rend());
-  waypoints.insert(waypoints.end(), in.waypoints.begin() + 1, in.waypoints.end());
-  result.fallback = result.via_flat = true;
-  return finish(req, setup, std::move(waypoints), result, "solved via flat (" + why + ")");
-}
-
-}  // namespace
-
 PlanResult plan(const PlanRequest& req) {
   if (!req.pattern) throw std::invalid_argument("plan: no pattern");
   if (!(req.time > 0.0) || !std::isfinite(req.time)) throw std::invalid_argument("plan: the time limit must be positive");
@@ -526,7 +454,7 @@ PlanResult plan(const PlanRequest& req) {
   // time, or the goal is known to lie on another branch, the plan goes through flat.
   const bool via_flat = req.fallback && setup.driving && setup.start.angles.cwiseAbs().maxCoeff() > 0.0;
   if (!setup.unreachable.empty()) {
-    if (via_flat) return plan_via_flat(req, setup, result, setup.unreachable);
+    if (via_flat) return detail::plan_via_flat(req, setup, result, setup.unreachable);
     result.status = {geometry::StatusCode::NoProgress, "no plan: " + setup.unreachable + ": plan each end from flat instead"};
     return result;
   }
@@ -534,7 +462,7 @@ PlanResult plan(const PlanRequest& req) {
   if (via_flat) direct.time = kSamplerShare * req.time;
   std::optional<og::PathGeometric> path = solve(setup, direct, result);
   if (!path && via_flat)
-    return plan_via_flat(req, setup, result,
+    return detail::plan_via_flat(req, setup, result,
                          req.planner + " found no direct plan in " + std::to_string(direct.time) + " s (" + result.status.message + ")");
   if (!path) return result;
   if (req.simplify) {
@@ -548,7 +476,7 @@ PlanResult plan(const PlanRequest& req) {
     result.status = {geometry::StatusCode::ClosureViolated, why};
     return result;
   }
-  return finish(req, setup, *dense, result,
+  return detail::finish_plan(req, setup, *dense, result,
                 result.fallback ? "solved by the Carpenter fallback (" + req.planner + " found no plan in " +
                                       std::to_string(kSamplerShare * req.time) + " s)"
                                 : std::string("solved"));

@@ -1,0 +1,92 @@
+#include "plan_finish.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "foldkit/simulation/simulate.hpp"
+
+namespace foldkit::planners::detail {
+
+using geometry::FoldState;
+
+// Every path passes these, whichever way it was found.
+PlanResult& finish_plan(const PlanRequest& req, const PlanSetup& setup, std::vector<FoldState> waypoints, PlanResult& result,
+                        const std::string& success) {
+  result.waypoints = std::move(waypoints);
+  result.path_length = 0.0;
+  for (std::size_t i = 0; i < result.waypoints.size(); ++i) {
+    result.max_closure_error = std::max(result.max_closure_error, setup.system->max_error(result.waypoints[i]));
+    if (i > 0) result.path_length += (result.waypoints[i].angles - result.waypoints[i - 1].angles).norm();
+  }
+  if (result.max_closure_error > 1e-6) {
+    result.status = {geometry::StatusCode::ClosureViolated,
+                     "the planned path is not closed (error " + std::to_string(result.max_closure_error) + " rad)"};
+    return result;
+  }
+  result.sequence = plan_sequence(req, setup, result.waypoints);
+  if (req.replay) {
+    simulation::SimulationOptions so;
+    so.collisions = req.collisions;
+    so.progress = req.progress;
+    result.replay = simulation::simulate(*req.pattern, result.sequence, so);
+    result.max_closure_error = std::max(result.max_closure_error, result.replay->max_closure_error);
+    if (!result.replay->status) {
+      result.status = {result.replay->status.code, "the simulator rejects the plan: " + result.replay->status.message};
+      return result;
+    }
+  }
+  result.status = {geometry::StatusCode::Success, success};
+  return result;
+}
+
+// Start → flat → goal: a plan from flat to the start, reversed, then one from flat to the goal,
+// each in a driving space of its own, with the time left split between them. Every branch of a
+// sheet's closed states passes through flat, so this joins ends that no motion of one driving
+// space joins (another branch, or sheets of a multi-DOF pattern that meet only at singular
+// states). `why`: why the direct way was given up.
+PlanResult& plan_via_flat(const PlanRequest& req, const PlanSetup& setup, PlanResult& result, const std::string& why) {
+  // A leg's refusal (a singular end, say) is this plan's failure, not an input error of its own
+  // goal: the legs' ends are the start and goal already checked.
+  const auto leg_plan = [](const PlanRequest& r) {
+    try {
+      return plan(r);
+    } catch (const std::invalid_argument& e) {
+      PlanResult failed;
+      failed.status = {geometry::StatusCode::NoProgress, e.what()};
+      return failed;
+    }
+  };
+  PlanRequest leg = req;
+  leg.start.reset();
+  leg.start_sequence = {};
+  leg.replay = false;
+  leg.progress = nullptr;
+  const double left = std::max(0.0, req.time - result.time);
+  leg.time = std::max(1e-3, 0.5 * left);
+  leg.goal = setup.start;
+  const PlanResult out = leg_plan(leg);
+  result.time += out.time;
+  if (!out.status) {
+    result.status = {out.status.code == geometry::StatusCode::LimitReached ? geometry::StatusCode::LimitReached
+                                                                            : geometry::StatusCode::NoProgress,
+                     "no plan: " + why + "; via flat: no plan from flat to the start (" + out.status.message + ")"};
+    return result;
+  }
+  leg.goal = req.goal;
+  leg.time = std::max(1e-3, req.time - result.time);
+  const PlanResult in = leg_plan(leg);
+  result.time += in.time;
+  if (!in.status) {
+    result.status = {in.status.code == geometry::StatusCode::LimitReached ? geometry::StatusCode::LimitReached
+                                                                           : geometry::StatusCode::NoProgress,
+                     "no plan: " + why + "; via flat: no plan from flat to the goal (" + in.status.message + ")"};
+    return result;
+  }
+  std::vector<FoldState> waypoints(out.waypoints.rbegin(), out.waypoints.rend());
+  waypoints.insert(waypoints.end(), in.waypoints.begin() + 1, in.waypoints.end());
+  result.fallback = result.via_flat = true;
+  return finish_plan(req, setup, std::move(waypoints), result, "solved via flat (" + why + ")");
+}
+
+}  // namespace foldkit::planners::detail
