@@ -286,6 +286,23 @@ TEST(AtScale, StarPolygonOfFourHundredVerticesConvexifies) {
   EXPECT_TRUE(left == 0 || right == 0) << left << " left turns, " << right << " right turns";
 }
 
+// The 1,000-link chain of bench_carpenter's Straighten/1000 (carpenter_inputs.hpp) straightens:
+// bar lengths kept, no distance between any two vertices shrinking between recorded frames
+// (check_motion recomputes both from the frames alone), straight at the end (about half a minute).
+TEST(AtScale, ThousandLinkChainStraightensExpansively) {
+  const folding::PlanarChain chain{foldkit::benchmarks::random_chain(1000, 1), false};
+  folding::CarpenterPlanarOptions options;
+  options.frame_stride = 50;
+  const auto r = folding::carpenter_planar(chain, options);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_TRUE(folding::is_straight(r.frames.back()));
+  const folding::MotionCheck check = folding::check_motion(r.frames, false);
+  EXPECT_LE(check.max_length_error, 1e-9);
+  EXPECT_GE(check.min_distance_growth, -1e-9);
+  EXPECT_EQ(check.min_distance_growth, r.min_distance_growth);
+  RecordProperty("steps", static_cast<int>(r.steps));
+}
+
 TEST(AtScale, CubeSheet60FoldsIntoALineOfCubesAndReplaysValid) {
   const int cubes = 60;
   const CreasePattern p = geometry::build_or_throw(gen::cube_sheet(cubes));
