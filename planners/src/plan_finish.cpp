@@ -65,24 +65,21 @@ PlanResult& plan_via_flat(const PlanRequest& req, const PlanSetup& setup, PlanRe
   const double left = std::max(0.0, req.time - result.time);
   leg.time = std::max(1e-3, 0.5 * left);
   leg.goal = setup.start;
+  // Out of time stays out of time; any other failure of a leg is no progress.
+  const auto failed = [&](const PlanResult& r, const char* end) -> PlanResult& {
+    result.status = {r.status.code == geometry::StatusCode::LimitReached ? geometry::StatusCode::LimitReached
+                                                                          : geometry::StatusCode::NoProgress,
+                     "no plan: " + why + "; via flat: no plan from flat to the " + end + " (" + r.status.message + ")"};
+    return result;
+  };
   const PlanResult out = leg_plan(leg);
   result.time += out.time;
-  if (!out.status) {
-    result.status = {out.status.code == geometry::StatusCode::LimitReached ? geometry::StatusCode::LimitReached
-                                                                            : geometry::StatusCode::NoProgress,
-                     "no plan: " + why + "; via flat: no plan from flat to the start (" + out.status.message + ")"};
-    return result;
-  }
+  if (!out.status) return failed(out, "start");
   leg.goal = req.goal;
   leg.time = std::max(1e-3, req.time - result.time);
   const PlanResult in = leg_plan(leg);
   result.time += in.time;
-  if (!in.status) {
-    result.status = {in.status.code == geometry::StatusCode::LimitReached ? geometry::StatusCode::LimitReached
-                                                                           : geometry::StatusCode::NoProgress,
-                     "no plan: " + why + "; via flat: no plan from flat to the goal (" + in.status.message + ")"};
-    return result;
-  }
+  if (!in.status) return failed(in, "goal");
   std::vector<FoldState> waypoints(out.waypoints.rbegin(), out.waypoints.rend());
   waypoints.insert(waypoints.end(), in.waypoints.begin() + 1, in.waypoints.end());
   result.fallback = result.via_flat = true;

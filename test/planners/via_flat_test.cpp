@@ -82,6 +82,13 @@ TEST(PlanViaFlat, FoldedStatesOnSheetsThatMeetOnlyAtFlat) {
   for (const FoldState& w : r.waypoints) nearest_flat = std::min(nearest_flat, w.angles.cwiseAbs().maxCoeff());
   EXPECT_EQ(nearest_flat, 0.0);
   RecordProperty("message", r.status.message);
+  // Out of time on the way through flat: a status that names the leg, not an exception.
+  PlanRequest hurried = req;
+  hurried.time = 1e-3;
+  const PlanResult late = plan(hurried);
+  EXPECT_EQ(late.status.code, foldkit::geometry::StatusCode::LimitReached) << late.status.message;
+  EXPECT_NE(late.status.message.find("via flat: no plan from flat to the start"), std::string::npos) << late.status.message;
+  EXPECT_FALSE(late.via_flat);
 }
 
 // Before, this pair (start near a fold of the goal's chart) was found by RRTConnect in 5 ms and
