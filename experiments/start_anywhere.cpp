@@ -3,10 +3,10 @@
 //
 //   start_anywhere [--out DIR] [--check]
 //
-// On the Resch tessellation and the bird base (bench/data) and the waterbomb 4×4, seven states
-// each are folded out of flat to half (folding::fold_projected, collisions on) along seeded random
-// desired velocities: each crease U(0.05, 1) times its assignment's sign (a random sign where it
-// has none). For every ordered pair (A, B):
+// On the Resch tessellation (10 DOF when folded), the bird base (5; both bench/data) and the
+// waterbomb 4×4 (13), seven states each are folded out of flat to half (folding::fold_projected,
+// collisions on) along seeded random desired velocities: each crease U(0.05, 1) times its
+// assignment's sign (a random sign where it has none). For every ordered pair (A, B):
 //   - one chart: the continuation in the chart chosen at B from A to B's driving angles (what the
 //     driving space's motions do) reaches B, or not;
 //   - switching charts: the same, but where the chart folds over (the continuation stalls) the
