@@ -40,7 +40,7 @@ export class EditorDraw {
     const m = this._model;
     if (this._styleCache && this._styleCache.model === m && this._styleCache.version === m.version) return this._styleCache;
     const lists = { boundary: [], internal: [], M: [], V: [], F: [], U: [] };
-    const jointByKey = new Map(m.joints().map((j) => [j.key, j]));
+    const jointByKey = new Map(m.joints().flatMap((j) => j.keys.map((key) => [key, j])));
     for (const e of m.edges()) {
       if (e.kind === 'joint') lists[jointByKey.get(e.key).assignment].push(e.i, e.j);
       else lists[e.kind].push(e.i, e.j);

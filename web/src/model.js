@@ -19,7 +19,10 @@ export const JOINT_DEFAULTS = Object.freeze({ spring: 1, damping: 0.1, assignmen
 
 /**
  * A crease pattern: vertices, triangles (each in an actor) and joint properties keyed by edge.
- * Edits keep joint IDs stable: an edge's joint keeps its ID for as long as the edge exists.
+ * A joint is one crease: an edge two different actors share, or a run of such edges along one
+ * line between the same two actors (a file's joint through a corner, an edge split in two), which
+ * then share one ID, as foldkit reads them. Edits keep joint IDs stable: an edge's joint keeps its
+ * ID for as long as the edge exists.
  */
 export class PatternModel {
   /** An empty pattern, optionally titled. */
@@ -72,37 +75,35 @@ export class PatternModel {
         else model.triangles.push({ v, actor: a.id });
       }
     const topo = model._topology();
-    const fresh = [];
+    const renamed = [];
     for (const j of spec.joints) {
-      if (seenJoint.has(j.id)) {
-        model.warnings.push(`${j.line}: duplicate joint ID ${j.id} (also at line ${seenJoint.get(j.id)}): given a new ID`);
-      }
+      const duplicate = seenJoint.has(j.id);
+      if (duplicate) model.warnings.push(`${j.line}: duplicate joint ID ${j.id} (also at line ${seenJoint.get(j.id)}): given a new ID`);
       const chain = model._traceSegment(welder, topo, { x: j.coords[0], y: j.coords[1] }, { x: j.coords[2], y: j.coords[3] });
       if (!chain) {
         model.warnings.push(`${j.line}: joint ${j.id} does not lie on edges of the triangles: dropped`);
         continue;
       }
-      const props = { spring: j.spring, damping: j.damping, assignment: j.assignment };
+      // Every edge of the joint's segment shares one properties object: one crease, one ID.
+      const props = { id: duplicate ? 0 : j.id, spring: j.spring, damping: j.damping, assignment: j.assignment };
       for (let k = 0; k + 1 < chain.length; ++k) {
         const key = edgeKey(chain[k], chain[k + 1]);
-        if (model._props.has(key)) {
-          model.warnings.push(`${j.line}: joint ${j.id} covers an edge another joint already covers`);
-          continue;
-        }
-        const first = k === 0 && !seenJoint.has(j.id);
-        model._props.set(key, { id: first ? j.id : 0, ...props });
-        if (first) model._nextJointId = Math.max(model._nextJointId, j.id + 1);
-        else fresh.push(key);
+        if (model._props.has(key)) model.warnings.push(`${j.line}: joint ${j.id} covers an edge another joint already covers`);
+        else model._props.set(key, props);
       }
-      if (!seenJoint.has(j.id)) seenJoint.set(j.id, j.line);
+      if (duplicate) renamed.push(props);
+      else {
+        model._nextJointId = Math.max(model._nextJointId, j.id + 1);
+        seenJoint.set(j.id, j.line);
+      }
     }
-    // Further edges of a joint spanning collinear edges get new IDs once the file's IDs are known.
-    for (const key of fresh) model._props.get(key).id = model._takeJointId();
+    // A duplicate ID is replaced once the file's IDs are known.
+    for (const props of renamed) props.id = model._takeJointId();
     model._commit();
     return model;
   }
 
-  /** PMML text: actors in ID order with their triangles, then one joint per edge shared by two actors. */
+  /** PMML text: actors in ID order with their triangles, then the joints in ID order (a run of edges as one segment). */
   toPMML() {
     const out = ['<?xml version="1.0" encoding="UTF-8"?>', '<PMML>'];
     if (this.title) out.push(`  <Title>${escapeXml(this.title)}</Title>`);
@@ -193,20 +194,30 @@ export class PatternModel {
     return this._topology().edges;
   }
 
-  /** One joint per edge shared by two different actors, in ID order. Cached; do not mutate. */
+  /**
+   * The joints in ID order: each an edge shared by two different actors, or a run of such edges
+   * along one line between the same two actors (`keys` lists its edges, `key` is the first; `a`,
+   * `b` and `va`, `vb` are the run's ends). Cached; do not mutate.
+   */
   joints() {
     if (this._joints && this._joints.version === this._version) return this._joints.list;
-    const list = [];
+    const runs = new Map();
     for (const e of this.edges()) {
       if (e.kind !== 'joint') continue;
       const p = this._props.get(e.key);
-      let [va, vb] = [e.i, e.j];
+      const run = runs.get(p.id);
+      if (run) run.edges.push(e);
+      else runs.set(p.id, { p, edges: [e] });
+    }
+    const list = [];
+    for (const [id, { p, edges }] of runs) {
+      let [va, vb] = runEnds(edges);
       const A = this.vertices[va], B = this.vertices[vb];
       // Coordinates in (x, y) order, not index order: the text then survives a read that renumbers.
       if (B.x < A.x || (B.x === A.x && B.y < A.y)) [va, vb] = [vb, va];
-      const actors = e.triangles.map((t) => this.triangles[t].actor).sort((x, y) => x - y);
-      list.push({ id: p.id, a: { ...this.vertices[va] }, b: { ...this.vertices[vb] }, va, vb, actors,
-        spring: p.spring, damping: p.damping, assignment: p.assignment, key: e.key });
+      const actors = edges[0].triangles.map((t) => this.triangles[t].actor).sort((x, y) => x - y);
+      list.push({ id, a: { ...this.vertices[va] }, b: { ...this.vertices[vb] }, va, vb, actors,
+        spring: p.spring, damping: p.damping, assignment: p.assignment, key: edges[0].key, keys: edges.map((e) => e.key) });
     }
     list.sort((x, y) => x.id - y.id);
     this._joints = { version: this._version, list, byId: new Map(list.map((j) => [j.id, j])) };
@@ -237,10 +248,12 @@ export class PatternModel {
     if (spring !== undefined && !(Number.isFinite(spring) && spring >= 0)) throw new Error('spring constant must be finite and non-negative');
     if (damping !== undefined && !(Number.isFinite(damping) && damping >= 0)) throw new Error('damping constant must be finite and non-negative');
     if (assignment !== undefined && !ASSIGNMENTS.has(assignment)) throw new Error('assignment must be M, V, F or U');
-    const p = this._props.get(j.key);
-    if (spring !== undefined) p.spring = spring;
-    if (damping !== undefined) p.damping = damping;
-    if (assignment !== undefined) p.assignment = assignment;
+    for (const key of j.keys) {
+      const p = this._props.get(key);
+      if (spring !== undefined) p.spring = spring;
+      if (damping !== undefined) p.damping = damping;
+      if (assignment !== undefined) p.assignment = assignment;
+    }
     this._version++;
     return this.joint(id);
   }
@@ -352,12 +365,95 @@ export class PatternModel {
     return this._nextJointId++;
   }
 
-  // Forget properties of edges that no longer exist; give every new shared edge the next ID.
+  // Forget properties of edges that no longer exist. A new shared edge that continues a crease
+  // (along its line, between the same two actors) joins it, the others get the next IDs. A run
+  // an edit broke (no longer one line between two actors) splits: its first part keeps the ID.
   _syncJoints() {
     const topo = this._topology();
     for (const key of this._props.keys()) if (!topo.byKey.has(key)) this._props.delete(key);
-    for (const e of topo.edges)
-      if (e.kind === 'joint' && !this._props.has(e.key)) this._props.set(e.key, { id: this._takeJointId(), ...JOINT_DEFAULTS });
+    const shared = topo.edges.filter((e) => e.kind === 'joint');
+    const at = new Map();
+    for (const e of shared) for (const v of [e.i, e.j]) (at.get(v) ?? at.set(v, []).get(v)).push(e);
+    const fresh = shared.filter((e) => !this._props.has(e.key));
+    const tol = fresh.length ? this.tolerance() : 0;
+    while (fresh.length) {
+      let joined = true;
+      while (joined) {
+        joined = false;
+        for (let k = fresh.length - 1; k >= 0; --k) {
+          const p = this._continuedCrease(fresh[k], at, tol);
+          if (!p) continue;
+          this._props.set(fresh[k].key, p);
+          fresh.splice(k, 1);
+          joined = true;
+        }
+      }
+      if (fresh.length) this._props.set(fresh.shift().key, { id: this._takeJointId(), ...JOINT_DEFAULTS });
+    }
+    const byId = new Map();
+    for (const e of shared) {
+      const id = this._props.get(e.key).id;
+      (byId.get(id) ?? byId.set(id, []).get(id)).push(e);
+    }
+    let runTol = tol;
+    for (const edges of byId.values()) {
+      if (edges.length === 1) continue;
+      if (!runTol) runTol = this.tolerance();
+      const runs = this._runs(edges, runTol);
+      runs.forEach((run, k) => {
+        const base = this._props.get(run[0].key);
+        const p = k === 0 ? base : { ...base, id: this._takeJointId() };
+        for (const e of run) this._props.set(e.key, p);
+      });
+    }
+  }
+
+  // The properties of the crease that edge e continues: a shared edge with properties at one of
+  // e's ends, between the same two actors and on e's line beyond that end; or null.
+  _continuedCrease(e, at, tol) {
+    const pair = (x) => x.triangles.map((t) => this.triangles[t].actor).sort((a, b) => a - b).join(' ');
+    const mine = pair(e);
+    for (const [v, w] of [[e.i, e.j], [e.j, e.i]])
+      for (const f of at.get(v) ?? []) {
+        const p = f !== e && this._props.get(f.key);
+        if (!p || pair(f) !== mine) continue;
+        const u = f.i === v ? f.j : f.i;
+        if (straightThrough(this.vertices[w], this.vertices[v], this.vertices[u], tol)) return p;
+      }
+    return null;
+  }
+
+  // Splits edges of one ID into runs, each one line of edges between the same two actors joined
+  // end to end; the run with the smallest end (x, then y) first, so the split is deterministic.
+  _runs(edges, tol) {
+    const pair = (x) => x.triangles.map((t) => this.triangles[t].actor).sort((a, b) => a - b).join(' ');
+    const groups = new Map();
+    for (const e of edges) (groups.get(pair(e)) ?? groups.set(pair(e), []).get(pair(e))).push(e);
+    const runs = [];
+    for (const group of groups.values())
+      for (const part of connected(group)) {
+        if (part.length === 1 || this._isStraightRun(part, tol)) runs.push(part);
+        else for (const e of part) runs.push([e]);
+      }
+    const first = (run) => {
+      const p = run.flatMap((e) => [this.vertices[e.i], this.vertices[e.j]]);
+      return p.reduce((m, q) => (q.x < m.x || (q.x === m.x && q.y < m.y) ? q : m));
+    };
+    return runs
+      .map((run) => ({ run, p: first(run) }))
+      .sort((r, s) => r.p.x - s.p.x || r.p.y - s.p.y)
+      .map((r) => r.run);
+  }
+
+  // Whether connected edges form a path along one line: two ends, every other vertex on two edges
+  // of it and straight through.
+  _isStraightRun(edges, tol) {
+    const degree = new Map();
+    for (const e of edges) for (const v of [e.i, e.j]) degree.set(v, (degree.get(v) ?? 0) + 1);
+    const ends = [...degree].filter(([, d]) => d === 1).map(([v]) => v);
+    if (ends.length !== 2 || [...degree.values()].some((d) => d > 2)) return false;
+    const a = this.vertices[ends[0]], b = this.vertices[ends[1]], len = dist(a, b);
+    return [...degree.keys()].every((v) => Math.abs(cross3(a, b, this.vertices[v])) <= tol * len);
   }
 
   _topology() {
@@ -449,3 +545,34 @@ export class PatternModel {
 // The adding and editing methods (model_edits.js) become PatternModel's own, as if written above.
 for (const [name, method] of Object.entries(Object.getOwnPropertyDescriptors(PatternEdits.prototype)))
   if (name !== 'constructor') Object.defineProperty(PatternModel.prototype, name, method);
+
+// The two ends of a run of edges (the vertices on one edge of it); a single edge's own ends.
+function runEnds(edges) {
+  if (edges.length === 1) return [edges[0].i, edges[0].j];
+  const degree = new Map();
+  for (const e of edges) for (const v of [e.i, e.j]) degree.set(v, (degree.get(v) ?? 0) + 1);
+  const ends = [...degree].filter(([, d]) => d === 1).map(([v]) => v);
+  return ends.length === 2 ? ends : [edges[0].i, edges[0].j];
+}
+
+// Whether the path w → v → u runs straight through v (u beyond v, on the line of w and v).
+function straightThrough(w, v, u, tol) {
+  const dx = v.x - w.x, dy = v.y - w.y, ex = u.x - v.x, ey = u.y - v.y;
+  return dx * ex + dy * ey > 0 && Math.abs(dx * ey - dy * ex) <= tol * (Math.hypot(dx, dy) + Math.hypot(ex, ey));
+}
+
+// Edges in groups that share vertices (connected components).
+function connected(edges) {
+  const parent = edges.map((_, k) => k);
+  const root = (k) => (parent[k] === k ? k : (parent[k] = root(parent[k])));
+  const owner = new Map();
+  edges.forEach((e, k) => {
+    for (const v of [e.i, e.j]) {
+      if (owner.has(v)) parent[root(k)] = root(owner.get(v));
+      else owner.set(v, k);
+    }
+  });
+  const parts = new Map();
+  edges.forEach((e, k) => (parts.get(root(k)) ?? parts.set(root(k), []).get(root(k))).push(e));
+  return [...parts.values()];
+}

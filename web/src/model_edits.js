@@ -116,7 +116,7 @@ export class PatternEdits {
     for (const e of this.edges()) {
       const p = this._props.get(e.key);
       if (p && e.kind === 'joint' && e.triangles.every((t) => set.has(t)))
-        edges.push({ a: vmap.get(e.i), b: vmap.get(e.j), spring: p.spring, damping: p.damping, assignment: p.assignment });
+        edges.push({ a: vmap.get(e.i), b: vmap.get(e.j), joint: p.id, spring: p.spring, damping: p.damping, assignment: p.assignment });
     }
     return { vertices, triangles, edges, bounds: boxOf(vertices) };
   }
@@ -128,11 +128,15 @@ export class PatternEdits {
     const tris = clipboard.triangles.map((t) => ({ v: [...t.v], actor: first + t.group }));
     const { triangles, vmap } = this._add(pts, tris);
     const topo = this._topology();
+    // One new joint per copied joint: the edges of a run stay one crease.
+    const copies = new Map();
     for (const e of clipboard.edges ?? []) {
       const key = edgeKey(vmap[e.a], vmap[e.b]);
       const edge = topo.byKey.get(key);
-      if (edge && edge.kind === 'joint' && !this._props.has(key))
-        this._props.set(key, { id: this._takeJointId(), spring: e.spring, damping: e.damping, assignment: e.assignment });
+      if (!edge || edge.kind !== 'joint' || this._props.has(key)) continue;
+      const id = e.joint ?? key;
+      if (!copies.has(id)) copies.set(id, { id: this._takeJointId(), spring: e.spring, damping: e.damping, assignment: e.assignment });
+      this._props.set(key, copies.get(id));
     }
     this._commit();
     return triangles;
@@ -207,13 +211,13 @@ export class PatternEdits {
     const tol = this.tolerance();
     this.vertices.push({ x: a.x + t * (b.x - a.x), y: a.y + t * (b.y - a.y) });
     const m = this.vertices.length - 1;
-    // The piece at i keeps the joint's ID; the piece at j gets a new ID with the same properties.
+    // Both pieces stay the one crease they were: the same joint, the same ID.
     const props = this._props.get(edge.key);
     this._props.delete(edge.key);
     for (const ti of edge.triangles) this._splitTriangle(ti, new Map([[edge.key, [m]]]), tol);
     if (props) {
       this._props.set(edgeKey(i, m), props);
-      this._props.set(edgeKey(m, j), { ...props, id: this._takeJointId() });
+      this._props.set(edgeKey(m, j), props);
     }
     this._commit();
     return m;
@@ -319,7 +323,7 @@ export class PatternEdits {
 
   // Replaces triangle t by the triangulation of its outline with extra vertices on its edges
   // (edgeSplits: edge key → vertices ordered along the edge, from either end). Joint properties
-  // of a split edge pass to its pieces: the first piece keeps the ID, the others get new IDs.
+  // of a split edge pass to its pieces, which stay one joint (one ID).
   // Returns the indices of the triangles added besides t.
   _splitTriangle(t, edgeSplits, tol) {
     const tri = this.triangles[t];
@@ -338,7 +342,7 @@ export class PatternEdits {
         const chain = [a, ...mids, b];
         for (let s = 0; s + 1 < chain.length; ++s) {
           const k2 = edgeKey(chain[s], chain[s + 1]);
-          if (!this._props.has(k2)) this._props.set(k2, { ...p, id: s === 0 ? p.id : this._takeJointId() });
+          if (!this._props.has(k2)) this._props.set(k2, p);
         }
       }
     }

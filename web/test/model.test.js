@@ -124,19 +124,67 @@ test('the Miura fixture has the valley and mountain creases foldkit wrote', () =
   assert.equal(byKind.V ?? 0, (text.match(/<Assignment>V</g) ?? []).length);
 });
 
-test('a joint spanning two collinear edges applies to each of them', () => {
+test('a joint spanning two collinear edges stays one joint, and is written as one', () => {
   const m = PatternModel.fromPMML(fixture('collinear-joint.pmml'));
-  // foldkit counts one joint (its segment runs through the corner (1,1)); the model keeps one per edge.
-  assert.deepEqual(counts(m), { actors: 2, joints: 2, triangles: 6, vertices: 7 });
-  const [a, b] = m.joints();
-  assert.equal(a.id, 7, 'the first edge keeps the file ID');
-  assert.equal(b.id, 8, 'the next edge gets the next free ID');
-  for (const j of [a, b]) {
-    assert.deepEqual([j.spring, j.damping, j.assignment, j.actors], [2.5, 0.25, 'M', [1, 2]]);
-    assert.equal(j.a.x, 1);
-    assert.equal(j.b.x, 1);
-  }
-  assert.deepEqual([a.a.y, a.b.y, b.a.y, b.b.y].sort(), [0, 1, 1, 2]);
+  // foldkit counts one joint: its segment runs through the corner (1,1). Before, the model split it
+  // into one joint per edge, so a file saved from the page had a joint more, and a CMML written for
+  // the file folded only half of the crease.
+  assert.deepEqual(counts(m), { actors: 2, joints: 1, triangles: 6, vertices: 7 });
+  const [j] = m.joints();
+  assert.equal(j.id, 7);
+  assert.deepEqual([j.spring, j.damping, j.assignment, j.actors], [2.5, 0.25, 'M', [1, 2]]);
+  assert.deepEqual([j.a, j.b], [{ x: 1, y: 0 }, { x: 1, y: 2 }]);
+  assert.equal(j.keys.length, 2);
+  const corner = m.nearestVertex({ x: 1, y: 1 });
+  assert.equal(m.jointOnEdge(j.va, corner).id, 7);
+  assert.equal(m.jointOnEdge(corner, j.vb).id, 7);
+  const text = m.toPMML();
+  assert.equal((text.match(/<Joint>/g) ?? []).length, 1);
+  assert.match(text, /<Coords>1 0 1 2<\/Coords>/);
+  // Setting the joint sets both of its edges.
+  m.setJoint(7, { assignment: 'V' });
+  assert.equal(m.jointOnEdge(corner, j.vb).assignment, 'V');
+});
+
+test('a run of edges splits where an edit breaks it; the part with the smallest end keeps the ID', () => {
+  const m = PatternModel.fromPMML(fixture('collinear-joint.pmml'));
+  // The upper triangle of actor 2 on the crease becomes an actor of its own: the upper edge now
+  // lies between actors 1 and 3, another crease.
+  const upper = m.trianglesOf(2).find((t) => m.triangles[t].v.some((v) => m.vertices[v].y === 2 && m.vertices[v].x === 1));
+  m.group([upper]);
+  const joints = m.joints();
+  assert.equal(joints.length, 3, 'the lower half, the upper half, and the new crease inside actor 2');
+  const lower = joints.find((j) => j.a.x === 1 && j.b.x === 1 && j.a.y === 0);
+  const top = joints.find((j) => j.a.x === 1 && j.b.x === 1 && j.b.y === 2);
+  assert.equal(lower.id, 7);
+  assert.deepEqual([lower.b, lower.actors], [{ x: 1, y: 1 }, [1, 2]]);
+  assert.notEqual(top.id, 7);
+  assert.deepEqual([top.a, top.actors, top.assignment, top.spring], [{ x: 1, y: 1 }, [1, 3], 'M', 2.5]);
+  // Undone by a snapshot: one joint again.
+  const again = PatternModel.fromPMML(fixture('collinear-joint.pmml'));
+  const snap = again.snapshot();
+  again.group([upper]);
+  again.restore(snap);
+  assert.deepEqual(again.joints().map((j) => [j.id, j.keys.length]), [[7, 2]]);
+});
+
+test('an edge that continues a crease between the same two actors joins it; paste copies runs whole', () => {
+  const m = new PatternModel();
+  m.addPolygon([{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 1, y: 1 }, { x: 0, y: 1 }], 1);
+  m.addPolygon([{ x: 1, y: 0 }, { x: 2, y: 0 }, { x: 2, y: 1 }, { x: 1, y: 1 }], 2);
+  assert.equal(m.joints().length, 1);
+  const id = m.joints()[0].id;
+  m.addTriangle({ x: 0, y: 1 }, { x: 1, y: 1 }, { x: 1, y: 2 }, 1);
+  m.addTriangle({ x: 1, y: 1 }, { x: 2, y: 1 }, { x: 1, y: 2 }, 2);
+  const [j] = m.joints();
+  assert.deepEqual([m.joints().length, j.id, j.keys.length, j.a, j.b], [1, id, 2, { x: 1, y: 0 }, { x: 1, y: 2 }]);
+  // A crease at a corner, not straight through it, is another joint.
+  m.addTriangle({ x: 2, y: 0 }, { x: 3, y: 0 }, { x: 2, y: 1 }, 3);
+  assert.equal(m.joints().length, 2);
+  const c = PatternModel.fromPMML(fixture('collinear-joint.pmml'));
+  c.paste(c.copyTriangles(c.triangles.map((_, t) => t)), 3, 0);
+  assert.deepEqual(c.joints().map((x) => x.keys.length), [2, 2]);
+  assert.deepEqual(c.joints().map((x) => x.assignment), ['M', 'M']);
 });
 
 test('vertices within 1e-9 of the diagonal are welded on read', () => {
@@ -398,10 +446,11 @@ test('splitEdge keeps the area, leaves no T-junction and carries the crease', ()
   assert.equal(m.vertices.length, 17);
   assert.ok(Math.abs(area(m) - a0) < 1e-12);
   assertConforming(m);
-  const halves = m.joints().filter((x) => x.va === mid || x.vb === mid);
-  assert.equal(halves.length, 2);
-  assert.deepEqual(halves.map((h) => h.id), [1, 13], 'the piece at i keeps the ID, the other gets the next one');
-  assert.ok(halves.every((h) => h.assignment === 'V'));
+  // Both pieces stay one crease: joint 1, spanning the old edge.
+  assert.equal(m.joints().length, 12);
+  assert.deepEqual([m.jointOnEdge(j.va, mid).id, m.jointOnEdge(mid, j.vb).id], [1, 1]);
+  assert.deepEqual([m.joint(1).keys.length, m.joint(1).assignment], [2, 'V']);
+  assert.deepEqual([m.joint(1).a, m.joint(1).b], [j.a, j.b]);
   assert.equal(m.length(j.va, mid), m.length(j.va, j.vb) * 0.25);
   // A boundary edge: one triangle is split.
   const e = m.edges().find((x) => x.kind === 'boundary');
