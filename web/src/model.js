@@ -7,6 +7,7 @@ import { dist, boxOf, toleranceOf, cross3, Welder } from './polygon.js';
 import { edgeKey, keyEnds } from './edge_key.js';
 import { ASSIGNMENTS, INT_MAX, readPMML, formatNumber, escapeXml } from './pmml.js';
 import { PatternEdits } from './model_edits.js';
+import { runEnds, continuedCrease, splitRuns } from './joint_runs.js';
 
 export { MERGE_TOLERANCE, earClip, signedArea } from './polygon.js';
 export { edgeKey } from './edge_key.js';
@@ -381,7 +382,7 @@ export class PatternModel {
       while (joined) {
         joined = false;
         for (let k = fresh.length - 1; k >= 0; --k) {
-          const p = this._continuedCrease(fresh[k], at, tol);
+          const p = continuedCrease(this, fresh[k], at, tol);
           if (!p) continue;
           this._props.set(fresh[k].key, p);
           fresh.splice(k, 1);
@@ -399,61 +400,13 @@ export class PatternModel {
     for (const edges of byId.values()) {
       if (edges.length === 1) continue;
       if (!runTol) runTol = this.tolerance();
-      const runs = this._runs(edges, runTol);
+      const runs = splitRuns(this, edges, runTol);
       runs.forEach((run, k) => {
         const base = this._props.get(run[0].key);
         const p = k === 0 ? base : { ...base, id: this._takeJointId() };
         for (const e of run) this._props.set(e.key, p);
       });
     }
-  }
-
-  // The properties of the crease that edge e continues: a shared edge with properties at one of
-  // e's ends, between the same two actors and on e's line beyond that end; or null.
-  _continuedCrease(e, at, tol) {
-    const pair = (x) => x.triangles.map((t) => this.triangles[t].actor).sort((a, b) => a - b).join(' ');
-    const mine = pair(e);
-    for (const [v, w] of [[e.i, e.j], [e.j, e.i]])
-      for (const f of at.get(v) ?? []) {
-        const p = f !== e && this._props.get(f.key);
-        if (!p || pair(f) !== mine) continue;
-        const u = f.i === v ? f.j : f.i;
-        if (straightThrough(this.vertices[w], this.vertices[v], this.vertices[u], tol)) return p;
-      }
-    return null;
-  }
-
-  // Splits edges of one ID into runs, each one line of edges between the same two actors joined
-  // end to end; the run with the smallest end (x, then y) first, so the split is deterministic.
-  _runs(edges, tol) {
-    const pair = (x) => x.triangles.map((t) => this.triangles[t].actor).sort((a, b) => a - b).join(' ');
-    const groups = new Map();
-    for (const e of edges) (groups.get(pair(e)) ?? groups.set(pair(e), []).get(pair(e))).push(e);
-    const runs = [];
-    for (const group of groups.values())
-      for (const part of connected(group)) {
-        if (part.length === 1 || this._isStraightRun(part, tol)) runs.push(part);
-        else for (const e of part) runs.push([e]);
-      }
-    const first = (run) => {
-      const p = run.flatMap((e) => [this.vertices[e.i], this.vertices[e.j]]);
-      return p.reduce((m, q) => (q.x < m.x || (q.x === m.x && q.y < m.y) ? q : m));
-    };
-    return runs
-      .map((run) => ({ run, p: first(run) }))
-      .sort((r, s) => r.p.x - s.p.x || r.p.y - s.p.y)
-      .map((r) => r.run);
-  }
-
-  // Whether connected edges form a path along one line: two ends, every other vertex on two edges
-  // of it and straight through.
-  _isStraightRun(edges, tol) {
-    const degree = new Map();
-    for (const e of edges) for (const v of [e.i, e.j]) degree.set(v, (degree.get(v) ?? 0) + 1);
-    const ends = [...degree].filter(([, d]) => d === 1).map(([v]) => v);
-    if (ends.length !== 2 || [...degree.values()].some((d) => d > 2)) return false;
-    const a = this.vertices[ends[0]], b = this.vertices[ends[1]], len = dist(a, b);
-    return [...degree.keys()].every((v) => Math.abs(cross3(a, b, this.vertices[v])) <= tol * len);
   }
 
   _topology() {
@@ -545,34 +498,3 @@ export class PatternModel {
 // The adding and editing methods (model_edits.js) become PatternModel's own, as if written above.
 for (const [name, method] of Object.entries(Object.getOwnPropertyDescriptors(PatternEdits.prototype)))
   if (name !== 'constructor') Object.defineProperty(PatternModel.prototype, name, method);
-
-// The two ends of a run of edges (the vertices on one edge of it); a single edge's own ends.
-function runEnds(edges) {
-  if (edges.length === 1) return [edges[0].i, edges[0].j];
-  const degree = new Map();
-  for (const e of edges) for (const v of [e.i, e.j]) degree.set(v, (degree.get(v) ?? 0) + 1);
-  const ends = [...degree].filter(([, d]) => d === 1).map(([v]) => v);
-  return ends.length === 2 ? ends : [edges[0].i, edges[0].j];
-}
-
-// Whether the path w → v → u runs straight through v (u beyond v, on the line of w and v).
-function straightThrough(w, v, u, tol) {
-  const dx = v.x - w.x, dy = v.y - w.y, ex = u.x - v.x, ey = u.y - v.y;
-  return dx * ex + dy * ey > 0 && Math.abs(dx * ey - dy * ex) <= tol * (Math.hypot(dx, dy) + Math.hypot(ex, ey));
-}
-
-// Edges in groups that share vertices (connected components).
-function connected(edges) {
-  const parent = edges.map((_, k) => k);
-  const root = (k) => (parent[k] === k ? k : (parent[k] = root(parent[k])));
-  const owner = new Map();
-  edges.forEach((e, k) => {
-    for (const v of [e.i, e.j]) {
-      if (owner.has(v)) parent[root(k)] = root(owner.get(v));
-      else owner.set(v, k);
-    }
-  });
-  const parts = new Map();
-  edges.forEach((e, k) => (parts.get(root(k)) ?? parts.set(root(k), []).get(root(k))).push(e));
-  return [...parts.values()];
-}
