@@ -285,10 +285,12 @@ async function simulateNow() {
   const { model } = app;
   const version = model.version;
   const f = files();
+  const sequenceText = writeCMML(app.sequence);
   const sim = await task('simulate', () => session.simulate(model, app.sequence, f, options));
   if (!sim) return null;
   if (!current(model, version)) return log('the pattern changed while it was simulated: simulate again');
   sim.files = f;
+  sim.sequenceText = sequenceText;
   app.simulation = sim;
   const r = sim.result;
   setNumber('closure-max', r.max_closure_error);
@@ -411,10 +413,23 @@ function download(name, text, type) {
   link.click();
 }
 
+// The simulated trajectory foldkit wrote (NAME-frames.fold: every frame, its time as
+// "foldkit:time"), as long as it is the trajectory of the folds the page holds now.
+async function saveTrajectory() {
+  const sim = app.simulation;
+  if (!sim) return log('nothing simulated yet: press Simulate first');
+  if (sim.sequenceText !== writeCMML(app.sequence)) return log('the folds changed since the last simulation: simulate again');
+  const text = await task('export', () => api.readFile(sim.files.frames));
+  if (text === null) return;
+  log(`saved ${sim.files.frames}`);
+  download(sim.files.frames.split('/').pop(), text, 'application/json');
+}
+
 async function save(kind) {
   const f = files();
   const name = (p) => p.split('/').pop();
   if (kind === 'png') return download(`${$('name').value}.png`, view.screenshot());
+  if (kind === 'trajectory') return saveTrajectory();
   const check = await checkNow();
   if (!checkedValid(check)) return;
   if (kind === 'pmml') return log(`saved ${f.pattern} (under the server's root)`);

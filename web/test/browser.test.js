@@ -220,8 +220,17 @@ test('a pattern drawn with the mouse, grouped, folded and simulated matches the 
   await page.click('[data-action="delete"]');
   assert.equal((await checked(page)).info.joints, 3);
   await page.click('#undo');
+  const logText = () => page.$eval('#log', (e) => e.textContent);
+  await page.click('[data-save="trajectory"]');
+  assert.match(await logText(), /nothing simulated yet/);
   await page.evaluate(() => window.foldkit.simulateNow());
   await idle(page);
+  // The simulated trajectory is offered as foldkit wrote it: every frame, with its time.
+  await page.click('[data-save="trajectory"]');
+  await idle(page);
+  assert.match(await logText(), /saved .*drawn-frames\.fold/);
+  const trajectory = JSON.parse(readFileSync(join(root, 'drawn-frames.fold'), 'utf8'));
+  assert.ok(trajectory.file_frames.length > 2 && trajectory.file_frames.every((f) => Number.isFinite(f['foldkit:time'])));
   const cli = cliNumbers(root, 'drawn.pmml', 'drawn.cmml');
   assert.equal(cli.sim.events.length, 1);
   assert.equal(await shown(page, 'n-joints'), cli.info.joints);
@@ -243,6 +252,12 @@ test('a pattern drawn with the mouse, grouped, folded and simulated matches the 
   assert.equal(again.triangles, info.triangles);
   await assertNotBlank(page, 'folded drawing');
   await keepScreenshot(page, 'serve-drawn');
+  // Once the folds change, the last trajectory is not theirs: it is not offered.
+  await click(page, 2, 0.5);
+  await page.$eval('#fold-angle', (e) => { e.value = '-45'; });
+  await page.click('#set-fold');
+  await page.click('[data-save="trajectory"]');
+  assert.match(await logText(), /folds changed since the last simulation/);
   assert.deepEqual(page.errors, []);
 });
 
