@@ -2,8 +2,10 @@
 // Inputs of Carpenter's rule at the sizes issue 20 names, shared by benchmarks/bench_carpenter.cpp
 // and the AtScale tests, so that a test runs the very chain or polygon a benchmark measured.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
+#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
@@ -73,6 +75,55 @@ inline folding::Frame2 random_star(int n, unsigned seed) {
   for (int i = 0; i < n; ++i) {
     const double a = (i + jitter(rng)) * step;
     p.push_back(radius(rng) * std::sqrt(static_cast<double>(n)) * Eigen::Vector2d(std::cos(a), std::sin(a)));
+  }
+  return p;
+}
+
+// Seeded self-avoiding walk of `links` unit steps on the square lattice by the pivot algorithm
+// (Madras & Sokal): from a straight walk, 10·links accepted pivots, each turning the walk's tail
+// about a random vertex by a random non-trivial symmetry of the lattice, kept when the tail meets
+// no vertex of the head. Then every vertex is moved by up to `jitter` in x and y (uniformly), so
+// that no joint is straight; non-adjacent lattice bars lie at least 1 apart, so a jitter below
+// 0.35 keeps the chain simple. This is the input issue 20 describes ("pivot algorithm, jittered by
+// 0.1"); unlike random_chain, it takes seconds at 10,000 links (random_chain's dead-end search
+// ran for an hour at 3,000 without finishing a chain).
+inline folding::Frame2 random_lattice_walk(int links, unsigned seed, double jitter = 0.1) {
+  using Point = std::array<long, 2>;
+  std::mt19937 rng(seed);
+  std::vector<Point> walk(static_cast<std::size_t>(links) + 1);
+  for (int i = 0; i <= links; ++i) walk[static_cast<std::size_t>(i)] = {i, 0};
+  const auto pack = [](const Point& p) { return (p[0] << 32) ^ (p[1] & 0xffffffffL); };
+  // The seven symmetries of the lattice other than the identity, as (x, y) → (a x + b y, c x + d y).
+  static const int symmetry[7][4] = {{0, -1, 1, 0}, {-1, 0, 0, -1}, {0, 1, -1, 0}, {1, 0, 0, -1},
+                                     {-1, 0, 0, 1}, {0, 1, 1, 0},   {0, -1, -1, 0}};
+  std::uniform_int_distribution<int> pivot_at(1, std::max(1, links - 1)), which(0, 6);
+  // Vertex by lattice point: a moved tail point may land where the old tail was, not on the head.
+  std::unordered_map<long, std::size_t> index_of;
+  for (std::size_t i = 0; i < walk.size(); ++i) index_of[pack(walk[i])] = i;
+  std::vector<Point> tail;
+  for (int accepted = 0; accepted < 10 * links && links > 1;) {
+    const auto k = static_cast<std::size_t>(pivot_at(rng));
+    const int* g = symmetry[which(rng)];
+    const Point o = walk[k];
+    tail.clear();
+    bool free = true;
+    for (std::size_t i = k + 1; i < walk.size() && free; ++i) {
+      const long dx = walk[i][0] - o[0], dy = walk[i][1] - o[1];
+      const Point q = {o[0] + g[0] * dx + g[1] * dy, o[1] + g[2] * dx + g[3] * dy};
+      const auto it = index_of.find(pack(q));
+      free = it == index_of.end() || it->second > k;
+      tail.push_back(q);
+    }
+    if (!free) continue;
+    for (std::size_t i = k + 1; i < walk.size(); ++i) index_of.erase(pack(walk[i]));
+    for (std::size_t i = k + 1; i < walk.size(); ++i) index_of[pack(walk[i] = tail[i - k - 1])] = i;
+    ++accepted;
+  }
+  std::uniform_real_distribution<double> shift(-jitter, jitter);
+  folding::Frame2 p;
+  for (const Point& q : walk) {
+    const double x = static_cast<double>(q[0]) + shift(rng);
+    p.emplace_back(x, static_cast<double>(q[1]) + shift(rng));
   }
   return p;
 }
