@@ -1,5 +1,5 @@
 // Planar Carpenter's rule: straighten seeded random 100–1,000-link chains and pivot-algorithm
-// lattice walks of 100–3,000 links (constraint generation:
+// lattice walks of 100–1,000 links (3,000 ran over half an hour) (constraint generation:
 // the LP starts with near pairs and takes violated struts as they show, warm-started; the closed-
 // form end takes over once the chain is monotone; docs/CARPENTER.md has the figures), and, side by
 // side on smaller chains, the same planner with all O(n²) struts in every LP
@@ -52,7 +52,7 @@ void BM_Carpenter_Ours(benchmark::State& state) { run(state, false); }
 void BM_Carpenter_AllStruts(benchmark::State& state) { run(state, true); }
 
 BENCHMARK(BM_Carpenter_Straighten)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)->Iterations(1)->Unit(benchmark::kSecond);
-BENCHMARK(BM_Carpenter_StraightenLatticeWalk)->Arg(100)->Arg(300)->Arg(1000)->Arg(3000)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_Carpenter_StraightenLatticeWalk)->Arg(100)->Arg(300)->Arg(1000)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(BM_Carpenter_Ours)->Arg(50)->Arg(100)->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Carpenter_AllStruts)->Arg(50)->Arg(100)->Iterations(1)->Unit(benchmark::kMillisecond);
 
