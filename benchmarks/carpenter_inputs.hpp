@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <unordered_map>
 #include <vector>
@@ -92,13 +93,16 @@ inline folding::Frame2 random_lattice_walk(int links, unsigned seed, double jitt
   std::mt19937 rng(seed);
   std::vector<Point> walk(static_cast<std::size_t>(links) + 1);
   for (int i = 0; i <= links; ++i) walk[static_cast<std::size_t>(i)] = {i, 0};
-  const auto pack = [](const Point& p) { return (p[0] << 32) ^ (p[1] & 0xffffffffL); };
+  // Unsigned, so that negative coordinates shift and wrap without undefined behaviour.
+  const auto pack = [](const Point& p) {
+    return (static_cast<std::uint64_t>(p[0]) << 32) ^ static_cast<std::uint32_t>(p[1]);
+  };
   // The seven symmetries of the lattice other than the identity, as (x, y) → (a x + b y, c x + d y).
   static const int symmetry[7][4] = {{0, -1, 1, 0}, {-1, 0, 0, -1}, {0, 1, -1, 0}, {1, 0, 0, -1},
                                      {-1, 0, 0, 1}, {0, 1, 1, 0},   {0, -1, -1, 0}};
   std::uniform_int_distribution<int> pivot_at(1, std::max(1, links - 1)), which(0, 6);
   // Vertex by lattice point: a moved tail point may land where the old tail was, not on the head.
-  std::unordered_map<long, std::size_t> index_of;
+  std::unordered_map<std::uint64_t, std::size_t> index_of;
   for (std::size_t i = 0; i < walk.size(); ++i) index_of[pack(walk[i])] = i;
   std::vector<Point> tail;
   for (int accepted = 0; accepted < 10 * links && links > 1;) {
