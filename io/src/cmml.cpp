@@ -1,12 +1,12 @@
 #include "foldkit/io/cmml.hpp"
 
 #include <algorithm>
-#include <optional>
-#include <string_view>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include <tinyxml2.h>
 
@@ -99,10 +99,6 @@ struct CmmlReading {
   }
 };
 
-bool blank(std::string_view s) {
-  return s.find_first_not_of(" \t\r\n") == std::string_view::npos;
-}
-
 // Files from this size on are read a slice at a time (parse_cmml_sliced).
 constexpr std::size_t kSlicedFrom = std::size_t(4) << 20;
 constexpr std::size_t kSliceBytes = std::size_t(1) << 20;
@@ -126,7 +122,7 @@ std::optional<geometry::FoldSequence> parse_cmml_sliced(const std::string& text,
     prefix.remove_prefix(end + 2);
   }
   const std::string_view body(text.data() + open + 6, close - open - 6);
-  if (!blank(prefix) || !blank(std::string_view(text).substr(close + 7)) || body.find("<!") != std::string_view::npos ||
+  if (!detail::blank(prefix) || !detail::blank(std::string_view(text).substr(close + 7)) || body.find("<!") != std::string_view::npos ||
       body.find("<?") != std::string_view::npos || body.find("<CMML") != std::string_view::npos || body.find("</CMML") != std::string_view::npos)
     return std::nullopt;
   CmmlReading reading;
@@ -155,10 +151,6 @@ std::optional<geometry::FoldSequence> parse_cmml_sliced(const std::string& text,
 
 namespace {
 
-// A CMML of thousands of folds (projected folding writes every crease at every step: 308,000
-// <Fold> elements, 49 MB, for a Miura-ori 40 × 40) is read a slice of elements at a time, so that
-// only one slice's document is in memory; the result is that of reading it whole, and a file the
-// slices cannot read is read whole for its error.
 geometry::FoldSequence parse_cmml_whole(const std::string& text, const std::string& name) {
   detail::XmlInput in(text, name);
   CmmlReading reading;
@@ -168,6 +160,10 @@ geometry::FoldSequence parse_cmml_whole(const std::string& text, const std::stri
 
 }  // namespace
 
+// A CMML of thousands of folds (projected folding writes every crease at every step: 308,000
+// <Fold> elements, 49 MB, for a Miura-ori 40 × 40) is read a slice of elements at a time, so that
+// only one slice's document is in memory; the result is that of reading it whole, and a file the
+// slices cannot read is read whole for its error.
 geometry::FoldSequence parse_cmml(const std::string& text, const std::string& name) {
   if (text.size() >= kSlicedFrom)
     if (auto sequence = detail::parse_cmml_sliced(text, name, kSliceBytes)) return std::move(*sequence);

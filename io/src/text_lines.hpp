@@ -10,4 +10,7 @@ inline int line_at(std::string_view text, std::size_t offset) {
   return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
 }
 
+// Whether `s` is XML white space only (space, tab, line feed, carriage return), or empty.
+inline bool blank(std::string_view s) { return s.find_first_not_of(" \t\n\r") == std::string_view::npos; }
+
 }  // namespace foldkit::io::detail

@@ -20,12 +20,6 @@ namespace {
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
-bool blank(const char* s) {
-  for (; s && *s; ++s)
-    if (!is_space(*s)) return false;
-  return true;
-}
-
 std::string_view trim(std::string_view s) {
   while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
   while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
@@ -235,7 +229,7 @@ std::vector<const tinyxml2::XMLElement*> XmlInput::children(const tinyxml2::XMLE
   for (const tinyxml2::XMLNode* n = e.FirstChild(); n; n = n->NextSibling()) {
     if (const auto* el = n->ToElement())
       out.push_back(el);
-    else if (const auto* text = n->ToText(); text && !blank(text->Value()))
+    else if (const auto* text = n->ToText(); text && text->Value() && !blank(text->Value()))
       fail(*n, std::string("unexpected text inside <") + e.Name() + ">");
   }
   return out;
