@@ -21,12 +21,12 @@
 #include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/planners/carpenter_fallback.hpp"
-#include "plan_finish.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/statespaces/closure_constraint.hpp"
 #include "foldkit/statespaces/driving_space.hpp"
 #include "foldkit/statespaces/single_vertex_space.hpp"
 #include "foldkit/statespaces/validity.hpp"
+#include "plan_finish.hpp"
 
 namespace foldkit::planners {
 
@@ -307,6 +307,22 @@ PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
 
 namespace {
 
+// The states strictly between `a` and `b` on the single-vertex space's motion from one to the
+// other, appended to `out`: the motion is linear in the active angles, so evenly spaced states at
+// most `step` apart in every crease.
+void single_vertex_motion(const PlanSetup& setup, const ob::State* a, const ob::State* b, double step, ob::State* tmp,
+                          std::vector<FoldState>& out) {
+  const auto& sv = setup.single_vertex;
+  const FoldState fa = sv->to_fold_state(a), fb = sv->to_fold_state(b);
+  const int parts = std::max(1, static_cast<int>(std::ceil((fb.angles - fa.angles).cwiseAbs().maxCoeff() / step)));
+  for (int k = 1; k < parts; ++k) {
+    sv->interpolate(a, b, static_cast<double>(k) / parts, tmp);
+    FoldState f;
+    if (!setup.reader(tmp, f)) break;
+    out.push_back(f);
+  }
+}
+
 // The states strictly between `a` and `b` on the driving space's motion from one to the other,
 // appended to `out`: the interval of the motion is halved until neighbours differ by at most
 // `step` in every crease (or after 16 halvings; densify() then judges the gap).
@@ -333,34 +349,18 @@ void driving_motion(const PlanSetup& setup, const ob::State* a, const ob::State*
 std::optional<std::vector<FoldState>> path_waypoints(const PlanSetup& setup, og::PathGeometric path, const PlanRequest& req,
                                                      bool to_goal, std::string* why) {
   // The path's states, densified along the space's own interpolation: single-vertex segments
-  // are linear in the active angles; constrained ones follow the manifold (OMPL's geodesic).
+  // are linear in the active angles; driving ones are halved until no crease moves more than the
+  // waypoint step (near a fold of the chart the passives move much faster than the driving angles,
+  // and OMPL's path.interpolate(), spaced by the driving distance, left gaps there that densify()'s
+  // straight projections could not bridge: a Resch plan was refused as a jump); constrained ones
+  // follow the manifold (OMPL's geodesic).
   std::vector<FoldState> states;
-  const auto& sv = setup.single_vertex;
-  if (sv) {
+  if (setup.single_vertex || setup.driving) {
+    const auto motion = setup.single_vertex ? single_vertex_motion : driving_motion;
     ob::State* tmp = setup.si->allocState();
     for (unsigned int i = 0; i < static_cast<unsigned int>(path.getStateCount()); ++i) {
       FoldState f;
-      if (i > 0) {
-        const FoldState a = sv->to_fold_state(path.getState(i - 1)), b = sv->to_fold_state(path.getState(i));
-        const int parts = std::max(1, static_cast<int>(std::ceil((b.angles - a.angles).cwiseAbs().maxCoeff() / req.waypoint_step)));
-        for (int k = 1; k < parts; ++k) {
-          sv->interpolate(path.getState(i - 1), path.getState(i), static_cast<double>(k) / parts, tmp);
-          if (!setup.reader(tmp, f)) break;
-          states.push_back(f);
-        }
-      }
-      if (setup.reader(path.getState(i), f)) states.push_back(f);
-    }
-    setup.si->freeState(tmp);
-  } else if (setup.driving) {
-    // The driving space's own motions, halved until no crease moves more than the waypoint step
-    // between neighbours: near a fold of the chart the passives move much faster than the driving
-    // angles, and OMPL's path.interpolate() (spaced by the driving distance) left gaps there that
-    // densify()'s straight projections could not bridge (a Resch plan was refused as a jump).
-    ob::State* tmp = setup.si->allocState();
-    for (unsigned int i = 0; i < static_cast<unsigned int>(path.getStateCount()); ++i) {
-      FoldState f;
-      if (i > 0) driving_motion(setup, path.getState(i - 1), path.getState(i), req.waypoint_step, tmp, states);
+      if (i > 0) motion(setup, path.getState(i - 1), path.getState(i), req.waypoint_step, tmp, states);
       if (setup.reader(path.getState(i), f)) states.push_back(f);
     }
     setup.si->freeState(tmp);
@@ -462,8 +462,8 @@ PlanResult plan(const PlanRequest& req) {
   if (via_flat) direct.time = kSamplerShare * req.time;
   std::optional<og::PathGeometric> path = solve(setup, direct, result);
   if (!path && via_flat)
-    return detail::plan_via_flat(req, setup, result,
-                         req.planner + " found no direct plan in " + std::to_string(direct.time) + " s (" + result.status.message + ")");
+    return detail::plan_via_flat(
+        req, setup, result, req.planner + " found no direct plan in " + std::to_string(direct.time) + " s (" + result.status.message + ")");
   if (!path) return result;
   if (req.simplify) {
     og::PathSimplifier simplifier(setup.si);
@@ -477,9 +477,9 @@ PlanResult plan(const PlanRequest& req) {
     return result;
   }
   return detail::finish_plan(req, setup, *dense, result,
-                result.fallback ? "solved by the Carpenter fallback (" + req.planner + " found no plan in " +
-                                      std::to_string(kSamplerShare * req.time) + " s)"
-                                : std::string("solved"));
+                             result.fallback ? "solved by the Carpenter fallback (" + req.planner + " found no plan in " +
+                                                   std::to_string(kSamplerShare * req.time) + " s)"
+                                             : std::string("solved"));
 }
 
 }  // namespace foldkit::planners
