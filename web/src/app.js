@@ -14,6 +14,7 @@ const $ = (id) => document.getElementById(id);
 const app = {
   model: new PatternModel(),
   sequence: emptySequence(),
+  sequenceEdits: 0,   // edits of `sequence` so far (a simulation remembers the count it ran on)
   currentEvent: 1,
   check: null,        // the last checkPattern() answer
   simulation: null,   // the last session.simulate() answer
@@ -88,10 +89,10 @@ function current(model, version) {
   return model === app.model && model.version === version;
 }
 
-/** Saves the pattern and shows foldkit's verdict on it; resolves when the numbers are shown. */
 // The check of one version of the pattern, shared by whoever asks while it runs or after.
 let lastCheck = null;
 
+/** Saves the pattern and shows foldkit's verdict on it; resolves when the numbers are shown. */
 async function checkNow() {
   clearTimeout(checkTimer);
   const model = app.model;
@@ -187,9 +188,10 @@ function selectionChanged(selection) {
   if (selection.actors && selection.actors.length && !$('load-actor').value) $('load-actor').value = selection.actors[selection.actors.length - 1];
 }
 
-// The sequence no longer matches the file it was read from.
+// The sequence no longer matches the file it was read from, nor the last simulation.
 function sequenceEdited() {
   delete app.sequence.file;
+  app.sequenceEdits++;
 }
 
 function showSequence() {
@@ -285,12 +287,13 @@ async function simulateNow() {
   const { model } = app;
   const version = model.version;
   const f = files();
-  const sequenceText = writeCMML(app.sequence);
-  const sim = await task('simulate', () => session.simulate(model, app.sequence, f, options));
+  const { sequence, sequenceEdits } = app;
+  const sim = await task('simulate', () => session.simulate(model, sequence, f, options));
   if (!sim) return null;
   if (!current(model, version)) return log('the pattern changed while it was simulated: simulate again');
   sim.files = f;
-  sim.sequenceText = sequenceText;
+  sim.sequence = sequence;
+  sim.sequenceEdits = sequenceEdits;
   app.simulation = sim;
   const r = sim.result;
   setNumber('closure-max', r.max_closure_error);
@@ -406,6 +409,9 @@ async function listOpenable() {
   for (const e of listing.entries) if (e.type === 'file' && /\.(pmml|fold|cmml)$/i.test(e.name)) select.append(new Option(e.name, e.name));
 }
 
+// A path's last component: the file name a download takes.
+const baseName = (path) => path.split('/').pop();
+
 function download(name, text, type) {
   const link = document.createElement('a');
   link.href = typeof text === 'string' && text.startsWith('data:') ? text : URL.createObjectURL(new Blob([text], { type }));
@@ -418,16 +424,16 @@ function download(name, text, type) {
 async function saveTrajectory() {
   const sim = app.simulation;
   if (!sim) return log('nothing simulated yet: press Simulate first');
-  if (sim.sequenceText !== writeCMML(app.sequence)) return log('the folds changed since the last simulation: simulate again');
+  if (sim.sequence !== app.sequence || sim.sequenceEdits !== app.sequenceEdits)
+    return log('the folds changed since the last simulation: simulate again');
   const text = await task('export', () => api.readFile(sim.files.frames));
   if (text === null) return;
   log(`saved ${sim.files.frames}`);
-  download(sim.files.frames.split('/').pop(), text, 'application/json');
+  download(baseName(sim.files.frames), text, 'application/json');
 }
 
 async function save(kind) {
   const f = files();
-  const name = (p) => p.split('/').pop();
   if (kind === 'png') return download(`${$('name').value}.png`, view.screenshot());
   if (kind === 'trajectory') return saveTrajectory();
   const check = await checkNow();
@@ -440,7 +446,7 @@ async function save(kind) {
   const text = await task('export', () => session.exportAs(kind, app.model, app.sequence, f));
   if (text === null) return;
   log(`saved ${kind === 'fold' ? f.fold : f.svg}`);
-  download(name(kind === 'fold' ? f.fold : f.svg), text, kind === 'fold' ? 'application/json' : 'image/svg+xml');
+  download(baseName(kind === 'fold' ? f.fold : f.svg), text, kind === 'fold' ? 'application/json' : 'image/svg+xml');
 }
 
 // --- wiring ----------------------------------------------------------------------------------

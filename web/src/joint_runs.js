@@ -3,7 +3,9 @@
 // properties object per run; these find runs, extend them and split those an edit broke.
 import { dist, cross3 } from './polygon.js';
 
-const pairOf = (model, e) => e.triangles.map((t) => model.triangles[t].actor).sort((a, b) => a - b).join(' ');
+/** The IDs of the two actors an edge lies between, ascending. */
+export const actorsOf = (model, e) => e.triangles.map((t) => model.triangles[t].actor).sort((a, b) => a - b);
+const pairOf = (model, e) => actorsOf(model, e).join(' ');
 
 /**
  * The properties of the crease that edge e continues: a shared edge with properties at one of e's
@@ -48,12 +50,17 @@ export function splitRuns(model, edges, tol) {
     .map((r) => r.run);
 }
 
+// How many of the edges meet at each vertex, and the vertices only one of them reaches.
+function degrees(edges) {
+  const degree = new Map();
+  for (const e of edges) for (const v of [e.i, e.j]) degree.set(v, (degree.get(v) ?? 0) + 1);
+  return { degree, ends: [...degree].filter(([, d]) => d === 1).map(([v]) => v) };
+}
+
 // Whether connected edges form a path along one line: two ends, every other vertex on two edges
 // of it and straight through.
 function isStraightRun(model, edges, tol) {
-  const degree = new Map();
-  for (const e of edges) for (const v of [e.i, e.j]) degree.set(v, (degree.get(v) ?? 0) + 1);
-  const ends = [...degree].filter(([, d]) => d === 1).map(([v]) => v);
+  const { degree, ends } = degrees(edges);
   if (ends.length !== 2 || [...degree.values()].some((d) => d > 2)) return false;
   const a = model.vertices[ends[0]], b = model.vertices[ends[1]], len = dist(a, b);
   return [...degree.keys()].every((v) => Math.abs(cross3(a, b, model.vertices[v])) <= tol * len);
@@ -61,10 +68,7 @@ function isStraightRun(model, edges, tol) {
 
 /** The two ends of a run of edges (the vertices on one edge of it); a single edge's own ends. */
 export function runEnds(edges) {
-  if (edges.length === 1) return [edges[0].i, edges[0].j];
-  const degree = new Map();
-  for (const e of edges) for (const v of [e.i, e.j]) degree.set(v, (degree.get(v) ?? 0) + 1);
-  const ends = [...degree].filter(([, d]) => d === 1).map(([v]) => v);
+  const { ends } = degrees(edges);
   return ends.length === 2 ? ends : [edges[0].i, edges[0].j];
 }
 

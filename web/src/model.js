@@ -7,7 +7,7 @@ import { dist, boxOf, toleranceOf, cross3, Welder } from './polygon.js';
 import { edgeKey, keyEnds } from './edge_key.js';
 import { ASSIGNMENTS, INT_MAX, readPMML, formatNumber, escapeXml } from './pmml.js';
 import { PatternEdits } from './model_edits.js';
-import { runEnds, continuedCrease, splitRuns } from './joint_runs.js';
+import { actorsOf, runEnds, continuedCrease, splitRuns } from './joint_runs.js';
 
 export { MERGE_TOLERANCE, earClip, signedArea } from './polygon.js';
 export { edgeKey } from './edge_key.js';
@@ -216,7 +216,7 @@ export class PatternModel {
       const A = this.vertices[va], B = this.vertices[vb];
       // Coordinates in (x, y) order, not index order: the text then survives a read that renumbers.
       if (B.x < A.x || (B.x === A.x && B.y < A.y)) [va, vb] = [vb, va];
-      const actors = edges[0].triangles.map((t) => this.triangles[t].actor).sort((x, y) => x - y);
+      const actors = actorsOf(this, edges[0]);
       list.push({ id, a: { ...this.vertices[va] }, b: { ...this.vertices[vb] }, va, vb, actors,
         spring: p.spring, damping: p.damping, assignment: p.assignment, key: edges[0].key, keys: edges.map((e) => e.key) });
     }
