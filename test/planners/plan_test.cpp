@@ -15,6 +15,7 @@
 #include "foldkit/geometry/mobility.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/planners/plan.hpp"
+#include "foldkit/planners/plan_setup.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/simulation/collision_world.hpp"
 #include "foldkit/statespaces/single_vertex_space.hpp"
@@ -303,8 +304,12 @@ TEST(Plan, DrivingSpaceFromOneFoldedStateToAnother) {
     req.start = at;
     req.start_sequence = so_far;
     req.goal = folded_along_assignment(p, next);
+    // Along the start's own branch: a direct path exists, so the planner keeps all of its time
+    // (no way through flat after a quarter of it).
+    EXPECT_TRUE(foldkit::planners::make_plan_setup(req).reachable);
     const PlanResult r = plan(req);
     ASSERT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_FALSE(r.via_flat);
     EXPECT_EQ(r.space, "driving");
     ASSERT_TRUE(r.replay && r.replay->status.ok());
     EXPECT_LT((r.waypoints.front().angles - at.angles).cwiseAbs().maxCoeff(), 1e-9);

@@ -75,11 +75,12 @@ struct PlanRequest {
   /// When the planner finds no plan in a quarter of `time` (kSamplerShare), go through flat:
   /// - single-vertex space: the path of Carpenter's rule on the sphere (start → flat → goal,
   ///   CarpenterFallbackPlanner), which reaches every closed, non-crossing state;
-  /// - driving space, from a start that is not flat: a plan from flat to the start, reversed,
-  ///   then one from flat to the goal, with the rest of `time` split between them (also at once,
-  ///   without searching, when the goal is known to lie on another branch). Every branch of a
-  ///   sheet's closed states meets the others at flat, so this joins ends that no motion of one
-  ///   driving space joins.
+  /// - driving space, from a start that is not flat and whose straight continuation to the
+  ///   goal's driving angles does not reach the goal (PlanSetup::reachable; one that does keeps
+  ///   all of `time`): a plan from flat to the start, reversed, then one from flat to the goal,
+  ///   with the rest of `time` split between them (also at once, without searching, when the goal
+  ///   is known to lie on another branch). Every branch of a sheet's closed states meets the
+  ///   others at flat, so this joins ends that no motion of one driving space joins.
   ///
   /// Off: the planner has all of `time`, and a goal on another branch is named (NoProgress).
   bool fallback = true;

@@ -38,6 +38,10 @@ struct PlanSetup {
   /// Not empty: the space cannot reach the goal from the start, and why (a 1-DOF pattern whose
   /// start continues to another state at the goal's driving angle: the goal is on another branch).
   std::string unreachable;
+  /// Driving space: the straight continuation from the start to the goal's driving angles ends at
+  /// the goal, so a direct path exists (collisions aside) and a folded start is not planned
+  /// through flat.
+  bool reachable = false;
 
   /// Writes a closed fold state into a state of `space`.
   /// @return false when the space cannot hold it (a singular state of the single-vertex space)
