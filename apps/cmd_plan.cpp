@@ -45,7 +45,10 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
   app->add_option("--planner", opt.planner, "OMPL geometric planner by name (RRTConnect, RRT*, PRM, KPIECE1, BiTRRT, …)")
       ->capture_default_str();
   app->add_option("--param", opt.params, "NAME=VALUE: a planner parameter by OMPL's name (repeatable), e.g. range=0.3");
-  app->add_option("--time", opt.time, "Seconds for the planner")->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_option("--time", opt.time,
+                  "Seconds the search may take: sampling, the Carpenter fallback and the way through flat (not the replay)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app->add_option("--seed", opt.seed, "Random seed (same seed, same plan)")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_flag("--no-collision", opt.no_collision, "Closure only (no collision world is built)");
   app->add_option("--search-margin", opt.search_margin,

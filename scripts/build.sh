@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Configures and builds foldkit in ./build (Release): everything — libraries, CLI, tests,
-# benchmarks, experiments and the browser app's packages (npm). Extra arguments go to cmake's
+# benchmarks, experiments, the Python module and the browser app's packages (npm), each switched
+# on explicitly, whatever an earlier configure of ./build (scripts/demo.sh) cached; a part that
+# cannot be built is a configure error (scripts/configure.sh all). Extra arguments go to cmake's
 # configure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DFOLDKIT_BUILD_TESTS=ON -DFOLDKIT_BUILD_BENCHMARKS=ON \
-  -DFOLDKIT_BUILD_EXPERIMENTS=ON -DFOLDKIT_BUILD_WEB=ON "$@" >&2
+bash scripts/configure.sh all build "$@"
 cmake --build build -j "$(nproc)" >&2

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs the end-to-end demo; its outputs go to ./foldkit-demo. Installs and
-# builds only what the foldkit CLI needs (scripts/test.sh builds everything).
+# builds only what the foldkit CLI needs (scripts/test.sh builds everything); a ./build that
+# scripts/test.sh configured keeps its switches (scripts/configure.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh --demo
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DFOLDKIT_BUILD_TESTS=OFF -DFOLDKIT_BUILD_BENCHMARKS=OFF \
-  -DFOLDKIT_BUILD_EXPERIMENTS=OFF >&2
+bash scripts/configure.sh cli build
 cmake --build build -j "$(nproc)" --target foldkit >&2
 ./build/apps/foldkit demo -o foldkit-demo

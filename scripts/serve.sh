@@ -5,8 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh --serve
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DFOLDKIT_BUILD_TESTS=OFF -DFOLDKIT_BUILD_BENCHMARKS=OFF \
-  -DFOLDKIT_BUILD_EXPERIMENTS=OFF -DFOLDKIT_BUILD_WEB=ON >&2
+bash scripts/configure.sh web build
 cmake --build build -j "$(nproc)" --target foldkit foldkit_web >&2
 mkdir -p foldkit-serve
 ./build/apps/foldkit generate miura --rows 4 --cols 4 -o foldkit-serve/miura-4x4.pmml

@@ -197,6 +197,11 @@ CarpenterSphericalResult flatten_single_vertex(const geometry::CreasePattern& pa
       m << "stopped after " << step << " steps (max_steps), largest fold angle still " << largest << " rad";
       return finish(StatusCode::LimitReached, m.str());
     }
+    if (options.stop && options.stop()) {
+      std::ostringstream m;
+      m << "stopped after " << step << " steps (asked to stop), largest fold angle still " << largest << " rad";
+      return finish(StatusCode::LimitReached, m.str());
+    }
     const sp::Velocity vel = poly.expansive_velocity();
     if (vel.status != sp::Velocity::Status::Ok || !(vel.rate > options.min_rate)) {
       std::ostringstream m;

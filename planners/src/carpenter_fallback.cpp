@@ -18,15 +18,20 @@ namespace og = ompl::geometric;
 using geometry::FoldState;
 
 std::vector<FoldState> carpenter_path(const geometry::CreasePattern& pattern, const FoldState& start, const FoldState& goal,
-                                      double step, std::string* why) {
+                                      double step, std::string* why, const std::function<bool()>& stop) {
   folding::CarpenterSphericalOptions options;
   options.frame_step = step;
+  options.stop = stop;
   // An end → flat (the end itself when it is flat already).
   const auto flatten = [&](const FoldState& end, const char* which) -> std::vector<FoldState> {
     if (end.angles.cwiseAbs().maxCoeff() == 0.0) return {end};
     try {
       folding::CarpenterSphericalResult r = folding::flatten_single_vertex(pattern, end, options);
       if (r.status.ok()) return std::move(r.frames);
+      if (stop && r.status.code == geometry::StatusCode::LimitReached && stop()) {
+        if (why) *why = std::string("the time ran out while Carpenter's rule flattened the ") + which;
+        return {};
+      }
       if (why) *why = std::string("Carpenter's rule does not flatten the ") + which + ": " + r.status.message;
     } catch (const std::invalid_argument& e) {
       if (why) *why = std::string("Carpenter's rule does not take the ") + which + ": " + e.what();
@@ -101,12 +106,12 @@ ob::PlannerStatus CarpenterFallbackPlanner::solve(const ob::PlannerTerminationCo
     return status;
   // The Carpenter path is no search: it ends on its own, and its checks must not expire midway.
   const statespaces::FoldValidity::TimeLimit none(*validity_, std::chrono::steady_clock::time_point::max());
-  if (!fallback()) return ob::PlannerStatus::ABORT;
+  if (!fallback(ptc)) return ptc() ? ob::PlannerStatus::TIMEOUT : ob::PlannerStatus::ABORT;
   used_fallback_ = true;
   return ob::PlannerStatus::EXACT_SOLUTION;
 }
 
-bool CarpenterFallbackPlanner::fallback() {
+bool CarpenterFallbackPlanner::fallback(const ob::PlannerTerminationCondition& ptc) {
   const auto* goal = dynamic_cast<const ob::GoalState*>(pdef_->getGoal().get());
   if (!goal || pdef_->getStartStateCount() == 0) {
     fallback_message_ = "the fallback needs one start state and a goal state";
@@ -114,7 +119,7 @@ bool CarpenterFallbackPlanner::fallback() {
   }
   const ob::State* start = pdef_->getStartState(0);
   const std::vector<FoldState> frames =
-      carpenter_path(*pattern_, space_->to_fold_state(start), space_->to_fold_state(goal->getState()), step_, &fallback_message_);
+      carpenter_path(*pattern_, space_->to_fold_state(start), space_->to_fold_state(goal->getState()), step_, &fallback_message_, [&ptc] { return ptc(); });
   if (frames.empty()) return false;
   // Frames the closed form cannot hold (flat, where the passive axes may line up) are skipped.
   // The frames are one motion: checked in order by one collision world (stacked facets are
@@ -138,6 +143,11 @@ bool CarpenterFallbackPlanner::fallback() {
     last = f;
   };
   for (std::size_t i = 1; i + 1 < frames.size() && ok; ++i) {
+    if (ptc()) {
+      si_->freeState(next);
+      fallback_message_ = "the time ran out while the Carpenter path was checked";
+      return false;
+    }
     if (!space_->from_fold_state(frames[i], next)) continue;
     take(next);
     if (ok) path->append(next);

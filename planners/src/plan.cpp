@@ -424,12 +424,13 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanRequest
   if (status == ob::PlannerStatus::EXACT_SOLUTION) return ss.getSolutionPath();
   // The fallback failed (its reason), or the time ran out (OMPL's TIMEOUT, or only an approximate
   // path in that time); anything else OMPL reports is named as it says it.
-  if (fallback && !fallback->fallback_message().empty())
+  const std::string why_not = fallback ? fallback->fallback_message() : std::string();
+  if (status == ob::PlannerStatus::TIMEOUT || status == ob::PlannerStatus::APPROXIMATE_SOLUTION)
+    result.status = {geometry::StatusCode::LimitReached,
+                     "no plan found within " + std::to_string(req.time) + " s" + (why_not.empty() ? "" : " (" + why_not + ")")};
+  else if (!why_not.empty())
     result.status = {geometry::StatusCode::NoProgress, "no plan: " + req.planner + " found none in " +
-                                                           std::to_string(kSamplerShare * req.time) + " s, and " +
-                                                           fallback->fallback_message()};
-  else if (status == ob::PlannerStatus::TIMEOUT || status == ob::PlannerStatus::APPROXIMATE_SOLUTION)
-    result.status = {geometry::StatusCode::LimitReached, "no plan found within " + std::to_string(req.time) + " s"};
+                                                           std::to_string(kSamplerShare * req.time) + " s, and " + why_not};
   else if (status == ob::PlannerStatus::INVALID_START || status == ob::PlannerStatus::INVALID_GOAL)
     result.status = {geometry::StatusCode::InvalidInput, "no plan: OMPL reports " + status.asString()};
   else

@@ -182,6 +182,28 @@ TEST(CarpenterSpherical, RefusesWhatItCannotFlatten) {
   EXPECT_EQ(r.steps, 1);
 }
 
+// `stop` is asked before every step (a planner's time limit, issue 32): it ends the method with
+// LimitReached after exactly the steps it allowed, and the frames reached so far stay closed.
+TEST(CarpenterSpherical, StopEndsTheMethodBeforeTheNextStep) {
+  std::mt19937 rng(7);
+  const CreasePattern v = build_or_throw(gen::single_vertex(foldkit::test::random_sectors(12, rng, 0.2)));
+  const FoldState folded = foldkit::test::random_vertex_state(v, 5);
+  const CarpenterSphericalResult whole = flatten_single_vertex(v, folded);
+  ASSERT_TRUE(whole.status.ok()) << whole.status.message;
+  ASSERT_GT(whole.steps, 3);
+  CarpenterSphericalOptions options;
+  int asked = 0;
+  options.stop = [&asked] { return ++asked > 3; };
+  const CarpenterSphericalResult r = flatten_single_vertex(v, folded, options);
+  EXPECT_EQ(r.status.code, foldkit::geometry::StatusCode::LimitReached);
+  EXPECT_NE(r.status.message.find("asked to stop"), std::string::npos) << r.status.message;
+  EXPECT_EQ(r.steps, 3);
+  EXPECT_EQ(asked, 4);
+  const ClosureSystem sys(v);
+  for (const FoldState& f : r.frames) EXPECT_LT(sys.max_error(f), 1e-9);
+  EXPECT_GT(r.frames.back().angles.cwiseAbs().maxCoeff(), 1e-3);  // not flat: stopped midway
+}
+
 // The flat state is its own flattening: no step, one frame besides the input.
 TEST(CarpenterSpherical, FlatInputIsAlreadyFlat) {
   std::mt19937 rng(3);

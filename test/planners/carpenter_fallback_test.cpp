@@ -136,6 +136,31 @@ TEST(CarpenterFallback, TakesOverWhenThePlannerCannot) {
   EXPECT_EQ(none.status.code, foldkit::geometry::StatusCode::LimitReached);
 }
 
+// Issue 32: `time` bounds the whole search, the Carpenter fallback included. At degree 32 the
+// fallback needs far more than 0.05 s (≈ 0.6 s of LPs and checks), so with a planner that cannot
+// get anywhere the search ends at the limit, out of time; with time enough the same request is
+// planned by the fallback.
+TEST(CarpenterFallback, TimeBoundsTheFallbackToo) {
+  std::mt19937 rng(3232);
+  const CreasePattern p = build_or_throw(gen::single_vertex(foldkit::test::random_sectors(32, rng, 0.1)));
+  PlanRequest req = request_for(p, random_vertex_state(p, 5, 0.8, 0.4));
+  req.planner = "RRT";
+  req.params = {{"range", "1e-7"}};
+  req.time = 0.05;
+  const PlanResult r = plan(req);
+  EXPECT_EQ(r.status.code, foldkit::geometry::StatusCode::LimitReached) << r.status.message;
+  EXPECT_NE(r.status.message.find("time ran out"), std::string::npos) << r.status.message;
+  // One Carpenter step or one state check past the limit at most (generous for sanitizer builds).
+  EXPECT_LT(r.time, req.time + 0.1);
+  EXPECT_FALSE(r.fallback);
+
+  req.time = 8.0;  // the planner spins for a quarter of it; the fallback needs ≈ 0.6 s of the rest
+  const PlanResult slow = plan(req);
+  expect_valid(p, req, slow);
+  EXPECT_TRUE(slow.fallback);
+  RecordProperty("fallback_seconds", std::to_string(slow.time));
+}
+
 TEST(CarpenterFallback, RefusesBadSettings) {
   const CreasePattern p = random_vertex(6, 9);
   auto chain = std::make_shared<foldkit::statespaces::SingleVertexChain>(p);

@@ -7,6 +7,7 @@ import { View3D } from './view3d.js';
 import { Timeline } from './timeline.js';
 import { emptySequence, setFold, readCMML, writeCMML, anglesAfterEvents } from './cmml.js';
 import * as session from './session.js';
+import { format, StateNumbers } from './numbers.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -18,7 +19,7 @@ const app = {
   currentEvent: 1,
   check: null,        // the last checkPattern() answer
   simulation: null,   // the last session.simulate() answer
-  stateDof: null,     // dof of the state the scrubber rests on
+  stateDof: null,     // dof of the state the scrubber rests on (its frame: stateNumbers.shown)
   busy: 0,
   errors: [],
 };
@@ -28,12 +29,6 @@ const files = () => session.sessionFiles($('name').value.trim() || 'untitled');
 
 function log(text) {
   $('log').textContent = text;
-}
-
-function format(value, digits = 3) {
-  if (value === undefined || value === null) return '–';
-  if (typeof value === 'number' && !Number.isInteger(value)) return value.toExponential(digits - 1);
-  return String(value);
 }
 
 function setNumber(id, value) {
@@ -65,8 +60,11 @@ const editor = new Editor2D($('canvas2d'), {
   onStatus: (text) => { $('hint').textContent = text; },
 });
 const view = new View3D($('view3d'));
+// DOF and closure error of the state the 3D view shows, never of another (numbers.js).
+const stateNumbers = new StateNumbers({ dof: $('n-dof'), closure: $('closure-state') });
 app.editor = editor;
 app.view = view;
+app.stateNumbers = stateNumbers;
 
 let checkTimer = null;
 function patternChanged(model) {
@@ -79,7 +77,8 @@ function patternChanged(model) {
   showSequence();
   view.setPattern(session.viewPattern(model));
   view.setAngles(new Float64Array(model.joints().length));
-  for (const id of ['n-actors', 'n-joints', 'n-dof', 'closure-state', 'closure-max', 'n-collisions', 'verdict']) setNumber(id, null);
+  stateNumbers.showFlat();
+  for (const id of ['n-actors', 'n-joints', 'closure-max', 'n-collisions', 'verdict']) setNumber(id, null);
   clearTimeout(checkTimer);
   checkTimer = setTimeout(() => checkNow(), 300);
 }
@@ -111,8 +110,7 @@ async function checkNow() {
   if (check.ok) {
     setNumber('n-actors', check.info.actors);
     setNumber('n-joints', check.info.joints);
-    setNumber('n-dof', check.dof.dof);
-    setNumber('closure-state', check.dof.closure_error);
+    stateNumbers.flatMeasured(check.dof);  // only while the view shows the flat sheet
   }
   return check;
 }
@@ -229,6 +227,7 @@ function previewEnd() {
   const after = anglesAfterEvents(app.sequence, joints.map((j) => j.id));
   const last = after.length ? after[after.length - 1] : joints.map(() => 0);
   view.setAngles(Float64Array.from(last, (d) => (d * Math.PI) / 180));
+  stateNumbers.showPreview();
 }
 
 function moveEvent(delta) {
@@ -251,10 +250,16 @@ app.timeline = timeline;
 
 // --- simulation and the 3D view --------------------------------------------------------------
 
+// The frame index the view shows for scrubber position `frame`.
+function frameIndex(sim, frame) {
+  return Math.min(frame, sim.frames.length - 1);
+}
+
 function showFrame(frame) {
   const sim = app.simulation;
   if (!sim || !sim.frames.length) return;
-  view.setAngles(sim.frames[Math.min(frame, sim.frames.length - 1)]);
+  view.setAngles(sim.frames[frameIndex(sim, frame)]);
+  stateNumbers.showFrame(sim, frameIndex(sim, frame));  // the numbers wait for the scrubber to rest
   const t = timeline.timeAt(frame);
   const actorIndex = new Map(app.model.actors().map((id, k) => [id, k]));
   const hit = sim.result.collisions.filter((c) => c.time <= t + 1e-9);
@@ -263,18 +268,18 @@ function showFrame(frame) {
   timeline.showClock();
 }
 
-// foldkit's DOF and closure error at the state the scrubber rests on.
+// foldkit's DOF and closure error at the state the scrubber rests on; shown only if that frame
+// is still on screen when the answer comes.
 async function measureState(frame) {
   const sim = app.simulation;
   if (!sim || !sim.frames.length) return null;
+  const k = frameIndex(sim, frame);
+  const token = stateNumbers.showFrame(sim, k);
+  if (token.answer) return app.stateDof;
   const joints = app.model.joints();
-  const degrees = Array.from(sim.frames[Math.min(frame, sim.frames.length - 1)], (r) => (r * 180) / Math.PI);
+  const degrees = Array.from(sim.frames[k], (r) => (r * 180) / Math.PI);
   const dof = await task('dof', () => session.stateDof(sim.files, joints.map((j) => j.id), degrees));
-  if (dof && sim === app.simulation) {
-    app.stateDof = dof;
-    setNumber('n-dof', dof.dof);
-    setNumber('closure-state', dof.closure_error);
-  }
+  if (dof && stateNumbers.frameMeasured(token, dof, sim.result.closure_tolerance)) app.stateDof = dof;
   return dof;
 }
 

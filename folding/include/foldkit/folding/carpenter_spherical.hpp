@@ -4,6 +4,7 @@
 /// expansive motions", JCDCG 2004): a single-vertex crease pattern in any closed, non-crossing
 /// folded state is brought to flat by expansive motions of its spherical polygon, and the frames
 /// replayed backwards fold it (the paper's Fig. 4). docs/CARPENTER.md.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,12 +39,16 @@ struct CarpenterSphericalOptions {
   double min_rate = 1e-12;
   /// Speed of the fastest crease in the folding CMML (radians per second).
   double velocity = 0.5;
+  /// Asked before every step (may be empty): when it answers true the method stops with
+  /// StatusCode::LimitReached and the frames so far. A caller with a time limit (a planner's
+  /// termination condition) passes it here, so that the whole search keeps to the limit.
+  std::function<bool()> stop;
 };
 
 /// What flatten_single_vertex() found.
 struct CarpenterSphericalResult {
   /// StatusCode::Success: the last frame is the flat state (the message says after how many
-  /// steps). Otherwise StatusCode::LimitReached (max_steps) or StatusCode::NoProgress (no
+  /// steps). Otherwise StatusCode::LimitReached (max_steps, or `stop` answered true) or StatusCode::NoProgress (no
   /// strictly expansive motion, or a step failed), with the reason in the message.
   geometry::Status status;
   /// Folded (the input) … flat (or the last state reached), steps merged up to frame_step apart

@@ -5,6 +5,7 @@
 /// Every closed, non-crossing state of a single vertex is connected to flat by an expansive
 /// motion (Streinu & Whiteley 2004), so the second stage reaches goals that sampling misses
 /// (issue 16, item 4; docs/PLANNING.md).
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,24 +23,31 @@ namespace foldkit::planners {
 /// The frames of Carpenter's rule on the sphere from `start` to flat and on to `goal`
 /// (folding::flatten_single_vertex of each end; the goal's frames reversed), at most `step`
 /// apart per crease; flat itself is one frame. Empty, with the reason in `why`, when either end
-/// cannot be flattened (a crossing or singular state, a sector ≥ 180°, the step limit).
+/// cannot be flattened (a crossing or singular state, a sector ≥ 180°, the step limit, `stop`).
 /// @param pattern  a single interior vertex carrying every joint
 /// @param start    closed, non-crossing; one angle per joint, radians
 /// @param goal     closed, non-crossing; one angle per joint, radians
 /// @param step     largest change of any fold angle between frames, radians (positive)
 /// @param why      set to the reason when the result is empty; may be null
+/// @param stop     asked before every step of Carpenter's rule (may be empty): true gives up
+///                 (CarpenterSphericalOptions::stop), e.g. when a planner's time is up
 std::vector<geometry::FoldState> carpenter_path(const geometry::CreasePattern& pattern, const geometry::FoldState& start,
-                                                const geometry::FoldState& goal, double step, std::string* why);
+                                                const geometry::FoldState& goal, double step, std::string* why,
+                                                const std::function<bool()>& stop = {});
 
 /// The share of a time limit that plan() and `foldkit bench` give the sampling planner before the
-/// fallback: a quarter, so that the fallback (≈ 0.6 s at degree 32: LPs and checks) still fits
-/// into a limit of 1 s; sampling that succeeds at all mostly does so in milliseconds.
+/// fallback: a quarter, so that the fallback (≈ 0.6 s at degree 32: LPs and checks) mostly fits
+/// into a limit of 1 s; sampling that succeeds at all mostly does so in milliseconds. The
+/// fallback itself stops when the caller's condition fires (the whole limit), so a limit too
+/// short for it ends in TIMEOUT rather than running over.
 constexpr double kSamplerShare = 0.25;
 
 /// A sampling planner with the spherical Carpenter path as its fallback, on the single-vertex
 /// space. solve() gives the inner planner `inner_time` seconds (or less, when the caller's
 /// condition fires first); when it ends without an exact solution and the caller's condition
-/// has not fired, the fallback path is written into the space and checked in order, as one
+/// has not fired, the fallback runs until it ends or the caller's condition fires (then
+/// TIMEOUT: the whole search keeps to the caller's limit, to one Carpenter step or one state
+/// check). Its path is written into the space and checked in order, as one
 /// motion, by `validity` (bounds, closure, crossing facets); a gap larger than the motion
 /// validator's jump limit (a frame the space cannot hold was skipped) goes through the
 /// SpaceInformation's motion validator instead. The path is added as the exact solution when all
@@ -63,8 +71,9 @@ class CarpenterFallbackPlanner : public ompl::base::Planner {
                            std::shared_ptr<const statespaces::FoldValidity> validity, double step = 0.02);
   /// Runs the inner planner, then the fallback (see the class comment).
   /// @return the inner planner's EXACT_SOLUTION; else EXACT_SOLUTION from the fallback; else the
-  ///         inner planner's status when the caller's condition fired, or ABORT (the fallback
-  ///         failed: the reason is in fallback_message())
+  ///         inner planner's status when the caller's condition fired before the fallback,
+  ///         TIMEOUT when it fired during the fallback, or ABORT (the fallback failed: the
+  ///         reason is in fallback_message())
   ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition& ptc) override;
   /// Clears the inner planner and the fallback's outcome.
   void clear() override;
@@ -82,7 +91,7 @@ class CarpenterFallbackPlanner : public ompl::base::Planner {
   const ompl::base::PlannerPtr& inner() const { return inner_; }
 
  private:
-  bool fallback();
+  bool fallback(const ompl::base::PlannerTerminationCondition& ptc);
 
   ompl::base::PlannerPtr inner_;
   double inner_time_, step_;

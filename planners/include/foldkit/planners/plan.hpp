@@ -65,7 +65,10 @@ struct PlanRequest {
   /// The planner's parameters by name, set through OMPL's ParamSet (planner->params()), e.g.
   /// {"range", "0.3"}; applied in order after the planner's defaults.
   std::vector<std::pair<std::string, std::string>> params;
-  /// Seconds for the planner at most (positive, finite); it stops at the first exact solution.
+  /// Seconds the search may take at most (positive, finite): the planner, the Carpenter fallback
+  /// and both legs of the way through flat together (to one check or one Carpenter step); it
+  /// stops at the first exact solution. Not bounded by it: the start's lead-in, simplifying,
+  /// densifying and the replay.
   double time = 5.0;
   unsigned int seed = 1;      ///< seed of OMPL's random numbers (0 counts as 1)
   bool collisions = true;     ///< whether crossing facets make a state invalid (planning and replay)
@@ -112,7 +115,7 @@ struct PlanResult {
   geometry::Status status;
   std::string planner,          ///< the planner's name, as requested
       space;                    ///< the space searched: "single-vertex", "driving", "projected", "atlas" or "tangent-bundle"
-  double time = 0.0;            ///< seconds the planner ran (the fallback included)
+  double time = 0.0;            ///< seconds the search ran (the fallback and the way through flat included; at most about PlanRequest::time)
   /// Whether the path came from a fallback (PlanRequest::fallback) rather than from one run of
   /// the planner.
   bool fallback = false;
