@@ -15,43 +15,31 @@
 
 namespace foldkit::apps {
 
-FileKind kind_of(const std::string& path) {
-  if (has_extension(path, ".pmml")) return FileKind::Pmml;
-  if (has_extension(path, ".cmml")) return FileKind::Cmml;
-  if (has_extension(path, ".fold")) return FileKind::Fold;
-  if (has_extension(path, ".svg")) return FileKind::Svg;
-  return FileKind::Unknown;
+bool is_kind(const std::string& path, FileKind kind) {
+  const io::FileFormat* f = io::format_of(path);
+  return f && f->kind == kind;
 }
 
+// The extension is the user's choice on the command line: a wrong one is a usage error (exit 2),
+// also inside commands that turn the libraries' std::invalid_argument into an input error.
 LoadedPattern load_pattern(const std::string& path, const geometry::BuildOptions& options) {
-  switch (kind_of(path)) {
-    case FileKind::Pmml: return {io::read_pmml(path, options), std::nullopt, {}};
-    case FileKind::Fold: {
-      io::FoldImport f = io::read_fold(path, options);
-      return {std::move(f.pattern), std::move(f.state), std::move(f.warnings)};
-    }
-    default: throw UsageError(path + ": a crease pattern must be a .pmml or .fold file");
+  try {
+    return io::read_pattern_file(path, options);
+  } catch (const io::UnknownFormat& e) {
+    throw UsageError(e.what());
   }
 }
 
 void save_pattern(const std::string& path, const geometry::CreasePattern& pattern,
                   const std::optional<geometry::FoldState>& state, bool joint_ids) {
+  io::PatternOutput output;
+  output.state = state ? &*state : nullptr;
+  output.joint_ids = joint_ids;
   std::string text;
-  switch (kind_of(path)) {
-    case FileKind::Pmml: text = io::write_pmml(pattern); break;
-    case FileKind::Fold: text = io::write_fold(pattern, {state, {}, {}}); break;
-    case FileKind::Svg: {
-      io::SvgOptions svg;
-      svg.joint_ids = joint_ids;
-      svg.state = state ? &*state : nullptr;
-      text = io::write_svg(pattern, svg);
-      break;
-    }
-    case FileKind::Cmml:
-      if (!state) throw UsageError(path + ": a .cmml output needs fold angles, and this input has none");
-      text = io::write_cmml(geometry::sequence_to(pattern, *state, 30.0 * M_PI / 180.0, pattern.title()));
-      break;
-    case FileKind::Unknown: throw UsageError(path + ": unknown output type (use .pmml, .cmml, .fold or .svg)");
+  try {
+    text = io::pattern_text(path, pattern, output);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
   }
   io::write_file_atomic(path, text);
 }

@@ -12,6 +12,7 @@
 #include "foldkit/geometry/fold_sequence.hpp"
 #include "foldkit/geometry/status.hpp"
 #include "foldkit/io/file_name.hpp"
+#include "foldkit/io/formats.hpp"
 
 namespace foldkit::apps {
 
@@ -46,20 +47,20 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class FileKind { Pmml, Cmml, Fold, Svg, Unknown };
-FileKind kind_of(const std::string& path);
-// Whether `path` ends with `extension` (".csv"), ignoring case; kind_of() is built on it.
+// The formats by extension: one table, io::file_formats() (foldkit/io/formats.hpp).
+using io::FileKind;
+// Whether `path`'s extension names the format `kind` (ignoring case).
+bool is_kind(const std::string& path, FileKind kind);
+// Whether `path` ends with `extension` (".csv"), ignoring case.
 using io::has_extension;
 
-// A crease pattern from .pmml or .fold (throws ParseError; UsageError for other extensions).
-struct LoadedPattern {
-  geometry::CreasePattern pattern;
-  std::optional<geometry::FoldState> state;  // fold angles a FOLD file carried
-  geometry::Diagnostics warnings;
-};
+// A crease pattern by the extension of `path` (io::read_pattern_file: pattern, the fold angles
+// the file carried, warnings); throws ParseError, UsageError for an extension no pattern has.
+using LoadedPattern = io::PatternFile;
 LoadedPattern load_pattern(const std::string& path, const geometry::BuildOptions& options = {});
 
-// Writes by the extension of `path` (.pmml, .fold, .svg; .cmml needs a state), atomically.
+// Writes by the extension of `path` (io::pattern_text: .pmml, .fold, .svg; .cmml needs a state),
+// atomically; UsageError for an extension no pattern is written as.
 void save_pattern(const std::string& path, const geometry::CreasePattern& pattern,
                   const std::optional<geometry::FoldState>& state = std::nullopt, bool joint_ids = false);
 

@@ -130,8 +130,8 @@ Command add_carpenter(CLI::App& root) {
       ->capture_default_str();
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
   return {app, [opt] {
-            const FileKind kind = kind_of(opt->chain);
-            if (kind == FileKind::Pmml || kind == FileKind::Fold) return run_spherical(*opt);
+            const io::FileFormat* format = io::format_of(opt->chain);
+            if (format && io::reads_patterns(*format)) return run_spherical(*opt);
             if (!opt->state.empty()) throw UsageError("--state is for a single-vertex crease pattern (.pmml, .fold)");
             return run_planar(*opt);
           }};

@@ -26,23 +26,23 @@ int convert_sequence(const ConvertArgs& opt) {
     return kInvalidInput;
   }
   std::vector<geometry::FoldState> states = geometry::event_states(pattern, seq);
-  switch (kind_of(opt.output)) {
-    case FileKind::Cmml: io::write_file_atomic(opt.output, io::write_cmml(seq)); break;
-    case FileKind::Fold: {
-      io::FoldExport extra;
-      extra.state = states.back();
-      extra.frames.assign(states.begin() + 1, states.end());
-      io::write_file_atomic(opt.output, io::write_fold(pattern, extra));
-      break;
-    }
-    case FileKind::Svg: save_pattern(opt.output, pattern, states.back(), opt.joint_ids); break;
-    default: throw UsageError(opt.output + ": a .cmml converts to .cmml, .fold or .svg");
+  if (is_kind(opt.output, FileKind::Cmml)) {
+    io::write_file_atomic(opt.output, io::write_cmml(seq));
+  } else if (is_kind(opt.output, FileKind::Fold)) {
+    io::FoldExport extra;
+    extra.state = states.back();
+    extra.frames.assign(states.begin() + 1, states.end());
+    io::write_file_atomic(opt.output, io::write_fold(pattern, extra));
+  } else if (is_kind(opt.output, FileKind::Svg)) {
+    save_pattern(opt.output, pattern, states.back(), opt.joint_ids);
+  } else {
+    throw UsageError(opt.output + ": a .cmml converts to .cmml, .fold or .svg");
   }
   return kOk;
 }
 
 int run_convert(const ConvertArgs& opt) {
-  if (kind_of(opt.input) == FileKind::Cmml) return convert_sequence(opt);
+  if (is_kind(opt.input, FileKind::Cmml)) return convert_sequence(opt);
   LoadedPattern loaded = load_pattern(opt.input);
   for (const auto& w : loaded.warnings) std::cerr << geometry::format(w, opt.input) << '\n';
   save_pattern(opt.output, loaded.pattern, loaded.state, opt.joint_ids);

@@ -118,7 +118,7 @@ nlohmann::json fold_json(const FoldArgs& opt, const folding::ProjectedFoldingRes
 }
 
 int run_fold(const FoldArgs& opt) {
-  if (kind_of(opt.output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt.output + "'");
+  if (!is_kind(opt.output, FileKind::Cmml)) throw UsageError("-o needs a .cmml file name, not '" + opt.output + "'");
   if (!(opt.fraction > 0.0)) throw UsageError("--fraction must be greater than 0");
   const geometry::CreasePattern pattern = load_pattern(opt.pattern).pattern;
   const folding::ProjectedFoldingResult r = fold(opt, pattern);

@@ -142,7 +142,7 @@ int report(const PlanArgs& opt, const planners::PlanResult& r) {
 }
 
 int run_plan(PlanArgs& opt) {
-  if (kind_of(opt.output) != FileKind::Cmml) throw UsageError("-o needs a .cmml file name, not '" + opt.output + "'");
+  if (!is_kind(opt.output, FileKind::Cmml)) throw UsageError("-o needs a .cmml file name, not '" + opt.output + "'");
   std::vector<std::pair<std::string, std::string>> params;
   try {
     opt.planner = planners::canonical_planner(opt.planner);

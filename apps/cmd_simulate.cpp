@@ -44,7 +44,7 @@ Command add_simulate(CLI::App& root) {
   app->add_option("--svg", opt->svg, "Folder for SVG snapshots: each event's end and the first collisions");
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
   return {app, [opt] {
-            if (!opt->frames.empty() && kind_of(opt->frames) != FileKind::Fold)
+            if (!opt->frames.empty() && !is_kind(opt->frames, FileKind::Fold))
               throw UsageError("--frames needs a .fold file name, not '" + opt->frames + "'");
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
             const geometry::FoldSequence seq = load_sequence(pattern, opt->sequence);

@@ -27,35 +27,32 @@ Diagnostics check_file(const std::string& path, const ValidateArgs& opt, const s
   geometry::BuildOptions build;
   build.auto_joints = opt.auto_joints;
   try {
-    switch (kind_of(path)) {
-      case FileKind::Pmml: {
-        geometry::BuildResult r = geometry::build_pattern(io::read_pmml_spec(path), build);
-        if (r.pattern)
-          summary = std::to_string(r.pattern->actors().size()) + " actors, " + std::to_string(r.pattern->joints().size()) +
-                    " joints";
-        return r.diagnostics;
-      }
-      case FileKind::Cmml: {
-        const geometry::FoldSequence seq = io::read_cmml(path);
-        std::size_t folds = 0;
-        for (const auto& e : seq.events) folds += e.folds.size();
-        summary = std::to_string(seq.events.size()) + " events, " + std::to_string(folds) + " folds";
-        if (!pattern) {
-          summary += opt.pattern.empty() ? " (not checked against a pattern: give --pattern)"
-                                         : " (not checked against " + opt.pattern + ", which is invalid)";
-          return {};
-        }
-        return geometry::check_sequence(*pattern, seq);
-      }
-      case FileKind::Fold: {
-        io::FoldImport f = io::read_fold(path, build);
-        summary = std::to_string(f.pattern.actors().size()) + " actors, " + std::to_string(f.pattern.joints().size()) +
+    const io::FileFormat* format = io::format_of(path);
+    if (!format || !io::readable(*format))
+      return {{Severity::Error, 0, "unknown file type (expected " + io::extensions(io::readable) + ")"}};
+    if (format->kind == FileKind::Pmml) {
+      // Every problem of the pattern, not only the first that stops its building.
+      geometry::BuildResult r = geometry::build_pattern(io::read_pmml_spec(path), build);
+      if (r.pattern)
+        summary = std::to_string(r.pattern->actors().size()) + " actors, " + std::to_string(r.pattern->joints().size()) +
                   " joints";
-        return f.warnings;
-      }
-      default:
-        return {{Severity::Error, 0, "unknown file type (expected .pmml, .cmml or .fold)"}};
+      return r.diagnostics;
     }
+    if (format->sequence) {
+      const geometry::FoldSequence seq = io::read_cmml(path);
+      std::size_t folds = 0;
+      for (const auto& e : seq.events) folds += e.folds.size();
+      summary = std::to_string(seq.events.size()) + " events, " + std::to_string(folds) + " folds";
+      if (!pattern) {
+        summary += opt.pattern.empty() ? " (not checked against a pattern: give --pattern)"
+                                       : " (not checked against " + opt.pattern + ", which is invalid)";
+        return {};
+      }
+      return geometry::check_sequence(*pattern, seq);
+    }
+    io::PatternFile f = format->read_pattern(path, build);
+    summary = std::to_string(f.pattern.actors().size()) + " actors, " + std::to_string(f.pattern.joints().size()) + " joints";
+    return f.warnings;
   } catch (const io::ParseError& e) {
     return {{Severity::Error, e.line(), e.message()}};
   }

@@ -10,6 +10,7 @@
 
 #include "cli_common.hpp"
 #include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/formats.hpp"
 
 // Last: httplib.h brings <resolv.h>, whose macro `_res` breaks Eigen's headers included after it.
 #include <httplib.h>
@@ -48,9 +49,11 @@ json parse_request(const std::string& body) {
   });
 }
 
-// Files a client may write or read as text: the formats foldkit reads and writes.
+// Files a client may write or read as text: the formats of io's table, load cases and the
+// results verbs write (JSON, CSV).
 bool text_format(const std::string& path) {
-  for (const char* e : {".pmml", ".cmml", ".fold", ".svg", ".loadcase", ".json", ".csv"})
+  if (io::format_of(path)) return true;
+  for (const char* e : {".loadcase", ".json", ".csv"})
     if (has_extension(path, e)) return true;
   return false;
 }
@@ -58,9 +61,8 @@ bool text_format(const std::string& path) {
 // A file of the root as data: never as a page or a script, whatever its name (GET /api/file adds
 // nosniff and a sandbox, so not even an SVG runs script on the API's origin).
 std::string content_type(const std::string& path) {
-  if (has_extension(path, ".svg")) return "image/svg+xml";
-  if (has_extension(path, ".fold") || has_extension(path, ".json")) return "application/json";
-  if (has_extension(path, ".pmml") || has_extension(path, ".cmml")) return "application/xml";
+  if (const io::FileFormat* f = io::format_of(path)) return f->media_type;
+  if (has_extension(path, ".json")) return "application/json";
   return "text/plain; charset=utf-8";
 }
 
@@ -223,7 +225,15 @@ void ServeApi::install(httplib::Server& server) {
 void ServeApi::index(httplib::Response& res) const {
   json verbs = json::array();
   for (const auto& v : served_verbs()) verbs.push_back(v.verb);
-  reply(res, 200, {{"foldkit", "0.1.0"}, {"verbs", verbs}, {"files", files_}, {"max_body", options_.max_body},
+  // io's table of formats, so that the page opens what the CLI opens (a new format is one entry there).
+  json formats = json::array();
+  for (const io::FileFormat& f : io::file_formats())
+    formats.push_back({{"name", f.name},
+                       {"extension", f.extension},
+                       {"reads_patterns", io::reads_patterns(f)},
+                       {"writes_patterns", io::writes_patterns(f)},
+                       {"sequence", f.sequence}});
+  reply(res, 200, {{"foldkit", "0.1.0"}, {"verbs", verbs}, {"formats", formats}, {"files", files_}, {"max_body", options_.max_body},
                    {"max_time", options_.limits.max_time}, {"max_plan_time", options_.limits.max_plan_time}});
 }
 

@@ -6,6 +6,7 @@
 #include "foldkit/io/chain_file.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/file_name.hpp"
+#include "foldkit/io/formats.hpp"
 #include "foldkit/io/fold_format.hpp"
 #include "foldkit/io/parse_error.hpp"
 #include "foldkit/io/pmml.hpp"
@@ -180,11 +181,15 @@ void bind_pattern_files(py::module_& m) {
       "Writes the crease pattern as SVG (mountain/valley styled; with `state`, creases coloured by their angle's sign).");
   m.def(
       "load_pattern", [](const std::string& path) {
-        if (io::has_extension(path, ".pmml")) return io::read_pmml(path);
-        if (io::has_extension(path, ".fold")) return std::move(io::read_fold(path).pattern);
-        throw py::value_error(path + ": a crease pattern must be a .pmml or .fold file");
+        try {
+          return std::move(io::read_pattern_file(path).pattern);
+        } catch (const io::UnknownFormat& e) {
+          throw py::value_error(e.what());
+        }
       },
-      py::arg("path"), "A crease pattern from a .pmml or .fold file, by its extension (as the CLI's PATTERN arguments).");
+      py::arg("path"),
+      "A crease pattern by the extension of `path` (as the CLI's PATTERN arguments: the formats of foldkit's one table, "
+      ".pmml or .fold).");
 }
 
 void bind_cmml(py::module_& m) {

@@ -8,6 +8,7 @@ import { Timeline } from './timeline.js';
 import { emptySequence, setFold, readCMML, writeCMML, anglesAfterEvents } from './cmml.js';
 import * as session from './session.js';
 import { format, StateNumbers } from './numbers.js';
+import { opensPattern, opensSequence, stem } from './formats.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -20,6 +21,7 @@ const app = {
   check: null,        // the last checkPattern() answer
   simulation: null,   // the last session.simulate() answer
   stateDof: null,     // dof of the state the scrubber rests on (its frame: stateNumbers.shown)
+  formats: [],        // the file formats foldkit reads and writes (GET /api; formats.js)
   busy: 0,
   errors: [],
 };
@@ -397,7 +399,7 @@ app.generateNow = generateNow;
 
 async function openNow(path) {
   if (!path) return;
-  const opened = await task('open', () => session.open(path, files()));
+  const opened = await task('open', () => session.open(path, files(), app.formats));
   if (!opened) return;
   if (opened.model) {
     app.sequence = emptySequence();
@@ -411,7 +413,8 @@ async function listOpenable() {
   if (!listing) return;
   const select = $('open');
   select.replaceChildren(new Option('Open…', ''));
-  for (const e of listing.entries) if (e.type === 'file' && /\.(pmml|fold|cmml)$/i.test(e.name)) select.append(new Option(e.name, e.name));
+  const opens = (name) => opensPattern(app.formats, name) || opensSequence(app.formats, name);
+  for (const e of listing.entries) if (e.type === 'file' && opens(e.name)) select.append(new Option(e.name, e.name));
 }
 
 // A path's last component: the file name a download takes.
@@ -523,12 +526,13 @@ async function start() {
   app.interactiveAt = performance.now();  // ms after navigation began: the page answers input from here
   editor.snap = { ...editor.snap, grid: Number($('snap-grid').value) || null };
   const server = await task('server', () => api.index());
+  if (server) app.formats = server.formats;
   // The server's files: the first pattern is opened, then the first sequence.
   if (server && server.files.length) {
-    const pattern = server.files.find((f) => /\.(pmml|fold)$/i.test(f));
-    const sequence = server.files.find((f) => /\.cmml$/i.test(f));
+    const pattern = server.files.find((f) => opensPattern(app.formats, f));
+    const sequence = server.files.find((f) => opensSequence(app.formats, f));
     if (pattern) {
-      $('name').value = pattern.replace(/^.*\//, '').replace(/\.(pmml|fold)$/i, '') + '-edit';
+      $('name').value = stem(app.formats, pattern) + '-edit';
       await openNow(pattern);
     }
     if (pattern && sequence) await openNow(sequence);

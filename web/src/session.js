@@ -3,6 +3,7 @@
 import * as api from './api.js';
 import { writeCMML, readCMML, foldFrameAngles } from './cmml.js';
 import { PatternModel } from './model.js';
+import { formatOf, extensions } from './formats.js';
 
 /** Files of the session named `name` in `folder` (relative to the server's root); the page writes
  * and overwrites them as it goes. */
@@ -111,16 +112,18 @@ export async function generate(kind, parameters, files) {
   return PatternModel.fromPMML(await api.readFile(files.pattern));
 }
 
-/** Opens a file of the root: a PMML or FOLD pattern (FOLD through foldkit convert) → {model},
- * a CMML → {sequence}. */
-export async function open(path, files) {
-  if (/\.cmml$/i.test(path)) return { sequence: await readSequence(path) };
-  if (/\.fold$/i.test(path)) {
+/** Opens a file of the root by its format (`formats`: GET /api's): a crease pattern → {model}
+ * (PMML as it is, any other through foldkit convert to the session's PMML), a sequence (CMML) →
+ * {sequence}. */
+export async function open(path, files, formats) {
+  const format = formatOf(formats, path);
+  if (format && format.sequence) return { sequence: await readSequence(path) };
+  if (format && format.reads_patterns) {
+    if (format.name === 'PMML') return { model: PatternModel.fromPMML(await api.readFile(path)) };
     await api.verb('convert', { input: path, output: files.pattern });
     return { model: PatternModel.fromPMML(await api.readFile(files.pattern)) };
   }
-  if (/\.pmml$/i.test(path)) return { model: PatternModel.fromPMML(await api.readFile(path)) };
-  throw new Error(`${path}: open a .pmml, .fold or .cmml file`);
+  throw new Error(`${path}: open a ${extensions(formats, (f) => f.reads_patterns || f.sequence)} file`);
 }
 
 /** Exports through foldkit convert: FOLD (with one frame per event when there is a sequence) or
