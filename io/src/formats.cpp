@@ -4,6 +4,7 @@
 
 #include "foldkit/geometry/fold_sequence.hpp"
 #include "foldkit/io/cmml.hpp"
+#include "foldkit/io/drawn_lines.hpp"
 #include "foldkit/io/file_name.hpp"
 #include "foldkit/io/fold_format.hpp"
 #include "foldkit/io/pmml.hpp"
@@ -40,7 +41,7 @@ std::vector<FileFormat> make_formats() {
                    return write_fold(p, extra);
                  },
                  false});
-  all.push_back({FileKind::Svg, "SVG", ".svg", "image/svg+xml", nullptr,
+  all.push_back({FileKind::Svg, "SVG", ".svg", "image/svg+xml", read_svg_pattern,
                  [](const geometry::CreasePattern& p, const PatternOutput& out) {
                    SvgOptions svg;
                    svg.joint_ids = out.joint_ids;
@@ -48,6 +49,7 @@ std::vector<FileFormat> make_formats() {
                    return write_svg(p, svg);
                  },
                  false});
+  all.push_back({FileKind::Cp, "ORIPA .cp", ".cp", "text/plain; charset=utf-8", read_cp_pattern, nullptr, false});
   return all;
 }
 

@@ -1,6 +1,7 @@
 #include "foldkit/io/svg.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include <tinyxml2.h>
@@ -20,6 +21,8 @@ Assignment drawn_as(const geometry::CreasePattern& p, std::size_t j, const geome
   return a > 0 ? Assignment::Mountain : a < 0 ? Assignment::Valley : Assignment::Flat;
 }
 
+// Origami Simulator's colours (drawn_lines.hpp reads them back): flat and unassigned creases are
+// its undriven hinges (magenta).
 const char* style(Assignment a) {
   switch (a) {
     case Assignment::Mountain: return "stroke=\"#ff0000\" stroke-width=\"2\"";
@@ -27,7 +30,14 @@ const char* style(Assignment a) {
     case Assignment::Flat:
     case Assignment::Unassigned: break;
   }
-  return "stroke=\"#888888\" stroke-width=\"1.5\" stroke-dasharray=\"2 3\"";
+  return "stroke=\"#ff00ff\" stroke-width=\"1.5\" stroke-dasharray=\"2 3\"";
+}
+
+// With a state, a folded crease's target as Origami Simulator reads it: opacity × 180°.
+std::string target_opacity(const geometry::FoldState* state, std::size_t j) {
+  if (!state) return "";
+  const double a = std::abs(state->angles[static_cast<Eigen::Index>(j)]);
+  return a > 0 ? " stroke-opacity=\"" + format_number(std::min(1.0, a / M_PI)) + "\"" : "";
 }
 
 }  // namespace
@@ -48,7 +58,7 @@ std::string write_svg(const geometry::CreasePattern& pattern, const SvgOptions& 
       << "\" height=\"" << format_number(box.sizes().y() * s + 2 * margin) << "\" viewBox=\"0 0 "
       << format_number(box.sizes().x() * s + 2 * margin) << ' ' << format_number(box.sizes().y() * s + 2 * margin) << "\">\n"
       << "  <title>" << detail::escape_xml(pattern.title()) << "</title>\n"
-      << "  <g id=\"facets\" fill=\"#f4f1e8\" stroke=\"#f4f1e8\" stroke-width=\"0.75\" stroke-linejoin=\"round\">\n";
+      << "  <g id=\"facets\" fill=\"#f4f1e8\" stroke=\"none\">\n";  // filled, not drawn lines
   for (const auto& a : pattern.actors())
     for (const auto& t : a.triangles)
       out << "    <polygon data-actor=\"" << a.id << "\" points=\"" << X(V[t.v[0]]) << ',' << Y(V[t.v[0]]) << ' '
@@ -60,7 +70,8 @@ std::string write_svg(const geometry::CreasePattern& pattern, const SvgOptions& 
   for (std::size_t j = 0; j < pattern.joints().size(); ++j) {
     const auto& joint = pattern.joints()[j];
     const auto &p = V[joint.v[0]], &q = V[joint.v[1]];
-    out << "    <line data-joint=\"" << joint.id << "\" " << style(drawn_as(pattern, j, options.state)) << " x1=\"" << X(p)
+    out << "    <line data-joint=\"" << joint.id << "\" " << style(drawn_as(pattern, j, options.state))
+        << target_opacity(options.state, j) << " x1=\"" << X(p)
         << "\" y1=\"" << Y(p) << "\" x2=\"" << X(q) << "\" y2=\"" << Y(q) << "\"/>\n";
   }
   out << "  </g>\n";

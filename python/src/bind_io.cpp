@@ -188,8 +188,25 @@ void bind_pattern_files(py::module_& m) {
         }
       },
       py::arg("path"),
-      "A crease pattern by the extension of `path` (as the CLI's PATTERN arguments: the formats of foldkit's one table, "
-      ".pmml or .fold).");
+      "A crease pattern by the extension of `path`, as the CLI's PATTERN arguments (.pmml, .fold, .svg in Origami "
+      "Simulator's convention, ORIPA .cp).");
+  m.def(
+      "read_pattern", [](const std::string& path) {
+        try {
+          io::PatternFile f = io::read_pattern_file(path);
+          std::vector<std::string> warnings;
+          for (const auto& w : f.warnings) warnings.push_back(geometry::format(w, path));
+          py::object state = f.state ? py::cast(f.state->angles) : py::none();
+          const auto joints = static_cast<Eigen::Index>(f.pattern.joints().size());
+          return FoldFile{std::move(f.pattern), state, states_array({}, joints), std::move(warnings)};
+        } catch (const io::UnknownFormat& e) {
+          throw py::value_error(e.what());
+        }
+      },
+      py::arg("path"),
+      "A crease pattern by the extension of `path` with the fold angles the file carries (FOLD's key frame, an SVG's "
+      "targets: stroke opacity × 180°) as `state` (radians, positive = mountain) or None, and the reader's warnings "
+      "(FILE:LINE: …); `frames` is empty.");
 }
 
 void bind_cmml(py::module_& m) {

@@ -177,3 +177,25 @@ def test_shapes_and_chains(tmp_path):
     chain = tmp_path / "c.txt"
     chain.write_text("0 0\n1 0\n1 1\n")
     np.testing.assert_allclose(foldkit.read_chain(str(chain)), [[0, 0], [1, 0], [1, 1]])
+
+
+def test_read_pattern_takes_an_svg_with_its_targets_as_the_cli_does(tmp_path, cli):
+    """An SVG in Origami Simulator's convention: the pattern the CLI's convert writes as PMML, and
+    the targets as the state (mountain positive)."""
+    svg = tmp_path / "sq.svg"
+    svg.write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg">\n'
+        '<rect stroke="#000" fill="none" x="0" y="0" width="10" height="10"/>\n'
+        '<line stroke="#f00" stroke-opacity="0.5" x1="0" y1="0" x2="10" y2="10"/>\n'
+        '<line stroke="#00f" x1="10" y1="0" x2="0" y2="10"/>\n</svg>\n')
+    f = foldkit.read_pattern(str(svg))
+    assert len(f.pattern.joint_ids) == 4 and f.warnings == []
+    state = dict(zip(f.pattern.assignments, f.state))
+    assert state["M"] == pytest.approx(np.pi / 2) and state["V"] == pytest.approx(-np.pi)
+    rc, _, err = cli("convert", str(svg), str(tmp_path / "sq.pmml"), json_out=False)
+    assert rc == 0, err
+    q = foldkit.read_pmml(str(tmp_path / "sq.pmml"))
+    np.testing.assert_allclose(sorted(map(tuple, q.vertices)), sorted(map(tuple, f.pattern.vertices)))
+    assert foldkit.load_pattern(str(svg)).joint_ids == f.pattern.joint_ids
+    with pytest.raises(ValueError, match=r"\.pmml, \.fold, \.svg or \.cp"):
+        foldkit.read_pattern(str(tmp_path / "notes.txt"))

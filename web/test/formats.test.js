@@ -20,7 +20,7 @@ test('each served format does what the CLI does with its files', { timeout: 6000
   server = await startServer(root);
   const index = await (await fetch(`${server.url}api`)).json();
   const formats = index.formats;
-  assert.deepEqual(formats.map((f) => f.extension), ['.pmml', '.cmml', '.fold', '.svg']);
+  assert.deepEqual(formats.map((f) => f.extension), ['.pmml', '.cmml', '.fold', '.svg', '.cp']);
   assert.equal(run('generate', 'miura', '--rows', '2', '--cols', '2', '-o', join(root, 'm.pmml')).status, 0);
   assert.equal(run('fold', join(root, 'm.pmml'), '--fraction', '0.5', '-o', join(root, 'm-folded.cmml')).status, 0);
   for (const f of formats) {
@@ -30,9 +30,10 @@ test('each served format does what the CLI does with its files', { timeout: 6000
       ? run('convert', join(root, 'm-folded.cmml'), file, '--pattern', join(root, 'm.pmml'))
       : run('convert', join(root, 'm.pmml'), file);
     assert.equal(written.status === 0, f.writes_patterns, `${f.name}: convert exit ${written.status} ${written.stderr}`);
-    // Read as a pattern by any verb exactly when served so (a sequence is no pattern: usage error).
+    // Read as a pattern by any verb exactly when served so (a sequence is no pattern: usage error);
+    // a format foldkit only reads (.cp) has no file written here to read.
     const info = run('info', file);
-    assert.equal(info.status === 0, f.reads_patterns, `${f.name}: info exit ${info.status} ${info.stderr}`);
+    if (f.writes_patterns || f.sequence) assert.equal(info.status === 0, f.reads_patterns, `${f.name}: info exit ${info.status} ${info.stderr}`);
     if (!f.reads_patterns) assert.equal(info.status, 2, `${f.name}: ${info.stderr}`);
     // A sequence validates against its pattern.
     if (f.sequence) assert.equal(run('validate', file, '--pattern', join(root, 'm.pmml')).status, 0);
@@ -40,9 +41,9 @@ test('each served format does what the CLI does with its files', { timeout: 6000
     assert.equal(opensSequence(formats, file), f.sequence);
   }
   // The page's message lists what it opens, as the CLI's validate does.
-  assert.equal(extensions(formats, (f) => f.reads_patterns || f.sequence), '.pmml, .cmml or .fold');
+  assert.equal(extensions(formats, (f) => f.reads_patterns || f.sequence), '.pmml, .cmml, .fold, .svg or .cp');
   const unknown = run('validate', join(root, 'notes.txt'));
-  assert.match(unknown.stderr, /expected \.pmml, \.cmml or \.fold/);
+  assert.match(unknown.stderr, /expected \.pmml, \.cmml, \.fold, \.svg or \.cp/);
   assert.equal(formatOf(formats, 'a/B.FOLD').name, 'FOLD');
   assert.equal(formatOf(formats, 'notes.txt'), null);
   assert.equal(formatOf(formats, '.pmml'), null);

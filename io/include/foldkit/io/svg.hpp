@@ -19,9 +19,11 @@ struct SvgOptions {
   const geometry::FoldState* state = nullptr;
 };
 
-/// The flat sheet as SVG, y pointing up as in the pattern, with a 20 px margin. Mountain: red
-/// solid; valley: blue dashed; unassigned/flat: grey; boundary: black (Origami Simulator's
-/// colours, so its SVG importer reads ours).
+/// The flat sheet as SVG, y pointing up as in the pattern, with a 20 px margin, in Origami
+/// Simulator's convention, so that it and read_svg_pattern() read it back: boundary black;
+/// mountain red solid; valley blue dashed; unassigned/flat magenta (an undriven hinge); with a
+/// state, each folded crease's stroke-opacity is |angle| / 180°, its target. Facets are filled
+/// polygons without a stroke (not lines).
 std::string write_svg(const geometry::CreasePattern& pattern, const SvgOptions& options = {});
 
 }  // namespace foldkit::io

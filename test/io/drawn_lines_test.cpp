@@ -1,0 +1,237 @@
+// Crease patterns drawn as lines (Origami Simulator's SVG, ORIPA's .cp; issue 34). Oracles that
+// do not share the arrangement's code: the lengths and targets of the file's own strokes (lines
+// split at crossings keep their total length), Maekawa's theorem at the vertices of the fully
+// folded flat-foldable fixtures, closed forms of small drawings, and write → read round trips.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "foldkit/geometry/generators.hpp"
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/drawn_lines.hpp"
+#include "foldkit/io/formats.hpp"
+#include "foldkit/io/parse_error.hpp"
+#include "foldkit/io/svg.hpp"
+#include "test_paths.hpp"
+
+namespace foldkit::io {
+namespace {
+
+using geometry::Assignment;
+using geometry::CreasePattern;
+using geometry::Vec2;
+
+const char* kFixtures[] = {"birdBase", "brochurefold", "huffmanWaterbomb", "miura-ori", "reschTriTessellation", "simpleVertex",
+                           "singlesquaretwist", "squareBase", "traditionalCrane", "waterbomb", "waterbombBase"};
+
+std::string fixture(const std::string& name) { return foldkit::test::fixture_path("svg/OrigamiSimulator__" + name + ".svg"); }
+
+std::string svg(const std::string& body) {
+  return "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\">\n" + body + "</svg>\n";
+}
+
+double joint_length(const CreasePattern& p, const geometry::Joint& j) { return (p.vertices()[j.v[0]] - p.vertices()[j.v[1]]).norm(); }
+
+// Length of the pattern's lines by what they are: boundary, mountain, valley.
+std::map<std::string, double> pattern_lengths(const CreasePattern& p) {
+  std::map<std::string, double> out;
+  for (const auto& [a, b] : p.boundary_edges()) out["border"] += (p.vertices()[a] - p.vertices()[b]).norm();
+  for (const auto& j : p.joints()) {
+    if (j.assignment == Assignment::Mountain) out["mountain"] += joint_length(p, j);
+    if (j.assignment == Assignment::Valley) out["valley"] += joint_length(p, j);
+  }
+  return out;
+}
+
+TEST(DrawnLines, EveryOrigamiSimulatorFixtureImportsWithItsLengthsAndTargets) {
+  if (!foldkit::test::fixtures_available()) GTEST_SKIP() << "no ../shared/fixtures";
+  for (const char* name : kFixtures) {
+    SCOPED_TRACE(name);
+    const std::string path = fixture(name);
+    const std::vector<DrawnLine> drawn = parse_svg_lines(read_file(path), path);
+    PatternFile f = read_pattern_file(path);
+    ASSERT_TRUE(f.state.has_value()) << "Origami Simulator's files carry targets";
+    std::map<std::string, double> expected;
+    std::map<std::string, int> count;
+    for (const DrawnLine& l : drawn)
+      if (l.kind == LineKind::Border || l.kind == LineKind::Mountain || l.kind == LineKind::Valley) {
+        expected[to_string(l.kind)] += (l.b - l.a).norm();
+        ++count[to_string(l.kind)];
+      }
+    Eigen::AlignedBox2d box;
+    for (const DrawnLine& l : drawn) box.extend(l.a), box.extend(l.b);
+    // Merging moves each end by at most 2.5 merge tolerances (1e-5 of the diagonal).
+    const double merge = 2.5e-5 * box.diagonal().norm();
+    const auto got = pattern_lengths(f.pattern);
+    const bool pruned = !f.warnings.empty() && f.warnings.front().message.find("bound no face") != std::string::npos;
+    for (const char* kind : {"border", "mountain", "valley"}) {
+      const double want = expected[kind], have = got.count(kind) ? got.at(kind) : 0.0;
+      // Lines outside the sheet are dropped (with a warning): then the sheet holds less.
+      if (pruned) EXPECT_LE(have, want * (1 + 1e-6)) << kind;
+      else EXPECT_NEAR(have, want, 2 * merge * count[kind] + 1e-9) << kind;
+    }
+    // Each crease's target is its own stroke's: the drawn line through the joint's midpoint (the
+    // pattern's y is the file's negated) of the joint's kind, to the merge tolerance.
+    for (std::size_t j = 0; j < f.pattern.joints().size(); ++j) {
+      const auto& joint = f.pattern.joints()[j];
+      if (joint.assignment != Assignment::Mountain && joint.assignment != Assignment::Valley) continue;
+      const Vec2 m = 0.5 * (f.pattern.vertices()[joint.v[0]] + f.pattern.vertices()[joint.v[1]]);
+      const Vec2 in_file(m.x(), -m.y());
+      const LineKind kind = joint.assignment == Assignment::Mountain ? LineKind::Mountain : LineKind::Valley;
+      const DrawnLine* on = nullptr;
+      for (const DrawnLine& l : drawn) {
+        if (l.kind != kind) continue;
+        const Vec2 d = l.b - l.a;
+        const double t = (in_file - l.a).dot(d) / d.squaredNorm();
+        const double off = (l.a + t * d - in_file).norm();
+        if (t > 0 && t < 1 && off <= merge) on = &l;
+      }
+      ASSERT_NE(on, nullptr) << "joint " << joint.id << " lies on no " << to_string(kind) << " line";
+      EXPECT_NEAR(f.state->angles[static_cast<Eigen::Index>(j)], *on->target, 1e-12) << "joint " << joint.id;
+    }
+  }
+}
+
+// Fully folded flat-foldable patterns: at every interior vertex |#M − #V| = 2 (Maekawa), which
+// fails when colours are read wrongly or creases are lost or doubled at their meetings.
+TEST(DrawnLines, FlatFoldableFixturesKeepMaekawaAtEveryVertex) {
+  if (!foldkit::test::fixtures_available()) GTEST_SKIP() << "no ../shared/fixtures";
+  for (const char* name : {"miura-ori", "simpleVertex", "singlesquaretwist", "squareBase", "waterbomb", "brochurefold"}) {
+    SCOPED_TRACE(name);
+    const PatternFile f = read_pattern_file(fixture(name));
+    ASSERT_FALSE(f.pattern.interior_vertices().empty());
+    for (const auto& star : f.pattern.interior_vertices()) {
+      int m = 0, v = 0;
+      for (int j : star.joints) {
+        m += f.pattern.joints()[static_cast<std::size_t>(j)].assignment == Assignment::Mountain;
+        v += f.pattern.joints()[static_cast<std::size_t>(j)].assignment == Assignment::Valley;
+      }
+      EXPECT_EQ(std::abs(m - v), 2) << "vertex " << star.vertex << ": " << m << " M, " << v << " V";
+    }
+  }
+}
+
+TEST(DrawnLines, ElementsTransformsColoursAndOpacities) {
+  const std::string text = svg(
+      "<g transform=\"translate(10 20)\" opacity=\"0.5\">\n"
+      "  <g transform=\"scale(2)\" style=\"stroke: rgb(255, 0, 0); stroke-opacity: 0.5\">\n"
+      "    <line x1=\"0\" y1=\"0\" x2=\"10\" y2=\"0\"/>\n"
+      "  </g>\n"
+      "</g>\n"
+      "<path stroke=\"#00f\" d=\"M0,0 10,0 v10 h-10z\"/>\n"
+      "<path stroke=\"#0000FF\" d=\"m1.5.5l1e1-0\"/>\n"
+      "<polyline stroke=\"yellow\" points=\"0,0 1,1 2,0\"/>\n"
+      "<rect stroke=\"black\" fill=\"white\" x=\"1\" y=\"2\" width=\"3\" height=\"4\"/>\n"
+      "<polygon stroke=\"rgb(100%, 0%, 100%)\" points=\"0 0 1 0 1 1\"/>\n"
+      "<line stroke=\"none\" x1=\"0\" y1=\"0\" x2=\"5\" y2=\"5\"/>\n"
+      "<polygon fill=\"#f4f1e8\" points=\"0 0 1 0 1 1\"/>\n"
+      "<text x=\"1\" y=\"1\" stroke=\"#123456\">a label</text>\n"
+      "<g transform=\"rotate(90 5 5)\"><line stroke=\"#FF0000\" x1=\"5\" y1=\"5\" x2=\"15\" y2=\"5\"/></g>\n");
+  const std::vector<DrawnLine> lines = parse_svg_lines(text, "t.svg");
+  ASSERT_EQ(lines.size(), 1u + 4u + 1u + 2u + 4u + 3u + 1u);
+  // Nested transforms: scale(2) then translate(10, 20); opacity 0.5 × stroke-opacity 0.5.
+  EXPECT_EQ(lines[0].kind, LineKind::Mountain);
+  EXPECT_LT((lines[0].a - Vec2(10, 20)).norm(), 1e-12);
+  EXPECT_LT((lines[0].b - Vec2(30, 20)).norm(), 1e-12);
+  EXPECT_NEAR(*lines[0].target, 0.25 * M_PI, 1e-15);
+  EXPECT_EQ(lines[0].line, 5);
+  // Implicit linetos after M, relative v/h, closepath; valleys negative, full opacity 180°.
+  EXPECT_EQ(lines[1].kind, LineKind::Valley);
+  EXPECT_NEAR(*lines[1].target, -M_PI, 1e-15);
+  EXPECT_LT((lines[3].b - Vec2(0, 10)).norm(), 1e-12);
+  EXPECT_LT((lines[4].b - Vec2(0, 0)).norm(), 1e-12);
+  // "m1.5.5" is (1.5, 0.5); "l1e1-0" is (+10, −0).
+  EXPECT_LT((lines[5].a - Vec2(1.5, 0.5)).norm(), 1e-12);
+  EXPECT_LT((lines[5].b - Vec2(11.5, 0.5)).norm(), 1e-12);
+  EXPECT_EQ(lines[6].kind, LineKind::Facet);
+  EXPECT_FALSE(lines[6].target.has_value());
+  EXPECT_EQ(lines[8].kind, LineKind::Border);
+  EXPECT_LT((lines[10].a - Vec2(4, 6)).norm(), 1e-12);
+  EXPECT_EQ(lines[12].kind, LineKind::Hinge);
+  // rotate(90 5 5): (15, 5) → (5, 15).
+  EXPECT_LT((lines[15].b - Vec2(5, 15)).norm(), 1e-12);
+}
+
+// A square with both diagonals, one mountain and one valley, drawn twice: as SVG (lines
+// overlapping the border, crossing at the centre, one stopping 1e-7 short) and as .cp.
+TEST(DrawnLines, SvgAndCpOfOneSquareGiveOneSheet) {
+  const std::string drawing = svg(
+      "<rect stroke=\"#000\" x=\"0\" y=\"0\" width=\"10\" height=\"10\"/>\n"
+      "<line stroke=\"#000\" x1=\"0\" y1=\"0\" x2=\"10\" y2=\"0\"/>\n"
+      "<line stroke=\"#f00\" stroke-opacity=\"0.5\" x1=\"0\" y1=\"0\" x2=\"9.9999999\" y2=\"9.9999999\"/>\n"
+      "<line stroke=\"#00f\" x1=\"10\" y1=\"0\" x2=\"0\" y2=\"10\"/>\n");
+  const PatternFile s = pattern_from_lines(parse_svg_lines(drawing, "sq.svg"), "sq.svg");
+  const PatternFile c = pattern_from_lines(parse_cp_lines("1 0 0 10 0\n1 10 0 10 10\n1 10 10 0 10\n1 0 10 0 0\n\n"
+                                                          "2 0 0 10 10\n3 10 0 0 10\n0 0 5 10 5\n",
+                                                          "sq.cp"),
+                                           "sq.cp");
+  for (const PatternFile* f : {&s, &c}) {
+    EXPECT_EQ(f->pattern.actors().size(), 4u);
+    EXPECT_EQ(f->pattern.joints().size(), 4u);
+    ASSERT_EQ(f->pattern.interior_vertices().size(), 1u);
+    const auto lengths = pattern_lengths(f->pattern);
+    EXPECT_NEAR(lengths.at("border"), 40.0, 1e-9);
+    EXPECT_NEAR(lengths.at("mountain"), 10 * std::sqrt(2.0), 1e-6);
+    EXPECT_NEAR(lengths.at("valley"), 10 * std::sqrt(2.0), 1e-9);
+  }
+  ASSERT_TRUE(s.state.has_value());
+  for (std::size_t j = 0; j < s.pattern.joints().size(); ++j)
+    EXPECT_NEAR(s.state->angles[static_cast<Eigen::Index>(j)],
+                s.pattern.joints()[j].assignment == Assignment::Mountain ? 0.5 * M_PI : -M_PI, 1e-12);
+  EXPECT_FALSE(c.state.has_value()) << ".cp files carry no targets";
+}
+
+// foldkit's own SVG, with a folded state, reads back as the same sheet with the same targets.
+TEST(DrawnLines, FoldkitSvgRoundTripsWithItsTargets) {
+  const CreasePattern p = geometry::build_or_throw(geometry::generators::miura(3, 4));
+  geometry::FoldState state = geometry::FoldState::flat(p);
+  for (std::size_t j = 0; j < p.joints().size(); ++j)
+    state.angles[static_cast<Eigen::Index>(j)] = (p.joints()[j].assignment == Assignment::Mountain ? 1 : -1) * 0.1 * static_cast<double>(j % 7 + 1);
+  PatternOutput out;
+  out.state = &state;
+  const PatternFile back = pattern_from_lines(parse_svg_lines(pattern_text("m.svg", p, out), "m.svg"), "m.svg");
+  EXPECT_EQ(back.pattern.actors().size(), p.actors().size());
+  ASSERT_EQ(back.pattern.joints().size(), p.joints().size());
+  EXPECT_EQ(back.pattern.interior_vertices().size(), p.interior_vertices().size());
+  ASSERT_TRUE(back.state.has_value());
+  std::multiset<long> want, got;
+  for (std::size_t j = 0; j < p.joints().size(); ++j) {
+    want.insert(std::lround(1e6 * state.angles[static_cast<Eigen::Index>(j)]));
+    got.insert(std::lround(1e6 * back.state->angles[static_cast<Eigen::Index>(j)]));
+  }
+  EXPECT_EQ(got, want);
+}
+
+// Bad input is a ParseError at the element's line, whatever is wrong.
+TEST(DrawnLines, BadDrawingsNameTheirLine) {
+  const auto line_of = [](const std::string& text, const std::string& name = "bad.svg") {
+    try {
+      if (name.size() > 3 && name.substr(name.size() - 3) == ".cp") pattern_from_lines(parse_cp_lines(text, name), name);
+      else pattern_from_lines(parse_svg_lines(text, name), name);
+    } catch (const ParseError& e) {
+      EXPECT_FALSE(e.message().empty());
+      return e.line();
+    }
+    ADD_FAILURE() << "accepted: " << text;
+    return -1;
+  };
+  const std::string border = "<rect stroke=\"#000\" x=\"0\" y=\"0\" width=\"10\" height=\"10\"/>\n";
+  EXPECT_EQ(line_of(svg(border + "<path stroke=\"#f00\" d=\"M0 0 C 1 1 2 2 3 3\"/>\n")), 4);       // a curve
+  EXPECT_EQ(line_of(svg(border + "<line stroke=\"#123456\" x1=\"0\" y1=\"0\" x2=\"1\" y2=\"1\"/>\n")), 4);  // colour
+  EXPECT_EQ(line_of(svg(border + "<line stroke=\"#f00\" x1=\"nan\" y1=\"0\" x2=\"1\" y2=\"1\"/>\n")), 4);
+  EXPECT_EQ(line_of(svg(border + "<line stroke=\"#f00\" x1=\"1e999\" y1=\"0\" x2=\"1\" y2=\"1\"/>\n")), 4);
+  EXPECT_EQ(line_of(svg(border + "<line stroke=\"#f00\" opacity=\"2\" x1=\"0\" y1=\"0\" x2=\"1\" y2=\"1\"/>\n")), 4);
+  EXPECT_EQ(line_of(svg(border + "<g transform=\"shear(2)\"><line stroke=\"#f00\"/></g>\n")), 4);
+  EXPECT_EQ(line_of(svg("<line stroke=\"#f00\" x1=\"0\" y1=\"0\" x2=\"10\" y2=\"10\"/>\n")), 3);  // no border
+  EXPECT_EQ(line_of(svg("<polyline stroke=\"#000\" points=\"0,0 10,0 10,10\"/>\n")), 3);          // not closed
+  EXPECT_GE(line_of(""), 0);                                                                        // empty
+  EXPECT_GE(line_of(svg(border).substr(0, 90)), 1);                                                 // truncated
+  EXPECT_EQ(line_of(svg("")), 0);                                                                   // no lines
+  EXPECT_EQ(line_of("1 0 0 10 0\n5 0 0 1 1\n", "bad.cp"), 2);  // unknown type
+  EXPECT_EQ(line_of("1 0 0 10 0\n\n2 0 0 1\n", "bad.cp"), 3);   // four numbers
+  EXPECT_EQ(line_of("1 0 0 10 inf\n", "bad.cp"), 1);
+}
+
+}  // namespace
+}  // namespace foldkit::io
