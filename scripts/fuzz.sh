@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (ASan + UBSan) in ./build-fuzz and runs one of them.
-#   bash scripts/fuzz.sh pmml|cmml|fold|loadcase|cli [SECONDS=600] [JOBS=1]
+#   bash scripts/fuzz.sh pmml|cmml|fold|svg|cp|opx|loadcase|cli [SECONDS=600] [JOBS=1]
 # The corpus grows in ./build-fuzz/corpus-NAME, seeded from the examples, the shared fixtures
 # and the bad-input corpus; crashes are written to ./build-fuzz/crash-NAME-*.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-name=${1:?usage: fuzz.sh pmml|cmml|fold|loadcase|cli [seconds] [jobs]}
+name=${1:?usage: fuzz.sh pmml|cmml|fold|svg|cp|opx|loadcase|cli [seconds] [jobs]}
 seconds=${2:-600}
 jobs=${3:-1}
 command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ is needed (apt-get install clang)" >&2; exit 1; }
@@ -18,7 +18,12 @@ if [ ! -d "$corpus" ]; then
   mkdir -p "$corpus"
   ./build-fuzz/apps/foldkit demo -o build-fuzz/seeds >/dev/null 2>&1
   cp build-fuzz/seeds/*."$name" test/data/bad/*."$name" "$corpus"/ 2>/dev/null || true
-  cp ../shared/fixtures/fold/*."$name" test/data/good/*."$name" "$corpus"/ 2>/dev/null || true
+  cp ../shared/fixtures/fold/*."$name" ../shared/fixtures/svg/*."$name" test/data/good/*."$name" "$corpus"/ 2>/dev/null || true
+  # .cp seeds: a square with its diagonals, and one with a crease past the border.
+  if [ "$name" = cp ]; then
+    printf '1 0 0 10 0\n1 10 0 10 10\n1 10 10 0 10\n1 0 10 0 0\n2 0 0 10 10\n3 10 0 0 10\n' > "$corpus/square.cp"
+    printf '1 0 0 4 0\n1 4 0 4 4\n1 4 4 0 4\n1 0 4 0 0\n2 2 -1 2 5\n0 0 2 4 2\n' > "$corpus/past.cp"
+  fi
   # Command lines: every verb's --help, and the README's examples, NUL-separated.
   if [ "$name" = cli ]; then
     for verb in validate info generate convert dof project simulate plan fold stiffness demo hamiltonian carpenter bench bench-merge; do

@@ -50,6 +50,7 @@ std::vector<FileFormat> make_formats() {
                  },
                  false});
   all.push_back({FileKind::Cp, "ORIPA .cp", ".cp", "text/plain; charset=utf-8", read_cp_pattern, nullptr, false});
+  all.push_back({FileKind::Opx, "ORIPA .opx", ".opx", "application/xml", read_opx_pattern, nullptr, false});
   return all;
 }
 

@@ -189,7 +189,7 @@ void bind_pattern_files(py::module_& m) {
       },
       py::arg("path"),
       "A crease pattern by the extension of `path`, as the CLI's PATTERN arguments (.pmml, .fold, .svg in Origami "
-      "Simulator's convention, ORIPA .cp).");
+      "Simulator's convention, ORIPA .cp and .opx).");
   m.def(
       "read_pattern", [](const std::string& path) {
         try {

@@ -9,6 +9,7 @@
 
 #include "cli_runner.hpp"
 #include "resch_states.hpp"
+#include "test_time.hpp"
 #include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/geometry/projection.hpp"
@@ -193,8 +194,9 @@ TEST(PlanCli, SingleVertexFallbackAndNoFallback) {
   const Case c = make_case();
   const std::string out = c.dir + "/fallback.cmml";
   std::filesystem::remove(out);
-  const auto r = foldkit(
-      {"plan", c.pattern, "--goal", c.goal, "--planner", "RRTConnect", "--param", "range=1e-7", "--time", "0.4", "-o", out, "--json"});
+  // The search keeps to --time, Carpenter's path included: scaled for sanitizer builds.
+  const auto r = foldkit({"plan", c.pattern, "--goal", c.goal, "--planner", "RRTConnect", "--param", "range=1e-7", "--time",
+                          foldkit::test::scaled_arg(0.4), "-o", out, "--json"});
   ASSERT_EQ(r.exit, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["fallback"].get<bool>());

@@ -153,8 +153,18 @@ TEST(DrawnLines, ElementsTransformsColoursAndOpacities) {
   EXPECT_LT((lines[15].b - Vec2(5, 15)).norm(), 1e-12);
 }
 
-// A square with both diagonals, one mountain and one valley, drawn twice: as SVG (lines
-// overlapping the border, crossing at the centre, one stopping 1e-7 short) and as .cp.
+// A square with both diagonals, one mountain and one valley, drawn three times: as SVG (lines
+// overlapping the border, crossing at the centre, one stopping 1e-7 short), as .cp and as .opx
+// (XMLEncoder leaves out properties at 0).
+
+std::string opx_line(int type, double x0, double y0, double x1, double y1) {
+  std::string out = "<void index=\"0\"><object class=\"oripa.OriLineProxy\">\n";
+  if (type) out += " <void property=\"type\"><int>" + std::to_string(type) + "</int></void>\n";
+  const std::pair<const char*, double> values[] = {{"x0", x0}, {"x1", x1}, {"y0", y0}, {"y1", y1}};
+  for (const auto& [name, v] : values)
+    if (v != 0.0) out += std::string(" <void property=\"") + name + "\"><double>" + std::to_string(v) + "</double></void>\n";
+  return out + "</object></void>\n";
+}
 TEST(DrawnLines, SvgAndCpOfOneSquareGiveOneSheet) {
   const std::string drawing = svg(
       "<rect stroke=\"#000\" x=\"0\" y=\"0\" width=\"10\" height=\"10\"/>\n"
@@ -166,7 +176,16 @@ TEST(DrawnLines, SvgAndCpOfOneSquareGiveOneSheet) {
                                                           "2 0 0 10 10\n3 10 0 0 10\n0 0 5 10 5\n",
                                                           "sq.cp"),
                                            "sq.cp");
-  for (const PatternFile* f : {&s, &c}) {
+  const std::string opx = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<java version=\"1.8.0\" class=\"java.beans.XMLDecoder\">\n"
+                          "<object class=\"oripa.DataSet\"><void property=\"lines\"><array class=\"oripa.OriLineProxy\" length=\"7\">\n" +
+                          opx_line(1, 0, 0, 10, 0) + opx_line(1, 10, 0, 10, 10) + opx_line(1, 10, 10, 0, 10) + opx_line(1, 0, 10, 0, 0) +
+                          opx_line(2, 0, 0, 10, 10) + opx_line(3, 10, 0, 0, 10) + opx_line(0, 0, 5, 10, 5) +
+                          "</array></void></object>\n</java>\n";
+  const std::vector<DrawnLine> opx_lines = parse_opx_lines(opx, "sq.opx");
+  ASSERT_EQ(opx_lines.size(), 6u);
+  EXPECT_EQ(opx_lines[0].line, 4);
+  const PatternFile o = pattern_from_lines(opx_lines, "sq.opx");
+  for (const PatternFile* f : {&s, &c, &o}) {
     EXPECT_EQ(f->pattern.actors().size(), 4u);
     EXPECT_EQ(f->pattern.joints().size(), 4u);
     ASSERT_EQ(f->pattern.interior_vertices().size(), 1u);
@@ -180,6 +199,7 @@ TEST(DrawnLines, SvgAndCpOfOneSquareGiveOneSheet) {
     EXPECT_NEAR(s.state->angles[static_cast<Eigen::Index>(j)],
                 s.pattern.joints()[j].assignment == Assignment::Mountain ? 0.5 * M_PI : -M_PI, 1e-12);
   EXPECT_FALSE(c.state.has_value()) << ".cp files carry no targets";
+  EXPECT_FALSE(o.state.has_value()) << ".opx files carry no targets";
 }
 
 // foldkit's own SVG, with a folded state, reads back as the same sheet with the same targets.
@@ -231,6 +251,18 @@ TEST(DrawnLines, BadDrawingsNameTheirLine) {
   EXPECT_EQ(line_of("1 0 0 10 0\n5 0 0 1 1\n", "bad.cp"), 2);  // unknown type
   EXPECT_EQ(line_of("1 0 0 10 0\n\n2 0 0 1\n", "bad.cp"), 3);   // four numbers
   EXPECT_EQ(line_of("1 0 0 10 inf\n", "bad.cp"), 1);
+  const auto opx_line_of = [](const std::string& text) {
+    try {
+      parse_opx_lines(text, "bad.opx");
+    } catch (const ParseError& e) {
+      return e.line();
+    }
+    return -1;
+  };
+  EXPECT_EQ(opx_line_of("<java>\n<object class=\"oripa.OriLineProxy\"><void property=\"type\"><int>7</int></void></object>\n</java>"), 2);
+  EXPECT_EQ(opx_line_of("<java>\n<object class=\"oripa.OriLineProxy\">\n<void property=\"x0\"><double>NaN</double></void></object></java>"), 3);
+  EXPECT_EQ(opx_line_of("<svg/>"), 1);
+  EXPECT_GE(opx_line_of("<java><object"), 0);
 }
 
 }  // namespace

@@ -75,15 +75,15 @@ TEST(Formats, OneEntryPerExtensionPickedIgnoringCase) {
 }
 
 TEST(Formats, MessagesListWhatIsAccepted) {
-  EXPECT_EQ(extensions(reads_patterns), ".pmml, .fold, .svg or .cp");
+  EXPECT_EQ(extensions(reads_patterns), ".pmml, .fold, .svg, .cp or .opx");
   EXPECT_EQ(extensions(writes_patterns), ".pmml, .cmml, .fold or .svg");
-  EXPECT_EQ(extensions(readable), ".pmml, .cmml, .fold, .svg or .cp");
+  EXPECT_EQ(extensions(readable), ".pmml, .cmml, .fold, .svg, .cp or .opx");
   EXPECT_EQ(extensions([](const FileFormat&) { return false; }), "");
   try {
     read_pattern_file("sheet.txt");
     FAIL() << "a .txt was read as a pattern";
   } catch (const UnknownFormat& e) {
-    EXPECT_STREQ(e.what(), "sheet.txt: a crease pattern must be a .pmml, .fold, .svg or .cp file");
+    EXPECT_STREQ(e.what(), "sheet.txt: a crease pattern must be a .pmml, .fold, .svg, .cp or .opx file");
   }
   // A CMML holds a sequence, not a pattern.
   EXPECT_THROW(read_pattern_file("fold.cmml"), UnknownFormat);

@@ -14,6 +14,7 @@
 #include "foldkit/planners/planner_factory.hpp"
 #include "random_vertex_state.hpp"
 #include "spec_helpers.hpp"
+#include "test_time.hpp"
 
 namespace {
 
@@ -37,7 +38,7 @@ PlanRequest request_for(const CreasePattern& p, const FoldState& goal) {
   req.pattern = &p;
   req.goal = goal;
   req.use_assignment = false;
-  req.time = 1.0;
+  req.time = foldkit::test::scaled_seconds(1.0);
   return req;
 }
 
@@ -118,7 +119,7 @@ TEST(CarpenterFallback, TakesOverWhenThePlannerCannot) {
   // The replay starts from flat: the start's own CMML (flat → start, Carpenter's frames) comes first.
   req.start_sequence = foldkit::geometry::path_sequence(
       p, foldkit::planners::carpenter_path(p, FoldState::flat(p), start, 0.02, nullptr), 1.0, "start");
-  req.time = 0.4;
+  req.time = foldkit::test::scaled_seconds(0.4);
   req.planner = "RRT";
   req.params = {{"range", "1e-7"}};
   const PlanResult r = plan(req);
@@ -150,11 +151,13 @@ TEST(CarpenterFallback, TimeBoundsTheFallbackToo) {
   const PlanResult r = plan(req);
   EXPECT_EQ(r.status.code, foldkit::geometry::StatusCode::LimitReached) << r.status.message;
   EXPECT_NE(r.status.message.find("time ran out"), std::string::npos) << r.status.message;
-  // One Carpenter step or one state check past the limit at most (generous for sanitizer builds).
-  EXPECT_LT(r.time, req.time + 0.1);
+  // One Carpenter step or one state check past the limit at most.
+  EXPECT_LT(r.time, req.time + foldkit::test::scaled_seconds(0.1));
   EXPECT_FALSE(r.fallback);
 
-  req.time = 8.0;  // the planner spins for a quarter of it; the fallback needs ≈ 0.6 s of the rest
+  // With time enough (the planner spins for a quarter of it; the fallback needs ≈ 0.6 s of the
+  // rest in Release) the same request is planned, by the fallback.
+  req.time = foldkit::test::scaled_seconds(3.0);
   const PlanResult slow = plan(req);
   expect_valid(p, req, slow);
   EXPECT_TRUE(slow.fallback);

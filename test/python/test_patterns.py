@@ -197,5 +197,5 @@ def test_read_pattern_takes_an_svg_with_its_targets_as_the_cli_does(tmp_path, cl
     q = foldkit.read_pmml(str(tmp_path / "sq.pmml"))
     np.testing.assert_allclose(sorted(map(tuple, q.vertices)), sorted(map(tuple, f.pattern.vertices)))
     assert foldkit.load_pattern(str(svg)).joint_ids == f.pattern.joint_ids
-    with pytest.raises(ValueError, match=r"\.pmml, \.fold, \.svg or \.cp"):
+    with pytest.raises(ValueError, match=r"\.pmml, \.fold, \.svg, \.cp or \.opx"):
         foldkit.read_pattern(str(tmp_path / "notes.txt"))

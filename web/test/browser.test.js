@@ -1,43 +1,15 @@
 // The whole app in a real browser (Debian's chromium through puppeteer-core, WebGL on the CPU):
 // `foldkit serve` on a free port, the page driven by mouse and keyboard like a user, and every
 // number the page shows compared with the CLI's own answer on the same files.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { copyFileSync, mkdirSync, rmSync, readFileSync } from 'node:fs';
+import { copyFileSync, mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { foldkit, tempRoot, startServer, launchBrowser, openApp, idle, shown, webDir } from './harness.js';
+import { foldkit, browserSuite, openApp, idle, shown, webDir } from './harness.js';
 
-let browser = null;
-const servers = [];
-const roots = [];
+const suite = browserSuite();
+const serve = (...args) => suite.serve(...args);
 const limit = { timeout: 180000 };  // per test; every wait inside is bounded too
-
-// Even when the runner is stopped (ctest's timeout), no server outlives the tests.
-process.on('exit', () => {
-  for (const s of servers) try { process.kill(s.pid, 'SIGKILL'); } catch (_) { /* already gone */ }
-});
-
-before(async () => {
-  browser = await launchBrowser();
-});
-
-after(async () => {
-  try {
-    if (browser) await browser.close();
-  } finally {
-    await Promise.all(servers.map((s) => s.stop()));
-    for (const root of roots) rmSync(root, { recursive: true, force: true });
-  }
-});
-
-async function serve(name, files = [], prepare = () => {}) {
-  const root = tempRoot(name);
-  roots.push(root);
-  prepare(root);
-  const server = await startServer(root, files);
-  servers.push(server);
-  return { root, server };
-}
 
 // The page's screenshot is a picture, not a blank canvas: many colours, and sheet-coloured pixels
 // well away from the background.
@@ -88,11 +60,11 @@ function close(shownValue, exact) {
 }
 
 test('the files named on the command line open, simulate, and show the CLI\'s numbers', limit, async () => {
-  const { root } = await serve('demo', ['miura.pmml', 'miura-folded.cmml'], (dir) => {
+  const { root, server } = await serve('demo', ['miura.pmml', 'miura-folded.cmml'], (dir) => {
     foldkit(['generate', 'miura', '--rows', '4', '--cols', '4', '-o', join(dir, 'miura.pmml')]);
     foldkit(['fold', join(dir, 'miura.pmml'), '--fraction', '0.9', '-o', join(dir, 'miura-folded.cmml')]);
   });
-  const page = await openApp(browser, servers[servers.length - 1].url);
+  const page = await openApp(suite.browser(), server.url);
   await page.waitForFunction(() => window.foldkit.simulation !== null);
   await idle(page);
   const cli = cliNumbers(root, 'miura.pmml', 'miura-folded.cmml');
@@ -165,7 +137,7 @@ async function checked(page) {
 
 test('a pattern drawn with the mouse, grouped, folded and simulated matches the CLI on the files it saved', limit, async () => {
   const { root, server } = await serve('draw');
-  const page = await openApp(browser, server.url);
+  const page = await openApp(suite.browser(), server.url);
   await gridOfFour(page, 'drawn');
   // A triangle beside it, sharing the grid's edge (2, 0)-(2, 1): clicks snap to the 0.5 grid.
   await tool(page, 'triangle');
@@ -263,7 +235,7 @@ test('a pattern drawn with the mouse, grouped, folded and simulated matches the 
 
 test('a pattern foldkit refuses lists its problems at their lines and marks them', limit, async () => {
   const { server } = await serve('bad');
-  const page = await openApp(browser, server.url);
+  const page = await openApp(suite.browser(), server.url);
   // Two triangles that overlap: foldkit names the overlap, the page lists it.
   await tool(page, 'triangle');
   for (const [x, y] of [[0, 0], [2, 0], [0, 2], [0.5, 0.5], [2.5, 0.5], [0.5, 2.5]]) await click(page, x, y);
@@ -278,7 +250,7 @@ test('a pattern foldkit refuses lists its problems at their lines and marks them
 
 test('a generated strip folded through itself shows the CLI\'s collisions on the view and the timeline', limit, async () => {
   const { root, server } = await serve('collide');
-  const page = await openApp(browser, server.url);
+  const page = await openApp(suite.browser(), server.url);
   await generated(page, 'strip', 'strip', 'panels=3');
   assert.equal((await checked(page)).info.joints, 2);
   // Both creases to 170°, mountain, in one event: the outer panels pass through each other.
@@ -304,7 +276,7 @@ test('a generated strip folded through itself shows the CLI\'s collisions on the
 
 test('a Miura-ori drawn from the grid lattice folds as foldkit\'s own Miura-ori generator', limit, async () => {
   const { root, server } = await serve('miura-drawn');
-  const page = await openApp(browser, server.url);
+  const page = await openApp(suite.browser(), server.url);
   await gridOfFour(page, 'drawn-miura');
   // The middle column of corners half a cell up: the cells become parallelograms, the middle row
   // of creases a zig-zag.
@@ -365,7 +337,7 @@ test('a Miura-ori drawn from the grid lattice folds as foldkit\'s own Miura-ori 
 
 test('Plan and Stiffness answer as the CLI does on the files the page saved', limit, async () => {
   const { root, server } = await serve('plan');
-  const page = await openApp(browser, server.url);
+  const page = await openApp(suite.browser(), server.url);
   await generated(page, 'm', 'miura', 'rows=2 cols=2');
   // A closed goal from Fold, then a plan from flat to it: the same planner, time and seed give
   // the CLI's plan, waypoint for waypoint.
@@ -416,7 +388,7 @@ function keys(points) {
 
 test('every drawing tool, driven by the mouse, makes a pattern foldkit accepts and moves corners where geometry says', limit, async () => {
   const { server } = await serve('tools');
-  const page = await openApp(browser, server.url);
+  const page = await openApp(suite.browser(), server.url);
   const hint = () => page.$eval('#hint', (e) => e.textContent);
   // Polygon: an L of six corners, closed with Enter: ear-clipped into 4 triangles, one actor.
   const L = [[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]];
@@ -483,8 +455,7 @@ test('every drawing tool, driven by the mouse, makes a pattern foldkit accepts a
   await drag(page, [0, 0], [2, 0]);
   check = await checked(page);
   assert.ok(check.ok, JSON.stringify(check.problems));
-  const dir = tempRoot('circular');
-  roots.push(dir);
+  const dir = suite.root('circular');
   foldkit(['generate', 'circular', '--rings', '2', '--spokes', '6', '--ring-width', '1', '-o', join(dir, 'c.pmml')]);
   const theirs = foldkit(['info', join(dir, 'c.pmml'), '--json']).json;
   for (const key of ['actors', 'joints', 'triangles', 'vertices', 'interior_vertices', 'boundary_edges'])
@@ -503,7 +474,7 @@ test('every drawing tool, driven by the mouse, makes a pattern foldkit accepts a
 test('the paper\'s bird base, opened from a FOLD file, folds in the page as the CLI folds the file', limit, async () => {
   const fixture = join(webDir, '..', '..', 'shared', 'fixtures', 'fold', 'osbo_rigid-origami__birdBase.fold');
   const { root, server } = await serve('bird', ['birdBase.fold'], (dir) => copyFileSync(fixture, join(dir, 'birdBase.fold')));
-  const page = await openApp(browser, server.url);
+  const page = await openApp(suite.browser(), server.url);
   const check = await checked(page);
   assert.ok(check.ok, JSON.stringify(check.problems));
   const info = foldkit(['info', join(root, 'birdBase.fold'), '--json']).json;

@@ -1,27 +1,16 @@
 // The side panel's numbers about "this state" in a real browser (issue 32): they belong to the
 // frame the 3D view shows, or say that they do not, whatever verb runs in between. The oracle is
 // the CLI's `foldkit dof --state` on the same angles.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync, rmSync } from 'node:fs';
 import { join } from 'node:path';
-import { foldkit, tempRoot, startServer, launchBrowser, openApp, idle, shown } from './harness.js';
+import { foldkit, browserSuite, openApp, idle, shown } from './harness.js';
 import { readCMML, writeCMML } from '../src/cmml.js';
 import { PENDING, NOT_CLOSED } from '../src/numbers.js';
 
-let browser = null;
-let server = null;
+const suite = browserSuite();
 let root = null;
-process.on('exit', () => { if (server) try { process.kill(server.pid, 'SIGKILL'); } catch (_) { /* gone */ } });
-before(async () => { browser = await launchBrowser(); });
-after(async () => {
-  try {
-    if (browser) await browser.close();
-  } finally {
-    if (server) await server.stop();
-    if (root) rmSync(root, { recursive: true, force: true });
-  }
-});
 
 // The CLI's DOF and closure error of one state: the page's frame `k` (radians per joint, in the
 // page's joint order), written as a one-event CMML by this test.
@@ -49,22 +38,22 @@ const text = (page, id) => page.$eval(`#${id}`, (e) => e.textContent);
 const close = (a, b) => Math.abs(a - b) <= 0.006 * Math.abs(b) || (b < 1e-9 && a < 1e-9);
 
 test('a sequence that jumps from flat to a fold: the numbers follow the frame on screen', { timeout: 180000 }, async () => {
-  root = tempRoot('numbers');
   // One event from flat straight to the folded state: closure is violated along the way.
-  foldkit(['generate', 'miura', '--rows', '4', '--cols', '6', '-o', join(root, 'miura.pmml')]);
-  foldkit(['fold', join(root, 'miura.pmml'), '--fraction', '0.9', '-o', join(root, 'folded.cmml')]);
-  const folded = readCMML(readFileSync(join(root, 'folded.cmml'), 'utf8'));
-  rmSync(join(root, 'folded.cmml'));
-  const end = new Map();
-  for (const e of folded.events) for (const f of e.folds) end.set(f.joint, f.angle);
-  writeFileSync(join(root, 'jump.cmml'), writeCMML({ title: 'jump', events: [{ number: 1, folds: [...end].map(([joint, angle]) => ({ joint, angle, velocity: 30 })) }] }));
+  const { server } = await suite.serve('numbers', ['miura.pmml', 'jump.cmml'], (dir) => {
+    root = dir;
+    foldkit(['generate', 'miura', '--rows', '4', '--cols', '6', '-o', join(root, 'miura.pmml')]);
+    foldkit(['fold', join(root, 'miura.pmml'), '--fraction', '0.9', '-o', join(root, 'folded.cmml')]);
+    const folded = readCMML(readFileSync(join(root, 'folded.cmml'), 'utf8'));
+    rmSync(join(root, 'folded.cmml'));
+    const end = new Map();
+    for (const e of folded.events) for (const f of e.folds) end.set(f.joint, f.angle);
+    writeFileSync(join(root, 'jump.cmml'), writeCMML({ title: 'jump', events: [{ number: 1, folds: [...end].map(([joint, angle]) => ({ joint, angle, velocity: 30 })) }] }));
+  });
   const sim = foldkit(['simulate', join(root, 'miura.pmml'), join(root, 'jump.cmml'), '--json'], { expect: [3] }).json;
   const flat = foldkit(['dof', join(root, 'miura.pmml'), '--json']).json;
   const atEnd = foldkit(['dof', join(root, 'miura.pmml'), '--state', join(root, 'jump.cmml'), '--json']).json;
   assert.notEqual(flat.dof, atEnd.dof, 'the flat sheet and the folded end differ in DOF');
-
-  server = await startServer(root, ['miura.pmml', 'jump.cmml']);
-  const page = await openApp(browser, server.url);
+  const page = await openApp(suite.browser(), server.url);
   await page.waitForFunction(() => window.foldkit.simulation !== null);
   await idle(page);
   assert.match(await text(page, 'verdict'), /^invalid/);

@@ -20,7 +20,7 @@ test('each served format does what the CLI does with its files', { timeout: 6000
   server = await startServer(root);
   const index = await (await fetch(`${server.url}api`)).json();
   const formats = index.formats;
-  assert.deepEqual(formats.map((f) => f.extension), ['.pmml', '.cmml', '.fold', '.svg', '.cp']);
+  assert.deepEqual(formats.map((f) => f.extension), ['.pmml', '.cmml', '.fold', '.svg', '.cp', '.opx']);
   assert.equal(run('generate', 'miura', '--rows', '2', '--cols', '2', '-o', join(root, 'm.pmml')).status, 0);
   assert.equal(run('fold', join(root, 'm.pmml'), '--fraction', '0.5', '-o', join(root, 'm-folded.cmml')).status, 0);
   for (const f of formats) {
@@ -41,9 +41,9 @@ test('each served format does what the CLI does with its files', { timeout: 6000
     assert.equal(opensSequence(formats, file), f.sequence);
   }
   // The page's message lists what it opens, as the CLI's validate does.
-  assert.equal(extensions(formats, (f) => f.reads_patterns || f.sequence), '.pmml, .cmml, .fold, .svg or .cp');
+  assert.equal(extensions(formats, (f) => f.reads_patterns || f.sequence), '.pmml, .cmml, .fold, .svg, .cp or .opx');
   const unknown = run('validate', join(root, 'notes.txt'));
-  assert.match(unknown.stderr, /expected \.pmml, \.cmml, \.fold, \.svg or \.cp/);
+  assert.match(unknown.stderr, /expected \.pmml, \.cmml, \.fold, \.svg, \.cp or \.opx/);
   assert.equal(formatOf(formats, 'a/B.FOLD').name, 'FOLD');
   assert.equal(formatOf(formats, 'notes.txt'), null);
   assert.equal(formatOf(formats, '.pmml'), null);

@@ -2,7 +2,8 @@
 // headless Debian chromium driven by puppeteer-core, both with bounded waits, and the CLI itself
 // as the oracle.
 import { spawn, spawnSync } from 'node:child_process';
-import { mkdtempSync } from 'node:fs';
+import { mkdtempSync, rmSync } from 'node:fs';
+import { before, after } from 'node:test';
 import { tmpdir } from 'node:os';
 import { join, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -86,4 +87,43 @@ export async function idle(page) {
 /** The text of the page's number `id`, as a number (NaN for '–'). */
 export async function shown(page, id) {
   return Number(await page.$eval(`#${id}`, (e) => e.textContent));
+}
+
+/** A browser for a test file and the servers it starts, each on a fresh root: registers node's
+ * `before` (launch) and `after` (close the browser, stop the servers, remove the roots), and
+ * kills the servers even when the runner is stopped. Returns {browser(), serve(name, files,
+ * prepare)}, where serve makes a root, calls prepare(root), starts `foldkit serve` on it and
+ * resolves {root, server}; root(name) is a fresh folder removed after the tests. */
+export function browserSuite() {
+  let browser = null;
+  const servers = [];
+  const roots = [];
+  process.on('exit', () => {
+    for (const s of servers) try { process.kill(s.pid, 'SIGKILL'); } catch (_) { /* already gone */ }
+  });
+  before(async () => { browser = await launchBrowser(); });
+  after(async () => {
+    try {
+      if (browser) await browser.close();
+    } finally {
+      await Promise.all(servers.map((s) => s.stop()));
+      for (const root of roots) rmSync(root, { recursive: true, force: true });
+    }
+  });
+  const root = (name) => {
+    const dir = tempRoot(name);
+    roots.push(dir);
+    return dir;
+  };
+  return {
+    browser: () => browser,
+    root,
+    async serve(name, files = [], prepare = () => {}) {
+      const dir = root(name);
+      prepare(dir);
+      const server = await startServer(dir, files);
+      servers.push(server);
+      return { root: dir, server };
+    },
+  };
 }

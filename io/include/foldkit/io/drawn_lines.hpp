@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// Crease patterns drawn as loose lines: Origami Simulator's SVG convention and the ORIPA `.cp`
-/// line format (issue 34; docs/FORMATS.md). A file is read into its lines, then the lines become
+/// Crease patterns drawn as loose lines: Origami Simulator's SVG convention and ORIPA's `.cp` and
+/// `.opx` formats (issue 34; docs/FORMATS.md). A file is read into its lines, then the lines become
 /// a pattern: split where they cross, merged where they meet within a tolerance, the faces of
 /// their planar arrangement (CGAL, exact predicates and constructions) taken as the sheet.
 #include <optional>
@@ -52,6 +52,13 @@ std::vector<DrawnLine> parse_svg_lines(const std::string& text, const std::strin
 ///         a number that is not finite
 std::vector<DrawnLine> parse_cp_lines(const std::string& text, const std::string& name);
 
+/// The lines of an ORIPA `.opx` file (java.beans.XMLEncoder XML): every `oripa.OriLineProxy`
+/// object with its `type` (as in .cp) and `x0`, `y0`, `x1`, `y1` (a property left out is 0, as
+/// the encoder leaves out defaults), at the object's line.
+/// @throws ParseError at the object's line: XML errors, a root other than `<java>`, a type
+///         other than 0–3, a value that is not a finite number
+std::vector<DrawnLine> parse_opx_lines(const std::string& text, const std::string& name);
+
 /// How lines become a pattern.
 struct LineImportOptions {
   /// Ends closer than this, relative to the drawing's diagonal, are one vertex; a line that stops
@@ -80,5 +87,9 @@ PatternFile read_svg_pattern(const std::string& path, const geometry::BuildOptio
 /// parse_cp_lines() then pattern_from_lines() of a file.
 /// @throws ParseError as both, or when the file cannot be read
 PatternFile read_cp_pattern(const std::string& path, const geometry::BuildOptions& options = {});
+
+/// parse_opx_lines() then pattern_from_lines() of a file.
+/// @throws ParseError as both, or when the file cannot be read
+PatternFile read_opx_pattern(const std::string& path, const geometry::BuildOptions& options = {});
 
 }  // namespace foldkit::io

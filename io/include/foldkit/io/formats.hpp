@@ -22,6 +22,7 @@ enum class FileKind {
   Fold,  ///< FOLD 1.2 (edemaine/fold), the origami world's exchange format
   Svg,   ///< a drawing of the pattern in Origami Simulator's convention (drawn_lines.hpp)
   Cp,    ///< ORIPA's line format (read only; drawn_lines.hpp)
+  Opx,   ///< ORIPA's XML (read only; drawn_lines.hpp)
 };
 
 /// A crease pattern read from a file, with the fold angles the file carries.
@@ -54,7 +55,7 @@ struct FileFormat {
   bool sequence = false;  ///< whether it holds a fold sequence (read_cmml, write_cmml)
 };
 
-/// Every format, in a fixed order (PMML, CMML, FOLD, SVG, .cp): the order messages list them in.
+/// Every format, in a fixed order (PMML, CMML, FOLD, SVG, .cp, .opx): the order messages list them in.
 const std::vector<FileFormat>& file_formats();
 
 /// The format of `path` by its extension, ignoring case; null when no format has it.
