@@ -28,7 +28,8 @@ const char* to_string(LineKind kind);
 
 /// One straight line of a file, in the file's coordinates (SVG: after every transform, y down).
 struct DrawnLine {
-  geometry::Vec2 a = geometry::Vec2::Zero(), b = geometry::Vec2::Zero();  ///< its ends
+  geometry::Vec2 a = geometry::Vec2::Zero();  ///< one end
+  geometry::Vec2 b = geometry::Vec2::Zero();  ///< the other end
   LineKind kind = LineKind::Border;                                        ///< what it is
   /// The crease's target fold angle (radians, positive = mountain): Origami Simulator's stroke
   /// opacity × 180°, signed by the kind; empty where the file gives none (borders, facets,
@@ -39,7 +40,7 @@ struct DrawnLine {
 
 /// The lines of an SVG crease pattern in Origami Simulator's convention: `<line>`, `<polyline>`,
 /// `<polygon>`, `<rect>` and `<path>` (M/L/H/V/Z, absolute and relative) in nested `<g>`/`<svg>`
-/// with `transform`; stroke colour as a name, #rgb, #rrggbb or rgb(); `stroke-opacity` and
+/// with `transform`; stroke colour as a name, `#rgb`, `#rrggbb` or `rgb()`; `stroke-opacity` and
 /// `opacity` (multiplied down the groups) in attributes or `style`. Elements without a stroke
 /// (stroke none or absent: fills, foldkit's facet polygons) and text are not lines.
 /// @throws ParseError at the element's line: XML errors, a curve command, a stroke colour that is
@@ -75,6 +76,7 @@ struct LineImportOptions {
 /// bounded faces of the arrangement the sheet; faces bounded only by facet lines are one actor.
 /// @param lines  the file's lines (at least one border line)
 /// @param name   the file name of every error and warning
+/// @param options  the merge tolerance and the pattern builder's options
 /// @throws ParseError at the line of the offending element: no lines, no border, lines that
 ///         enclose no sheet, a sheet the pattern builder refuses (a cut inside the sheet, …)
 PatternFile pattern_from_lines(const std::vector<DrawnLine>& lines, const std::string& name,

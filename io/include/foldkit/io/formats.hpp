@@ -43,7 +43,7 @@ struct PatternOutput {
 
 /// One format of the table. An empty reader or writer: the format does not hold that.
 struct FileFormat {
-  FileKind kind;
+  FileKind kind;           ///< which format
   std::string name;        ///< as messages and docs name it: "PMML"
   std::string extension;   ///< with its dot, lower case (matched ignoring case): ".pmml"
   std::string media_type;  ///< how `foldkit serve` sends the file: "application/xml"
