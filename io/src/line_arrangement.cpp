@@ -10,6 +10,7 @@
 #include <numeric>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <unordered_map>
 
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
@@ -37,13 +38,15 @@ struct Edge {
   std::vector<int> lines;  // indices of the drawn lines it lies on
 };
 
-// Ends within `tol` of an earlier end become that end (a hash grid of cell `tol`).
-std::vector<DrawnLine> snap_ends(std::vector<DrawnLine> lines, double tol) {
+// Ends within `tol` of an earlier end become that end (a hash grid of cell `tol`, counted from
+// the drawing's corner `origin`, so that a cell index stays below diagonal / tol = 1e5 wherever
+// the drawing lies).
+std::vector<DrawnLine> snap_ends(std::vector<DrawnLine> lines, const Vec2& origin, double tol) {
   std::unordered_map<long long, std::vector<Vec2>> grid;
   const auto cell = [tol](double x) { return static_cast<long long>(std::floor(x / tol)); };
   const auto key = [](long long i, long long j) { return i * 1000003LL ^ j; };
   const auto snap = [&](Vec2& p) {
-    const long long i = cell(p.x()), j = cell(p.y());
+    const long long i = cell(p.x() - origin.x()), j = cell(p.y() - origin.y());
     for (long long di = -1; di <= 1; ++di)
       for (long long dj = -1; dj <= 1; ++dj) {
         const auto it = grid.find(key(i + di, j + dj));
@@ -273,6 +276,8 @@ const char* to_string(LineKind kind) {
 }
 
 PatternFile pattern_from_lines(const std::vector<DrawnLine>& drawn, const std::string& name, const LineImportOptions& options) {
+  if (!(options.merge_tolerance > 0.0 && options.merge_tolerance <= 1e-2))
+    throw std::invalid_argument("pattern_from_lines: the merge tolerance must be in (0, 0.01]");
   if (drawn.empty()) throw ParseError(name, 0, "no lines: nothing is drawn with a stroke of a crease-pattern colour");
   if (std::none_of(drawn.begin(), drawn.end(), [](const DrawnLine& l) { return l.kind == LineKind::Border; }))
     throw ParseError(name, drawn.front().line, "no border line (black): the sheet's outline must be drawn");
@@ -281,7 +286,7 @@ PatternFile pattern_from_lines(const std::vector<DrawnLine>& drawn, const std::s
   const double diagonal = box.diagonal().norm();
   if (!(diagonal > 0.0) || !std::isfinite(diagonal)) throw ParseError(name, drawn.front().line, "the lines have no extent");
   const double tol = options.merge_tolerance * diagonal;
-  const std::vector<DrawnLine> lines = snap_ends(drawn, tol);
+  const std::vector<DrawnLine> lines = snap_ends(drawn, box.min(), tol);
   std::vector<Vec2> points;
   std::vector<Edge> edges;
   arrange(lines, tol, points, edges);
@@ -293,6 +298,19 @@ PatternFile pattern_from_lines(const std::vector<DrawnLine>& drawn, const std::s
     throw ParseError(name, drawn.front().line, "the lines enclose no sheet: the border (black) must be a closed outline");
   if (std::none_of(edges.begin(), edges.end(), [&](const Edge& e) { return on_border(lines, e); }))
     throw ParseError(name, drawn.front().line, "the closed lines include no border line (black): the sheet's outline must be drawn");
+  // The outline is closed where every point of it has an even number of border pieces.
+  std::vector<int> border_degree(points.size(), 0), border_line(points.size(), 0);
+  for (const Edge& e : edges)
+    if (on_border(lines, e))
+      for (int p : {e.u, e.v}) {
+        ++border_degree[static_cast<std::size_t>(p)];
+        for (int l : e.lines)
+          if (lines[l].kind == LineKind::Border) border_line[static_cast<std::size_t>(p)] = lines[l].line;
+      }
+  for (std::size_t p = 0; p < points.size(); ++p)
+    if (border_degree[p] % 2 == 1)
+      throw ParseError(name, border_line[p], "the border (black) does not close: it ends at (" + format_number(points[p].x()) + ", " +
+                                                 format_number(points[p].y()) + ") in the file's coordinates");
   std::vector<int> source;
   const std::string text = fold_text(lines, points, edges, name, source);
   FoldImport fold = [&] {

@@ -79,6 +79,7 @@ struct LineImportOptions {
 /// @param options  the merge tolerance and the pattern builder's options
 /// @throws ParseError at the line of the offending element: no lines, no border, lines that
 ///         enclose no sheet, a sheet the pattern builder refuses (a cut inside the sheet, …)
+/// @throws std::invalid_argument for a merge tolerance outside (0, 0.01]
 PatternFile pattern_from_lines(const std::vector<DrawnLine>& lines, const std::string& name,
                                const LineImportOptions& options = {});
 
