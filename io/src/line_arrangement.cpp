@@ -38,33 +38,41 @@ struct Edge {
   std::vector<int> lines;  // indices of the drawn lines it lies on
 };
 
-// Ends within `tol` of an earlier end become that end (a hash grid of cell `tol`, counted from
-// the drawing's corner `origin`, so that a cell index stays below diagonal / tol = 1e5 wherever
-// the drawing lies).
-std::vector<DrawnLine> snap_ends(std::vector<DrawnLine> lines, const Vec2& origin, double tol) {
-  std::unordered_map<long long, std::vector<Vec2>> grid;
-  const auto cell = [tol](double x) { return static_cast<long long>(std::floor(x / tol)); };
-  const auto key = [](long long i, long long j) { return i * 1000003LL ^ j; };
-  const auto snap = [&](Vec2& p) {
-    const long long i = cell(p.x() - origin.x()), j = cell(p.y() - origin.y());
-    for (long long di = -1; di <= 1; ++di)
-      for (long long dj = -1; dj <= 1; ++dj) {
-        const auto it = grid.find(key(i + di, j + dj));
-        if (it == grid.end()) continue;
+// The drawn lines' ends, distinct to `tol`: a hash grid of cell `tol` counted from the drawing's
+// corner `origin` (a cell index stays below diagonal / tol = 1e5 wherever the drawing lies).
+class EndGrid {
+ public:
+  EndGrid(const Vec2& origin, double tol) : origin_(origin), tol_(tol) {}
+  // The nearest end within `reach` of p, or null.
+  const Vec2* near(const Vec2& p, double reach) const {
+    const long long i = cell(p.x() - origin_.x()), j = cell(p.y() - origin_.y());
+    const auto r = static_cast<long long>(std::ceil(reach / tol_));
+    const Vec2* best = nullptr;
+    for (long long di = -r; di <= r; ++di)
+      for (long long dj = -r; dj <= r; ++dj) {
+        const auto it = grid_.find(key(i + di, j + dj));
+        if (it == grid_.end()) continue;
         for (const Vec2& q : it->second)
-          if ((q - p).norm() <= tol) {
-            p = q;
-            return;
-          }
+          if ((q - p).norm() <= reach && (!best || (q - p).norm() < (*best - p).norm())) best = &q;
       }
-    grid[key(i, j)].push_back(p);
-  };
-  for (DrawnLine& l : lines) {
-    snap(l.a);
-    snap(l.b);
+    return best;
   }
-  return lines;
-}
+  // p, or the end already within tol of it (then p is that end).
+  void snap(Vec2& p) {
+    if (const Vec2* q = near(p, tol_)) {
+      p = *q;
+      return;
+    }
+    grid_[key(cell(p.x() - origin_.x()), cell(p.y() - origin_.y()))].push_back(p);
+  }
+
+ private:
+  long long cell(double x) const { return static_cast<long long>(std::floor(x / tol_)); }
+  static long long key(long long i, long long j) { return i * 1000003LL ^ j; }
+  Vec2 origin_;
+  double tol_;
+  std::unordered_map<long long, std::vector<Vec2>> grid_;
+};
 
 int rank(LineKind k) {  // which kind an edge drawn twice takes: the outline first
   switch (k) {
@@ -116,7 +124,7 @@ void arrange(const std::vector<DrawnLine>& lines, double tol, std::vector<Vec2>&
 // Removes the overshoot stubs (an edge ≤ 2.5 tol long ending in a vertex of nobody else) and
 // merges the vertices of edges as short (the overlap of two collinear lines extended past their
 // common end, near-meetings of three or more lines).
-void clean(std::vector<Vec2>& points, std::vector<Edge>& edges, double tol) {
+void clean(std::vector<Vec2>& points, std::vector<Edge>& edges, const EndGrid& ends, double tol) {
   for (bool removed = true; removed;) {
     removed = false;
     std::vector<int> degree(points.size(), 0);
@@ -133,6 +141,20 @@ void clean(std::vector<Vec2>& points, std::vector<Edge>& edges, double tol) {
   const std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
   for (const Edge& e : edges)
     if ((points[e.u] - points[e.v]).norm() <= 2.5 * tol) parent[find(e.u)] = find(e.v);
+  // A merged point goes where a drawn line ends, if one ends there: the extension moved the
+  // vertices it made off the drawn ends by up to its length.
+  std::map<int, std::vector<int>> members;
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if (find(static_cast<int>(v)) != static_cast<int>(v)) members[find(static_cast<int>(v))].push_back(static_cast<int>(v));
+  for (auto& [root, others] : members) {
+    const Vec2* end = nullptr;
+    others.push_back(root);
+    for (int w : others) {
+      const Vec2* e = ends.near(points[static_cast<std::size_t>(w)], 2.5 * tol);
+      if (e && (!end || (*e - points[static_cast<std::size_t>(w)]).norm() < (*end - points[static_cast<std::size_t>(w)]).norm())) end = e;
+    }
+    if (end) points[static_cast<std::size_t>(root)] = *end;
+  }
   std::map<std::pair<int, int>, std::size_t> seen;
   std::vector<Edge> kept;
   for (Edge e : edges) {
@@ -286,11 +308,13 @@ PatternFile pattern_from_lines(const std::vector<DrawnLine>& drawn, const std::s
   const double diagonal = box.diagonal().norm();
   if (!(diagonal > 0.0) || !std::isfinite(diagonal)) throw ParseError(name, drawn.front().line, "the lines have no extent");
   const double tol = options.merge_tolerance * diagonal;
-  const std::vector<DrawnLine> lines = snap_ends(drawn, box.min(), tol);
+  EndGrid ends(box.min(), tol);
+  std::vector<DrawnLine> lines = drawn;
+  for (DrawnLine& l : lines) ends.snap(l.a), ends.snap(l.b);
   std::vector<Vec2> points;
   std::vector<Edge> edges;
   arrange(lines, tol, points, edges);
-  clean(points, edges, tol);
+  clean(points, edges, ends, tol);
   std::set<int> loose = prune_outside(lines, points, edges);
   const std::set<int> dangling = prune_loose(lines, points, edges);
   loose.insert(dangling.begin(), dangling.end());

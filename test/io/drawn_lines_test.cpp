@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/io/atomic_write.hpp"
@@ -221,6 +222,48 @@ TEST(DrawnLines, FoldkitSvgRoundTripsWithItsTargets) {
     got.insert(std::lround(1e6 * back.state->angles[static_cast<Eigen::Index>(j)]));
   }
   EXPECT_EQ(got, want);
+}
+
+// The shortest boundary edge or joint, relative to the sheet's diagonal.
+double shortest_feature(const CreasePattern& p) {
+  Eigen::AlignedBox2d box;
+  for (const Vec2& v : p.vertices()) box.extend(v);
+  double shortest = box.diagonal().norm();
+  for (const auto& [a, b] : p.boundary_edges()) shortest = std::min(shortest, (p.vertices()[a] - p.vertices()[b]).norm());
+  for (const auto& j : p.joints()) shortest = std::min(shortest, joint_length(p, j));
+  return shortest / box.diagonal().norm();
+}
+
+// Origami Simulator's files → foldkit → SVG → foldkit: every line keeps its class, its length
+// (relative to the border's: the writer scales to 800 px) and its target. Not for drawings with
+// slivers a few merge tolerances long (Illustrator's imprecision in huffmanWaterbomb and
+// traditionalCrane leaves edges of 2.7e-5 of the diagonal): a second import may merge those.
+TEST(DrawnLines, FixturesRoundTripThroughFoldkitsSvg) {
+  if (!foldkit::test::fixtures_available()) GTEST_SKIP() << "no ../shared/fixtures";
+  std::vector<std::string> slivers;
+  for (const char* name : kFixtures) {
+    SCOPED_TRACE(name);
+    const PatternFile first = read_pattern_file(fixture(name));
+    if (shortest_feature(first.pattern) < 1e-4) {
+      slivers.push_back(name);
+      continue;
+    }
+    PatternOutput out;
+    out.state = &*first.state;
+    const PatternFile again = pattern_from_lines(parse_svg_lines(pattern_text("x.svg", first.pattern, out), "x.svg"), "x.svg");
+    EXPECT_EQ(again.pattern.actors().size(), first.pattern.actors().size());
+    ASSERT_EQ(again.pattern.joints().size(), first.pattern.joints().size());
+    const auto a = pattern_lengths(first.pattern), b = pattern_lengths(again.pattern);
+    for (const char* kind : {"mountain", "valley"})
+      EXPECT_NEAR(b.count(kind) ? b.at(kind) / b.at("border") : 0.0, a.count(kind) ? a.at(kind) / a.at("border") : 0.0, 1e-6) << kind;
+    std::multiset<std::pair<std::string, long>> want, got;
+    for (std::size_t j = 0; j < first.pattern.joints().size(); ++j) {
+      want.insert({geometry::to_string(first.pattern.joints()[j].assignment), std::lround(1e6 * first.state->angles[static_cast<Eigen::Index>(j)])});
+      got.insert({geometry::to_string(again.pattern.joints()[j].assignment), std::lround(1e6 * again.state->angles[static_cast<Eigen::Index>(j)])});
+    }
+    EXPECT_EQ(got, want);
+  }
+  EXPECT_EQ(slivers, (std::vector<std::string>{"huffmanWaterbomb", "traditionalCrane"}));
 }
 
 // Bad input is a ParseError at the element's line, whatever is wrong.
