@@ -124,7 +124,7 @@ void arrange(const std::vector<DrawnLine>& lines, double tol, std::vector<Vec2>&
 // Removes the overshoot stubs (an edge ≤ 2.5 tol long ending in a vertex of nobody else) and
 // merges the vertices of edges as short (the overlap of two collinear lines extended past their
 // common end, near-meetings of three or more lines).
-void clean(std::vector<Vec2>& points, std::vector<Edge>& edges, const EndGrid& ends, double tol) {
+void clean(const std::vector<DrawnLine>& lines, std::vector<Vec2>& points, std::vector<Edge>& edges, const EndGrid& ends, double tol) {
   for (bool removed = true; removed;) {
     removed = false;
     std::vector<int> degree(points.size(), 0);
@@ -141,17 +141,36 @@ void clean(std::vector<Vec2>& points, std::vector<Edge>& edges, const EndGrid& e
   const std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
   for (const Edge& e : edges)
     if ((points[e.u] - points[e.v]).norm() <= 2.5 * tol) parent[find(e.u)] = find(e.v);
-  // A merged point goes where a drawn line ends, if one ends there: the extension moved the
-  // vertices it made off the drawn ends by up to its length.
+  // Where a merged cluster of points goes: where two lines of the drawing cross, if they cross
+  // in it (a straight crease stays straight through its vertex); else where a drawn line ends, if
+  // one ends there (the extension moved the points it made off the ends by up to its length).
+  std::vector<std::vector<int>> lines_at(points.size());
+  for (const Edge& e : edges)
+    for (int p : {e.u, e.v}) lines_at[static_cast<std::size_t>(p)].insert(lines_at[static_cast<std::size_t>(p)].end(), e.lines.begin(), e.lines.end());
+  const auto crossing = [&](int p) {
+    const auto& at = lines_at[static_cast<std::size_t>(p)];
+    for (std::size_t a = 0; a < at.size(); ++a)
+      for (std::size_t b = a + 1; b < at.size(); ++b) {
+        const Vec2 d = lines[at[a]].b - lines[at[a]].a, f = lines[at[b]].b - lines[at[b]].a;
+        if (std::abs(d.x() * f.y() - d.y() * f.x()) > 1e-6 * d.norm() * f.norm()) return true;
+      }
+    return false;
+  };
   std::map<int, std::vector<int>> members;
   for (std::size_t v = 0; v < points.size(); ++v)
     if (find(static_cast<int>(v)) != static_cast<int>(v)) members[find(static_cast<int>(v))].push_back(static_cast<int>(v));
   for (auto& [root, others] : members) {
-    const Vec2* end = nullptr;
     others.push_back(root);
+    const auto cross = std::find_if(others.begin(), others.end(), crossing);
+    if (cross != others.end()) {
+      points[static_cast<std::size_t>(root)] = points[static_cast<std::size_t>(*cross)];
+      continue;
+    }
+    const Vec2* end = nullptr;
     for (int w : others) {
-      const Vec2* e = ends.near(points[static_cast<std::size_t>(w)], 2.5 * tol);
-      if (e && (!end || (*e - points[static_cast<std::size_t>(w)]).norm() < (*end - points[static_cast<std::size_t>(w)]).norm())) end = e;
+      const Vec2& q = points[static_cast<std::size_t>(w)];
+      const Vec2* e = ends.near(q, 2.5 * tol);
+      if (e && (!end || (*e - q).norm() < (*end - q).norm())) end = e;
     }
     if (end) points[static_cast<std::size_t>(root)] = *end;
   }
@@ -314,7 +333,7 @@ PatternFile pattern_from_lines(const std::vector<DrawnLine>& drawn, const std::s
   std::vector<Vec2> points;
   std::vector<Edge> edges;
   arrange(lines, tol, points, edges);
-  clean(points, edges, ends, tol);
+  clean(lines, points, edges, ends, tol);
   std::set<int> loose = prune_outside(lines, points, edges);
   const std::set<int> dangling = prune_loose(lines, points, edges);
   loose.insert(dangling.begin(), dangling.end());
