@@ -96,14 +96,30 @@ char fold_letter(LineKind k) {
   }
 }
 
-// The arrangement of the lines, each extended by `tol` at both ends so that a line that stops
-// short of another by rounding still meets it; the stubs this leaves are removed afterwards.
+// The arrangement of the lines. Each end is extended by `tol`, so that a line that stops short of
+// another by rounding still meets it (the stubs this leaves are removed afterwards), except where
+// a collinear line goes on from the same end (after snapping): the two already meet there, and
+// extending both would lay two nearly collinear pieces side by side that never intersect.
 void arrange(const std::vector<DrawnLine>& lines, double tol, std::vector<Vec2>& points, std::vector<Edge>& edges) {
+  std::map<std::pair<double, double>, std::vector<std::size_t>> ends_at;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    ends_at[{lines[i].a.x(), lines[i].a.y()}].push_back(i);
+    ends_at[{lines[i].b.x(), lines[i].b.y()}].push_back(i);
+  }
+  const auto extend = [&](std::size_t i, const Vec2& p) {
+    const Vec2 d = lines[i].b - lines[i].a;
+    for (std::size_t j : ends_at[{p.x(), p.y()}]) {
+      const Vec2 f = lines[j].b - lines[j].a;
+      if (j != i && std::abs(d.x() * f.y() - d.y() * f.x()) <= 1e-6 * d.norm() * f.norm()) return false;
+    }
+    return true;
+  };
   std::vector<Traits::Curve_2> curves;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const Vec2 d = lines[i].b - lines[i].a;
     if (d.norm() <= tol) continue;
-    const Vec2 a = lines[i].a - tol * d.normalized(), b = lines[i].b + tol * d.normalized();
+    const Vec2 a = extend(i, lines[i].a) ? Vec2(lines[i].a - tol * d.normalized()) : lines[i].a;
+    const Vec2 b = extend(i, lines[i].b) ? Vec2(lines[i].b + tol * d.normalized()) : lines[i].b;
     curves.emplace_back(SegmentTraits::Curve_2(Kernel::Point_2(a.x(), a.y()), Kernel::Point_2(b.x(), b.y())), static_cast<int>(i));
   }
   Arrangement arr;

@@ -203,6 +203,23 @@ TEST(DrawnLines, SvgAndCpOfOneSquareGiveOneSheet) {
   EXPECT_FALSE(o.state.has_value()) << ".opx files carry no targets";
 }
 
+// A straight side drawn as two lines whose directions differ in the last bit (a fuzzer's find:
+// extended past their common end they lay side by side without meeting, and the sheet vanished).
+TEST(DrawnLines, CollinearLinesMeetingEndToEndStayOneSide) {
+  const PatternFile f = pattern_from_lines(
+      parse_svg_lines(svg("<line stroke=\"#000\" x1=\"20\" y1=\"20\" x2=\"20\" y2=\"820\"/>\n"
+                          "<line stroke=\"#000\" x1=\"20\" y1=\"820\" x2=\"420\" y2=\"420\"/>\n"
+                          "<line stroke=\"#000\" x1=\"420\" y1=\"420\" x2=\"544.1379310344827\" y2=\"295.8620689655172\"/>\n"
+                          "<line stroke=\"#000\" x1=\"20\" y1=\"20\" x2=\"544.1379310344827\" y2=\"295.8620689655172\"/>\n"),
+                      "t.svg"),
+      "t.svg");
+  EXPECT_EQ(f.pattern.actors().size(), 1u);
+  EXPECT_EQ(f.pattern.boundary_edges().size(), 4u);
+  EXPECT_NEAR(pattern_lengths(f.pattern).at("border"), 800 + std::hypot(400, 400) + std::hypot(124.1379310344827, 124.1379310344828) +
+                                                            std::hypot(524.1379310344827, 275.8620689655172),
+              1e-9);
+}
+
 // foldkit's own SVG, with a folded state, reads back as the same sheet with the same targets.
 TEST(DrawnLines, FoldkitSvgRoundTripsWithItsTargets) {
   const CreasePattern p = geometry::build_or_throw(geometry::generators::miura(3, 4));
