@@ -115,11 +115,22 @@ void arrange(const std::vector<DrawnLine>& lines, double tol, std::vector<Vec2>&
     return true;
   };
   std::vector<Traits::Curve_2> curves;
+  std::map<std::pair<std::pair<double, double>, std::pair<double, double>>, int> drawn_once;
+  std::map<int, std::vector<int>> duplicates;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const Vec2 d = lines[i].b - lines[i].a;
     if (d.norm() <= tol) continue;
     const Vec2 a = extend(i, lines[i].a) ? Vec2(lines[i].a - tol * d.normalized()) : lines[i].a;
     const Vec2 b = extend(i, lines[i].b) ? Vec2(lines[i].b + tol * d.normalized()) : lines[i].b;
+    // A line drawn twice goes in once (CGAL 5.5's sweep asserts on some stacks of identical
+    // overlapping curves, a fuzzer's find): its duplicates ride on the first one's data.
+    std::pair<double, double> p(a.x(), a.y()), q(b.x(), b.y());
+    if (q < p) std::swap(p, q);
+    const auto [first, added] = drawn_once.emplace(std::make_pair(p, q), static_cast<int>(i));
+    if (!added) {
+      duplicates[first->second].push_back(static_cast<int>(i));
+      continue;
+    }
     curves.emplace_back(SegmentTraits::Curve_2(Kernel::Point_2(a.x(), a.y()), Kernel::Point_2(b.x(), b.y())), static_cast<int>(i));
   }
   Arrangement arr;
@@ -131,10 +142,62 @@ void arrange(const std::vector<DrawnLine>& lines, double tol, std::vector<Vec2>&
   }
   for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
     Edge out{index.at(e->source()), index.at(e->target()), {}};
-    for (auto it = e->curve().data().begin(); it != e->curve().data().end(); ++it) out.lines.push_back(*it);
+    for (auto it = e->curve().data().begin(); it != e->curve().data().end(); ++it) {
+      out.lines.push_back(*it);
+      const auto more = duplicates.find(*it);
+      if (more != duplicates.end()) out.lines.insert(out.lines.end(), more->second.begin(), more->second.end());
+    }
     std::sort(out.lines.begin(), out.lines.end());
     edges.push_back(std::move(out));
   }
+}
+
+// Splits every edge at the vertices that lie on it to 2.5 tolerances: merging moves points by up
+// to that, and an end not extended (a collinear line goes on from it) may stop that close to
+// another line; unsplit, such a line would pass over a vertex and the pieces would overlap. The
+// vertices are bucketed in a grid of 256 × 256 cells over the drawing.
+void split_at_vertices(const std::vector<Vec2>& points, std::vector<Edge>& edges, double tol) {
+  std::vector<char> used(points.size(), 0);
+  Eigen::AlignedBox2d box;
+  for (const Edge& e : edges) used[static_cast<std::size_t>(e.u)] = used[static_cast<std::size_t>(e.v)] = 1;
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if (used[v]) box.extend(points[v]);
+  if (box.isEmpty()) return;
+  const double h = std::max(box.diagonal().norm() / 256.0, 2.5 * tol);
+  const auto cell = [&](double x, double lo) { return static_cast<long long>(std::floor((x - lo) / h)); };
+  std::unordered_map<long long, std::vector<int>> grid;
+  const auto key = [](long long i, long long j) { return i * 1000003LL ^ j; };
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if (used[v]) grid[key(cell(points[v].x(), box.min().x()), cell(points[v].y(), box.min().y()))].push_back(static_cast<int>(v));
+  const double reach = 2.5 * tol;
+  std::vector<Edge> out;
+  for (const Edge& e : edges) {
+    const Vec2 a = points[static_cast<std::size_t>(e.u)], d = points[static_cast<std::size_t>(e.v)] - a;
+    std::vector<std::pair<double, int>> on;
+    for (long long i = cell(std::min(a.x(), a.x() + d.x()) - reach, box.min().x()); i <= cell(std::max(a.x(), a.x() + d.x()) + reach, box.min().x()); ++i)
+      for (long long j = cell(std::min(a.y(), a.y() + d.y()) - reach, box.min().y()); j <= cell(std::max(a.y(), a.y() + d.y()) + reach, box.min().y()); ++j) {
+        const auto it = grid.find(key(i, j));
+        if (it == grid.end()) continue;
+        for (int w : it->second) {
+          if (w == e.u || w == e.v) continue;
+          const double t = (points[static_cast<std::size_t>(w)] - a).dot(d) / d.squaredNorm();
+          if (t * d.norm() > reach && (1 - t) * d.norm() > reach && (a + t * d - points[static_cast<std::size_t>(w)]).norm() <= reach)
+            on.emplace_back(t, w);
+        }
+      }
+    if (on.empty()) {
+      out.push_back(e);
+      continue;
+    }
+    std::sort(on.begin(), on.end());
+    int from = e.u;
+    for (const auto& [t, w] : on) {
+      out.push_back({from, w, e.lines});
+      from = w;
+    }
+    out.push_back({from, e.v, e.lines});
+  }
+  edges = std::move(out);
 }
 
 // Removes the overshoot stubs (an edge ≤ 2.5 tol long ending in a vertex of nobody else) and
@@ -190,12 +253,16 @@ void clean(const std::vector<DrawnLine>& lines, std::vector<Vec2>& points, std::
     }
     if (end) points[static_cast<std::size_t>(root)] = *end;
   }
-  std::map<std::pair<int, int>, std::size_t> seen;
-  std::vector<Edge> kept;
+  std::vector<Edge> merged_edges;
   for (Edge e : edges) {
     e.u = find(e.u);
     e.v = find(e.v);
-    if (e.u == e.v) continue;
+    if (e.u != e.v) merged_edges.push_back(std::move(e));
+  }
+  split_at_vertices(points, merged_edges, tol);
+  std::map<std::pair<int, int>, std::size_t> seen;
+  std::vector<Edge> kept;
+  for (Edge e : merged_edges) {
     const auto key = std::minmax(e.u, e.v);
     const auto [it, added] = seen.emplace(key, kept.size());
     if (added) {

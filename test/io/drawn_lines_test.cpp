@@ -220,6 +220,25 @@ TEST(DrawnLines, CollinearLinesMeetingEndToEndStayOneSide) {
               1e-9);
 }
 
+// The fuzzers' finds, kept: a line drawn four times over (CGAL's sweep asserted on the stack, in
+// builds with CGAL's assertions on) is read once, and the file's open border is then named; a
+// crease end merged onto the border splits it (unsplit, the border passed over the vertex, and a
+// second import found two more actors).
+TEST(DrawnLines, FuzzFindsStayFixed) {
+  const std::string cp = foldkit::test::data_path("drawn/fuzz-duplicate-lines.cp");
+  try {
+    read_pattern_file(cp);
+    ADD_FAILURE() << "an open border was accepted";
+  } catch (const ParseError& e) {
+    EXPECT_NE(e.message().find("does not close"), std::string::npos) << e.what();
+  }
+  const PatternFile first = read_pattern_file(foldkit::test::data_path("drawn/fuzz-tjunction.svg"));
+  const PatternFile again = pattern_from_lines(parse_svg_lines(write_svg(first.pattern), "again.svg"), "again.svg");
+  EXPECT_EQ(again.pattern.actors().size(), first.pattern.actors().size());
+  EXPECT_EQ(again.pattern.joints().size(), first.pattern.joints().size());
+  EXPECT_EQ(again.pattern.boundary_edges().size(), first.pattern.boundary_edges().size());
+}
+
 // foldkit's own SVG, with a folded state, reads back as the same sheet with the same targets.
 TEST(DrawnLines, FoldkitSvgRoundTripsWithItsTargets) {
   const CreasePattern p = geometry::build_or_throw(geometry::generators::miura(3, 4));
