@@ -174,17 +174,26 @@ void split_at_vertices(const std::vector<Vec2>& points, std::vector<Edge>& edges
   for (const Edge& e : edges) {
     const Vec2 a = points[static_cast<std::size_t>(e.u)], d = points[static_cast<std::size_t>(e.v)] - a;
     std::vector<std::pair<double, int>> on;
-    for (long long i = cell(std::min(a.x(), a.x() + d.x()) - reach, box.min().x()); i <= cell(std::max(a.x(), a.x() + d.x()) + reach, box.min().x()); ++i)
-      for (long long j = cell(std::min(a.y(), a.y() + d.y()) - reach, box.min().y()); j <= cell(std::max(a.y(), a.y() + d.y()) + reach, box.min().y()); ++j) {
-        const auto it = grid.find(key(i, j));
-        if (it == grid.end()) continue;
-        for (int w : it->second) {
-          if (w == e.u || w == e.v) continue;
-          const double t = (points[static_cast<std::size_t>(w)] - a).dot(d) / d.squaredNorm();
-          if (t * d.norm() > reach && (1 - t) * d.norm() > reach && (a + t * d - points[static_cast<std::size_t>(w)]).norm() <= reach)
-            on.emplace_back(t, w);
+    const auto consider = [&](int w) {
+      if (w == e.u || w == e.v) return;
+      const double t = (points[static_cast<std::size_t>(w)] - a).dot(d) / d.squaredNorm();
+      if (t * d.norm() > reach && (1 - t) * d.norm() > reach && (a + t * d - points[static_cast<std::size_t>(w)]).norm() <= reach)
+        on.emplace_back(t, w);
+    };
+    const long long i0 = cell(std::min(a.x(), a.x() + d.x()) - reach, box.min().x()), i1 = cell(std::max(a.x(), a.x() + d.x()) + reach, box.min().x());
+    const long long j0 = cell(std::min(a.y(), a.y() + d.y()) - reach, box.min().y()), j1 = cell(std::max(a.y(), a.y() + d.y()) + reach, box.min().y());
+    if ((i1 - i0 + 1) * (j1 - j0 + 1) > static_cast<long long>(grid.size())) {
+      // A long slanted piece covers more cells than hold points: every point, once.
+      for (const auto& [k, list] : grid)
+        for (int w : list) consider(w);
+    } else {
+      for (long long i = i0; i <= i1; ++i)
+        for (long long j = j0; j <= j1; ++j) {
+          const auto it = grid.find(key(i, j));
+          if (it != grid.end())
+            for (int w : it->second) consider(w);
         }
-      }
+    }
     if (on.empty()) {
       out.push_back(e);
       continue;
