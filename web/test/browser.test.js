@@ -144,6 +144,8 @@ test('a pattern drawn with the mouse, grouped, folded and simulated matches the 
   await click(page, 2, 0);
   await click(page, 3, 0);
   await click(page, 2, 1);
+  // The third click closes the triangle; under load the page may take a moment to commit it.
+  await page.waitForFunction(() => window.foldkit.model.actors().length === 5);
   let check = await checked(page);
   assert.ok(check.ok, JSON.stringify(check.problems));
   // Fit frames the drawing: its corners then span most of the 2D view's width or height.
