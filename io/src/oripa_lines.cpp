@@ -13,6 +13,7 @@
 #include "foldkit/io/number_format.hpp"
 #include "foldkit/io/parse_error.hpp"
 #include "foldkit/io/xml_reader.hpp"
+#include "text_lines.hpp"
 
 namespace foldkit::io {
 
@@ -43,7 +44,7 @@ std::vector<DrawnLine> parse_cp_lines(const std::string& text, const std::string
     ++number;
     const std::string record = text.substr(begin, end - begin);
     begin = end + 1;
-    if (record.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (detail::blank(record)) continue;
     const NumberList v = parse_numbers(record);
     if (!v.error.empty()) throw ParseError(name, number, v.error);
     if (v.values.size() != 5) throw ParseError(name, number, "a record is TYPE X1 Y1 X2 Y2, five numbers; this has " + std::to_string(v.values.size()));
