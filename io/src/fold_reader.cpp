@@ -636,9 +636,15 @@ geometry::PatternSpec Importer::make_spec() const {
     actor.line = face_loc(first_face_of_actor_[a]).line;
     spec.actors.push_back(actor);
   }
+  // The builder calls a triangle degenerate when its height is within merge_tolerance x the
+  // pattern's diagonal; welding may move each corner by that much again, hence twice.
+  Eigen::AlignedBox2d box;
+  for (const Face& face : faces_)
+    for (int v : face) box.extend(flat_[static_cast<std::size_t>(v)]);
+  const double min_height = 2.0 * options_.merge_tolerance * box.diagonal().stableNorm();
   for (std::size_t f = 0; f < faces_.size(); ++f) {
     const int fi = static_cast<int>(f);
-    const auto triangles = fold_detail::triangulate(flat_, faces_[f]);
+    const auto triangles = fold_detail::triangulate(flat_, faces_[f], min_height);
     if (triangles.empty())
       reader_.fail(face_loc(fi), face_name(fi), "cannot be cut into triangles (the polygon crosses itself)");
     auto& actor = spec.actors[static_cast<std::size_t>(actor_of_face_[f])];

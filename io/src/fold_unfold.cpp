@@ -1,6 +1,7 @@
 #include "fold_unfold.hpp"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -292,14 +293,17 @@ TracedFaces trace_faces(const std::vector<Vec2>& points, const std::vector<std::
   return out;
 }
 
-std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& points, const Face& face) {
-  std::vector<std::array<int, 3>> triangles;
-  if (face.size() < 3) return triangles;
-  Eigen::AlignedBox2d box;
-  for (int v : face) box.extend(points[v]);
-  const double scale = box.diagonal().norm();
-  const double eps = 1e-12 * scale * scale;
+namespace {
 
+// Ear clipping in which an ear's tip must stand more than `min_height` off the line through its
+// neighbours. Empty when no ear is left before the last triangle.
+std::vector<std::array<int, 3>> clip_ears(const std::vector<Vec2>& points, const Face& face, double eps, double min_height) {
+  const auto thin = [&](const Vec2& pa, const Vec2& pb, const Vec2& pc) {
+    const double twice_area = orient(pa, pb, pc);
+    const double longest = std::max({(pb - pa).norm(), (pc - pb).norm(), (pa - pc).norm()});
+    return twice_area <= eps || twice_area <= min_height * longest;
+  };
+  std::vector<std::array<int, 3>> triangles;
   std::vector<int> ring = face;
   while (ring.size() > 3) {
     const std::size_t k = ring.size();
@@ -309,7 +313,7 @@ std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& points, con
       const int b = ring[i];
       const int c = ring[(i + 1) % k];
       const Vec2 &pa = points[a], &pb = points[b], &pc = points[c];
-      if (orient(pa, pb, pc) <= eps) continue;  // reflex or straight corner: not an ear
+      if (thin(pa, pb, pc)) continue;  // reflex or (nearly) straight corner: not an ear
       bool blocked = false;
       for (int w : ring) {
         if (w == a || w == b || w == c) continue;
@@ -326,8 +330,99 @@ std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& points, con
     }
     if (!clipped) return {};
   }
-  if (orient(points[ring[0]], points[ring[1]], points[ring[2]]) <= eps) return {};
+  if (thin(points[ring[0]], points[ring[1]], points[ring[2]])) return {};
   triangles.push_back({ring[0], ring[1], ring[2]});
+  return triangles;
+}
+
+// Distance of p from the segment ab.
+double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double length2 = d.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((p - a).dot(d) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * d - p).norm();
+}
+
+// The face without its corners that lie within `min_height` of the segment joining the kept
+// corners on either side, and for each side of what is kept the dropped corners on it.
+struct Straightened {
+  Face ring;
+  std::map<std::pair<int, int>, std::vector<int>> dropped_on;  // (from, to) in ring order
+};
+
+Straightened straighten(const std::vector<Vec2>& points, const Face& face, double min_height) {
+  // Start at the first corner if it is one (the triangles then come in the same order as the
+  // face's, and an exported file reads back the same), else at the sharpest.
+  const std::size_t n = face.size();
+  const auto height = [&](std::size_t i) {
+    return distance_to_segment(points[face[i]], points[face[(i + n - 1) % n]], points[face[(i + 1) % n]]);
+  };
+  std::size_t first = 0;
+  if (height(0) <= min_height)
+    for (std::size_t i = 1; i < n; ++i)
+      if (height(i) > height(first)) first = i;
+  Straightened out;
+  std::vector<int> dropped;
+  for (std::size_t k = 0; k < n; ++k) {
+    const int v = face[(first + k) % n];
+    const int next = face[(first + k + 1) % n];
+    if (k > 0) {
+      // Drop v if it, and every corner dropped since the last kept one, lies on the chord from
+      // that kept corner to v's successor.
+      const Vec2& a = points[out.ring.back()];
+      const Vec2& c = points[next];
+      bool on_chord = distance_to_segment(points[v], a, c) <= min_height;
+      for (int w : dropped) on_chord = on_chord && distance_to_segment(points[w], a, c) <= min_height;
+      if (on_chord) {
+        dropped.push_back(v);
+        continue;
+      }
+      if (!dropped.empty()) out.dropped_on[{out.ring.back(), v}] = std::move(dropped);
+      dropped.clear();
+    }
+    out.ring.push_back(v);
+  }
+  if (!dropped.empty()) out.dropped_on[{out.ring.back(), out.ring.front()}] = std::move(dropped);
+  return out;
+}
+
+// Adds `tri` (counter-clockwise) to `out`, split into a fan from the opposite corner wherever one
+// of its sides carries dropped corners; each side's list is used once.
+void emit_split(const std::array<int, 3>& tri, std::map<std::pair<int, int>, std::vector<int>>& dropped_on,
+                std::vector<std::array<int, 3>>& out) {
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto found = dropped_on.find({tri[k], tri[(k + 1) % 3]});
+    if (found == dropped_on.end()) continue;
+    std::vector<int> fan{tri[k]};
+    fan.insert(fan.end(), found->second.begin(), found->second.end());
+    fan.push_back(tri[(k + 1) % 3]);
+    dropped_on.erase(found);
+    const int apex = tri[(k + 2) % 3];
+    for (std::size_t i = 0; i + 1 < fan.size(); ++i) emit_split({fan[i], fan[i + 1], apex}, dropped_on, out);
+    return;
+  }
+  out.push_back(tri);
+}
+
+}  // namespace
+
+std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& points, const Face& face, double min_height) {
+  if (face.size() < 3) return {};
+  Eigen::AlignedBox2d box;
+  for (int v : face) box.extend(points[v]);
+  const double scale = box.diagonal().norm();
+  const double eps = 1e-12 * scale * scale;
+  if (!(min_height > 0.0)) return clip_ears(points, face, eps, 0.0);
+  // A corner straight to within the builder's tolerance is no corner: the builder would call any
+  // triangle with it as a tip degenerate. Triangulate the polygon without such corners, then
+  // split each triangle on a side they lie on into a fan from its opposite corner (the fan's
+  // triangles keep that triangle's height over the side).
+  Straightened s = straighten(points, face, min_height);
+  if (s.ring.size() < 3) return clip_ears(points, face, eps, 0.0);
+  const std::vector<std::array<int, 3>> coarse = clip_ears(points, s.ring, eps, min_height);
+  if (coarse.empty()) return clip_ears(points, face, eps, 0.0);
+  std::vector<std::array<int, 3>> triangles;
+  for (const auto& tri : coarse) emit_split(tri, s.dropped_on, triangles);
   return triangles;
 }
 

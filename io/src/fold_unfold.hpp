@@ -65,7 +65,9 @@ struct TracedFaces {
 TracedFaces trace_faces(const std::vector<Vec2>& points, const std::vector<std::array<int, 2>>& edges);
 
 // Ear clipping of a simple counter-clockwise polygon (convex or not); indices are into
-// `points`. Empty when the polygon is not simple or has no area.
-std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& points, const Face& face);
+// `points`. Triangles whose height over their longest side is at most `min_height` (length units
+// of `points`; pass the pattern builder's merge tolerance) are avoided where the polygon allows.
+// Empty when the polygon is not simple or has no area.
+std::vector<std::array<int, 3>> triangulate(const std::vector<Vec2>& points, const Face& face, double min_height = 0.0);
 
 }  // namespace foldkit::io::fold_detail
