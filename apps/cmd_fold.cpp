@@ -30,8 +30,35 @@ const char* stop_name(geometry::StatusCode code) {
   return geometry::to_string(code);
 }
 
+// The fold angles of --toward: a CMML's end state, or the targets a pattern file carries (the
+// same creases as the pattern folded: matched by index, checked by their ends).
+Eigen::VectorXd target_angles(const geometry::CreasePattern& pattern, const std::string& path) {
+  if (is_kind(path, FileKind::Cmml)) return state_from(pattern, path).angles;
+  const LoadedPattern file = load_pattern(path);
+  if (!file.state)
+    throw io::ParseError(path, 0, "carries no fold angles to fold toward (an SVG's targets are its crease opacities, a FOLD "
+                                  "file's its edges_foldAngle or folded frame)");
+  const auto& mine = pattern.joints();
+  const auto& theirs = file.pattern.joints();
+  Eigen::AlignedBox2d box;
+  for (const geometry::Vec2& v : pattern.vertices()) box.extend(v);
+  const double tolerance = 1e-6 * box.diagonal().norm();
+  const auto same_ends = [&](std::size_t j) {
+    const geometry::Vec2 a0 = pattern.vertices()[mine[j].v[0]], a1 = pattern.vertices()[mine[j].v[1]];
+    const geometry::Vec2 b0 = file.pattern.vertices()[theirs[j].v[0]], b1 = file.pattern.vertices()[theirs[j].v[1]];
+    return std::max((a0 - b0).norm(), (a1 - b1).norm()) <= tolerance || std::max((a0 - b1).norm(), (a1 - b0).norm()) <= tolerance;
+  };
+  if (theirs.size() != mine.size())
+    throw io::ParseError(path, 0, "has " + std::to_string(theirs.size()) + " creases, the pattern " + std::to_string(mine.size()));
+  for (std::size_t j = 0; j < mine.size(); ++j)
+    if (!same_ends(j))
+      throw io::ParseError(path, theirs[j].line, "crease " + std::to_string(theirs[j].id) + " is not where the pattern's crease " +
+                                                     std::to_string(mine[j].id) + " lies: not the same pattern");
+  return file.state->angles;
+}
+
 struct FoldArgs {
-  std::string pattern, output, velocity;
+  std::string pattern, output, velocity, toward;
   double fraction = 0.9, step = folding::ProjectedFoldingOptions{}.max_step,
          chord_tolerance = folding::ProjectedFoldingOptions{}.chord_tolerance;
   int max_steps = 20000;
@@ -40,7 +67,8 @@ struct FoldArgs {
 
 void add_fold_options(CLI::App* app, FoldArgs& opt) {
   app->add_option("pattern", opt.pattern, "Crease pattern (.pmml or .fold) with a mountain/valley assignment")->required();
-  app->add_option("--fraction", opt.fraction, "Stop when the largest fold angle reaches this fraction of 180 degrees")
+  app->add_option("--fraction", opt.fraction,
+                  "Stop when the largest fold angle reaches this fraction of 180 degrees (with --toward: of the targets' largest)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   app->add_option("--step", opt.step, "Largest change of any crease per step, radians (every step's, with --chord-tolerance 0)")
@@ -54,6 +82,10 @@ void add_fold_options(CLI::App* app, FoldArgs& opt) {
   app->add_option("--max-steps", opt.max_steps, "Give up after this many steps")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_option("--velocity", opt.velocity,
                   "Desired velocity as ID:VALUE,… over the assignment's signs (mountain +1, valley -1, others 0)");
+  app->add_option("--toward", opt.toward,
+                  "Fold toward these fold angles: a CMML's end state, or a pattern file's own targets (SVG stroke opacities, "
+                  "FOLD edges_foldAngle). They are the desired velocity, and --fraction is of their largest angle")
+      ->excludes(app->get_option("--velocity"));
   app->add_flag("--no-collision", opt.no_collision, "Closure only: no self-collision checks (folding or replay)");
   app->add_flag("--partial", opt.partial, "When the target is not reached, still write the path up to the stop");
   app->add_option("-o,--output", opt.output, "Output CMML")->required();
@@ -66,6 +98,7 @@ folding::ProjectedFoldingResult fold(const FoldArgs& opt, const geometry::Crease
     o.velocity = parse_velocity(pattern, opt.velocity);
     if (!(o.velocity.cwiseAbs().maxCoeff() > 0.0)) throw UsageError("--velocity: the desired velocity is zero on every crease");
   }
+  if (!opt.toward.empty()) o.toward = target_angles(pattern, opt.toward);
   o.target_fraction = opt.fraction;
   if (opt.chord_tolerance != 0.0 && !(opt.chord_tolerance > o.closure_tolerance))
     throw UsageError("--chord-tolerance: 0 (fixed steps) or above the closure tolerance of the states (1e-10 rad)");
@@ -78,7 +111,7 @@ folding::ProjectedFoldingResult fold(const FoldArgs& opt, const geometry::Crease
     o.progress = progress.callback();
     return folding::fold_projected(pattern, o);
   } catch (const std::invalid_argument& e) {
-    throw io::ParseError(opt.pattern, 0, e.what());
+    throw io::ParseError(opt.toward.empty() ? opt.pattern : opt.toward, 0, e.what());
   }
 }
 
@@ -113,6 +146,8 @@ nlohmann::json fold_json(const FoldArgs& opt, const folding::ProjectedFoldingRes
                    {"message", r.status.message},
                    {"output", written ? nlohmann::json(opt.output) : nlohmann::json(nullptr)}};
   if (r.replay) j["replay_max_closure_error"] = r.replay->max_closure_error;
+  j["toward"] = opt.toward.empty() ? nlohmann::json(nullptr) : nlohmann::json(opt.toward);
+  j["target_distance"] = r.target_distance ? nlohmann::json(*r.target_distance) : nlohmann::json(nullptr);
   add_status(j, r.status);
   return j;
 }

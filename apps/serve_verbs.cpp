@@ -119,7 +119,7 @@ const std::vector<VerbSpec>& served_verbs() {
         option_arg("max-event-time", K::Number), option_arg("frames", K::Output), option_arg("max-frames", K::Integer), option_arg("svg", K::OutputFolder)}},
       {"fold",
        {positional_arg("pattern", K::Input), option_arg("fraction", K::Number), option_arg("step", K::Number), option_arg("chord-tolerance", K::Number),
-        option_arg("max-steps", K::Integer), option_arg("velocity", K::Text), option_arg("no-collision", K::Flag), option_arg("partial", K::Flag),
+        option_arg("max-steps", K::Integer), option_arg("velocity", K::Text), option_arg("toward", K::Input), option_arg("no-collision", K::Flag), option_arg("partial", K::Flag),
         option_arg("output", K::Output, true)}},
       {"plan",
        {positional_arg("pattern", K::Input), option_arg("goal", K::Input), option_arg("goal-angles", K::Text), option_arg("start", K::Input), option_arg("space", K::Text),

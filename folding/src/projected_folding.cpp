@@ -454,7 +454,20 @@ class Folder {
 ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, const ProjectedFoldingOptions& options) {
   const auto n = static_cast<Eigen::Index>(pattern.joints().size());
   if (n == 0) throw std::invalid_argument("fold_projected: the pattern has no crease");
-  const Eigen::VectorXd desired = options.velocity.size() ? options.velocity : assignment_velocity(pattern);
+  ProjectedFoldingOptions o = options;
+  if (options.toward.size()) {
+    if (options.velocity.size()) throw std::invalid_argument("fold_projected: give a desired velocity or target angles, not both");
+    if (options.toward.size() != n)
+      throw std::invalid_argument("fold_projected: the target angles are " + std::to_string(options.toward.size()) + " for " +
+                                  std::to_string(n) + " creases");
+    if (!options.toward.allFinite() || !(options.toward.cwiseAbs().maxCoeff() <= kPi))
+      throw std::invalid_argument("fold_projected: the target angles must be finite and within ±180 degrees");
+    if (!(options.toward.cwiseAbs().maxCoeff() > 0.0))
+      throw std::invalid_argument("fold_projected: every target angle is 0 (the flat sheet): nothing to fold toward");
+    o.velocity = options.toward;
+    o.target_fraction = options.target_fraction * options.toward.cwiseAbs().maxCoeff() / kPi;
+  }
+  const Eigen::VectorXd desired = o.velocity.size() ? o.velocity : assignment_velocity(pattern);
   if (desired.size() != n)
     throw std::invalid_argument("fold_projected: the desired velocity has " + std::to_string(desired.size()) +
                                 " entries for " + std::to_string(n) + " creases");
@@ -480,9 +493,19 @@ ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, co
 
   ProjectedFoldingResult result;
   const auto t0 = std::chrono::steady_clock::now();
-  Folder(pattern, options, result).run(desired);
+  Folder(pattern, o, result).run(desired);
   result.time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   result.fraction = fraction_of(result.states.back());
+  if (options.toward.size()) {
+    // The stop is a fraction of the largest target; the targets themselves may lie on another
+    // branch (a plus-shaped vertex folds one line at a time), so say how far they are.
+    Eigen::Index worst = 0;
+    result.target_distance = (result.states.back().angles - options.toward).cwiseAbs().maxCoeff(&worst);
+    std::ostringstream out;
+    out << "; " << *result.target_distance * 180.0 / kPi << " deg from the targets at crease "
+        << pattern.joints()[static_cast<std::size_t>(worst)].id;
+    result.status.message += out.str();
+  }
   result.sequence = geometry::path_sequence(pattern, result.states, options.cmml_velocity, pattern.title());
   if (options.replay && result.states.size() > 1) {
     simulation::SimulationOptions so;

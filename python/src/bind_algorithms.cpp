@@ -23,6 +23,8 @@ void bind_fold(py::module_& m) {
           "states", [](const R& r) { return states_array(r.states); },
           "Flat, then every accepted state, shape (steps + 1, joints), radians.")
       .def_readonly("fraction", &R::fraction, "Largest |fold angle| / π at the last state.")
+      .def_readonly("target_distance", &R::target_distance,
+                    "With `toward`: the largest |fold angle - target| at the last state, radians; else None.")
       .def_readonly("max_closure_error", &R::max_closure_error, "Largest loop error over the states, radians.")
       .def_readonly("max_chord_error", &R::max_chord_error,
                     "Largest loop error at the midpoint of the chord between consecutive states, radians.")
@@ -48,14 +50,16 @@ void bind_fold(py::module_& m) {
       });
   m.def(
       "fold",
-      [](const geometry::CreasePattern& p, double fraction, const py::object& velocity, double max_step, double chord_tolerance,
-         bool collisions, int max_steps, bool replay) {
+      [](const geometry::CreasePattern& p, double fraction, const py::object& velocity, const py::object& toward, double max_step,
+         double chord_tolerance, bool collisions, int max_steps, bool replay) {
         require(std::isfinite(fraction) && fraction > 0.0 && fraction <= 1.0, "fraction", "in (0, 1]", fraction);
         folding::ProjectedFoldingOptions o;
+        if (!velocity.is_none() && !toward.is_none()) throw py::value_error("give velocity or toward, not both");
         if (!velocity.is_none()) {
           o.velocity = state_or_flat(p, velocity, "velocity").angles;
           if (!(o.velocity.cwiseAbs().maxCoeff() > 0.0)) throw py::value_error("velocity is zero on every crease");
         }
+        if (!toward.is_none()) o.toward = state_or_flat(p, toward, "toward").angles;
         o.target_fraction = fraction;
         o.max_step = max_step;
         o.chord_tolerance = chord_tolerance;
@@ -65,10 +69,13 @@ void bind_fold(py::module_& m) {
         py::gil_scoped_release release;
         return folding::fold_projected(p, o);
       },
-      py::arg("pattern"), py::arg("fraction") = 0.9, py::arg("velocity") = py::none(), py::arg("max_step") = folding::ProjectedFoldingOptions{}.max_step,
+      py::arg("pattern"), py::arg("fraction") = 0.9, py::arg("velocity") = py::none(), py::arg("toward") = py::none(), py::arg("max_step") = folding::ProjectedFoldingOptions{}.max_step,
       py::arg("chord_tolerance") = folding::ProjectedFoldingOptions{}.chord_tolerance, py::arg("collisions") = true, py::arg("max_steps") = 20000, py::arg("replay") = true,
       "Folds every crease at once along the closure manifold (Tachi's projected velocity), as `foldkit fold`, until the "
       "largest angle is `fraction` of π. `velocity` (one value per joint) defaults to the mountain/valley assignment. "
+      "`toward` (a FoldState or one angle per joint, radians: e.g. read_pattern's `state` of an SVG) folds toward "
+      "those angles instead: they are the velocity, and `fraction` is of their largest; `target_distance` says how "
+      "far the fold ended from them. "
       "Steps are sized so that the chord between consecutive states leaves the closure manifold by at most "
       "`chord_tolerance` rad (0: fixed steps of `max_step`, otherwise the longest step). "
       "Bad options (e.g. max_step outside (0, 0.5]) raise ValueError.");

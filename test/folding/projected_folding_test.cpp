@@ -398,4 +398,56 @@ TEST(ProjectedFolding, SingularStopKeepsAClosedPathAndSaysWhere) {
   for (const auto& s : r.states) EXPECT_LE(system.max_error(s), 1e-10);
 }
 
+// Toward target angles: the Miura's closed-form state at a zigzag angle of 120 degrees. The fold
+// stops when its largest angle reaches the fraction of the targets' largest, and there (the
+// Miura has one DOF) every crease is at its target.
+TEST(ProjectedFolding, TowardTheMiurasClosedFormReachesIt) {
+  const double phi = kPi / 3;
+  const geo::CreasePattern p = geo::build_or_throw(gen::miura(4, 4, 1.0, 1.0, phi));
+  const auto target = [&](double zigzag) {
+    const double straight = 2 * std::atan(std::cos(phi) * std::tan(zigzag / 2));
+    Eigen::VectorXd angles(static_cast<Eigen::Index>(p.joints().size()));
+    for (std::size_t j = 0; j < p.joints().size(); ++j) {
+      const auto& joint = p.joints()[j];
+      const bool vertical = std::abs(p.vertices()[joint.v[0]].x() - p.vertices()[joint.v[1]].x()) < 1e-12;
+      angles[static_cast<Eigen::Index>(j)] = sign_of(joint.assignment) * (vertical ? straight : zigzag);
+    }
+    return angles;
+  };
+  ProjectedFoldingOptions o;
+  o.toward = target(2 * kPi / 3);
+  o.target_fraction = 1.0;
+  const ProjectedFoldingResult r = fold_projected(p, o);
+  ASSERT_EQ(r.status.code, StatusCode::Success) << r.status.message;
+  expect_valid_path(p, r, o);
+  ASSERT_TRUE(r.target_distance.has_value());
+  EXPECT_LT(*r.target_distance, 1e-8);
+  EXPECT_NEAR(r.fraction, 2.0 / 3.0, 1e-9);
+  // Half way by the largest angle is the closed form at 60 degrees, not half of each target.
+  o.target_fraction = 0.5;
+  const ProjectedFoldingResult half = fold_projected(p, o);
+  ASSERT_EQ(half.status.code, StatusCode::Success) << half.status.message;
+  EXPECT_LT((half.states.back().angles - target(kPi / 3)).cwiseAbs().maxCoeff(), 1e-8);
+  EXPECT_NEAR(*half.target_distance, (target(2 * kPi / 3) - target(kPi / 3)).cwiseAbs().maxCoeff(), 1e-8);
+  // Without targets there is no distance.
+  EXPECT_FALSE(fold_projected(p, {}).target_distance.has_value());
+}
+
+TEST(ProjectedFolding, TowardRefusesBadTargets) {
+  const geo::CreasePattern p = geo::build_or_throw(gen::miura(2, 2));
+  const auto n = static_cast<Eigen::Index>(p.joints().size());
+  ProjectedFoldingOptions o;
+  o.toward = Eigen::VectorXd::Zero(n);
+  EXPECT_THROW(fold_projected(p, o), std::invalid_argument);  // flat: nothing to fold toward
+  o.toward = Eigen::VectorXd::Constant(n, 4.0);
+  EXPECT_THROW(fold_projected(p, o), std::invalid_argument);  // beyond 180 degrees
+  o.toward = Eigen::VectorXd::Constant(n + 1, 1.0);
+  EXPECT_THROW(fold_projected(p, o), std::invalid_argument);  // one per crease
+  o.toward = Eigen::VectorXd::Constant(n, std::nan(""));
+  EXPECT_THROW(fold_projected(p, o), std::invalid_argument);
+  o.toward = Eigen::VectorXd::Constant(n, 1.0);
+  o.velocity = Eigen::VectorXd::Constant(n, 1.0);
+  EXPECT_THROW(fold_projected(p, o), std::invalid_argument);  // velocity or targets, not both
+}
+
 }  // namespace

@@ -30,6 +30,26 @@ def test_fold_matches_cli(cli, tmp_path):
     np.testing.assert_allclose(r.states[-1], foldkit.read_state(p, str(tmp_path / "f.cmml")), atol=1e-9)
 
 
+
+def test_fold_toward_a_files_targets_matches_cli(cli, tmp_path):
+    """toward: the targets an SVG carries (stroke opacity x 180 degrees) as the direction, and the
+    fraction of their largest angle, as `foldkit fold --toward`."""
+    svg = tmp_path / "m.svg"
+    rc, _, err = cli("generate", "miura", "--rows", 3, "--cols", 3, "-o", svg)
+    assert rc == 0, err
+    rc, expected, err = cli("fold", svg, "--toward", svg, "--fraction", 0.8, "-o", tmp_path / "f.cmml")
+    assert rc == 0, err
+    f = foldkit.read_pattern(str(svg))
+    r = foldkit.fold(f.pattern, fraction=0.8, toward=f.state)
+    assert r.reached and r.steps == expected["steps"]
+    assert r.target_distance == pytest.approx(expected["target_distance"], rel=1e-9)
+    assert r.fraction == pytest.approx(0.8 * np.abs(f.state).max() / np.pi, rel=1e-9)
+    assert foldkit.fold(f.pattern, fraction=0.8).target_distance is None
+    with pytest.raises(ValueError, match="velocity or toward"):
+        foldkit.fold(f.pattern, velocity=f.state, toward=f.state)
+    with pytest.raises(ValueError, match="nothing to fold toward"):
+        foldkit.fold(f.pattern, toward=np.zeros(len(f.state)))
+
 def single_vertex_goal():
     p = foldkit.generators.single_vertex([math.radians(a) for a in (50, 70, 60, 55, 65, 60)])
     # No assignment on a generated vertex: fold along alternating mountain/valley velocities.

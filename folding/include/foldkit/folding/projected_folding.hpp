@@ -27,7 +27,13 @@ struct ProjectedFoldingOptions {
   /// matters). Empty: the assignment's signs, mountain +1, valley −1, unassigned and flat 0
   /// (assignment_velocity()).
   Eigen::VectorXd velocity;
-  /// Stop when the largest |fold angle| reaches target_fraction·π, in (0, 1].
+  /// Target fold angles, radians, one per joint, each in [−π, π], not all 0 (a file's intended
+  /// folded state: an SVG's stroke opacities, a FOLD key frame, a CMML's end state); empty: none.
+  /// When given, they are the desired velocity (`velocity` must then be empty) and
+  /// target_fraction is a fraction of their largest |angle| instead of π.
+  Eigen::VectorXd toward;
+  /// Stop when the largest |fold angle| reaches target_fraction·π (with `toward`:
+  /// target_fraction·max|toward|), in (0, 1].
   double target_fraction = 0.9;
   /// Largest change of any crease per step, radians, in (0, 0.5]: the step when chord_tolerance
   /// is 0, else the cap of the adaptive steps.
@@ -92,6 +98,9 @@ struct ProjectedFoldingResult {
   /// The flat sheet first, then one state per step (one angle per joint, radians).
   std::vector<geometry::FoldState> states;
   double fraction = 0.0;             ///< largest |fold angle| / π at the last state
+  /// With ProjectedFoldingOptions::toward: the largest |fold angle − target| over the creases at
+  /// the last state, radians (how far the fold ended from the targets); else empty.
+  std::optional<double> target_distance;
   double max_closure_error = 0.0;    ///< largest loop error over the states, radians
   /// Largest loop error at the midpoint of the chord between consecutive states, radians (what
   /// chord_tolerance bounds after the lead-in; the lead-in's chords are measured, not sized).
@@ -130,7 +139,8 @@ Eigen::VectorXd assignment_velocity(const geometry::CreasePattern& pattern);
 /// @return the path, how it ended, and the replay's report; stopping early is a status, not an
 ///         exception
 /// @throws std::invalid_argument for a pattern without creases, options out of range, a desired
-///         velocity of the wrong size, not finite or zero (or, when none is given, no assignment)
+///         velocity or target angles of the wrong size, not finite or zero (or, when neither is
+///         given, no assignment), both velocity and targets, a target beyond ±π
 ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, const ProjectedFoldingOptions& options = {});
 
 }  // namespace foldkit::folding
