@@ -186,6 +186,20 @@ int mapped(const std::vector<int>& source, int line) {
   return line > 0 && static_cast<std::size_t>(line) < source.size() ? source[static_cast<std::size_t>(line)] : 0;
 }
 
+// What is left of a cut after the pieces outside the border went is inside the sheet, or on the
+// border (where the border's kind wins). A CreasePattern is one sheet whose facets meet along
+// creases, welded by position, so a slit through it cannot be expressed (docs/FORMATS.md).
+void refuse_inner_cuts(const std::vector<DrawnLine>& lines, const std::vector<Edge>& edges, const std::string& name) {
+  for (const Edge& e : edges) {
+    if (on_border(lines, e)) continue;
+    const auto cut = std::find_if(e.lines.begin(), e.lines.end(), [&](int l) { return lines[static_cast<std::size_t>(l)].kind == LineKind::Cut; });
+    if (cut == e.lines.end()) continue;
+    throw ParseError(name, lines[static_cast<std::size_t>(*cut)].line,
+                     "a cut (green) inside the sheet: foldkit folds one sheet whose facets meet along creases, so cuts "
+                     "through it (kirigami) are not read; a cut on the border is read as border");
+  }
+}
+
 }  // namespace
 
 const char* to_string(LineKind kind) {
@@ -225,6 +239,7 @@ PatternFile pattern_from_lines(const std::vector<DrawnLine>& drawn, const std::s
   if (std::none_of(edges.begin(), edges.end(), [&](const Edge& e) { return on_border(lines, e); }))
     throw ParseError(name, drawn.front().line, "the closed lines include no border line (black): the sheet's outline must be drawn");
   check_border_closed(lines, points, edges, name);
+  refuse_inner_cuts(lines, edges, name);
   std::vector<int> source;
   const std::string text = fold_text(lines, points, edges, name, source);
   FoldImport fold = [&] {

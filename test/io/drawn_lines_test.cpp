@@ -308,6 +308,17 @@ TEST(DrawnLines, FixturesRoundTripThroughFoldkitsSvg) {
 }
 
 // Bad input is a ParseError at the element's line, whatever is wrong.
+// A cut drawn on the border is border: it cuts nothing off.
+TEST(DrawnLines, CutOnTheBorderIsBorder) {
+  const std::string text = svg("<rect stroke=\"#000\" x=\"0\" y=\"0\" width=\"10\" height=\"10\"/>\n"
+                               "<line stroke=\"#0f0\" x1=\"0\" y1=\"0\" x2=\"10\" y2=\"0\"/>\n"
+                               "<line stroke=\"#f00\" x1=\"5\" y1=\"0\" x2=\"5\" y2=\"10\"/>\n");
+  const PatternFile f = pattern_from_lines(parse_svg_lines(text, "cut.svg"), "cut.svg");
+  EXPECT_EQ(f.pattern.actors().size(), 2U);
+  EXPECT_EQ(f.pattern.joints().size(), 1U);
+  EXPECT_NEAR(pattern_lengths(f.pattern)["border"], 40.0, 1e-9);
+}
+
 TEST(DrawnLines, BadDrawingsNameTheirLine) {
   const auto line_of = [](const std::string& text, const std::string& name = "bad.svg") {
     try {
@@ -332,6 +343,10 @@ TEST(DrawnLines, BadDrawingsNameTheirLine) {
   EXPECT_GE(line_of(""), 0);                                                                        // empty
   EXPECT_GE(line_of(svg(border).substr(0, 90)), 1);                                                 // truncated
   EXPECT_EQ(line_of(svg("")), 0);                                                                   // no lines
+  // A cut inside the sheet, from the border or across it, is refused at its line.
+  EXPECT_EQ(line_of(svg(border + "<line stroke=\"#f00\" x1=\"5\" y1=\"0\" x2=\"5\" y2=\"10\"/>\n"
+                                 "<line stroke=\"lime\" x1=\"0\" y1=\"5\" x2=\"5\" y2=\"5\"/>\n")), 5);
+  EXPECT_EQ(line_of(svg(border + "<line stroke=\"#0f0\" x1=\"0\" y1=\"5\" x2=\"10\" y2=\"5\"/>\n")), 4);
   EXPECT_EQ(line_of("1 0 0 10 0\n5 0 0 1 1\n", "bad.cp"), 2);  // unknown type
   EXPECT_EQ(line_of("1 0 0 10 0\n\n2 0 0 1\n", "bad.cp"), 3);   // four numbers
   EXPECT_EQ(line_of("1 0 0 10 inf\n", "bad.cp"), 1);
