@@ -15,6 +15,14 @@
 
 namespace foldkit::apps {
 
+CLI::Option* reads(CLI::Option* option) { return option->type_name(kReadsType); }
+CLI::Option* writes(CLI::Option* option) { return option->type_name(kWritesType); }
+CLI::Option* writes_into(CLI::Option* option) { return option->type_name(kWritesIntoType); }
+
+CLI::Option* add_pattern(CLI::App* app, std::string& path, const std::string& note) {
+  return reads(app->add_option("pattern", path, "Crease pattern (" + io::extensions(io::reads_patterns) + ")" + note))->required();
+}
+
 bool is_kind(const std::string& path, FileKind kind) {
   const io::FileFormat* f = io::format_of(path);
   return f && f->kind == kind;

@@ -42,6 +42,20 @@ Command add_bench(CLI::App& root);
 Command add_bench_merge(CLI::App& root);
 Command add_serve(CLI::App& root);
 
+// File arguments say what is done with them in their type name, which --help shows and from
+// which `foldkit serve` derives how it checks a request's paths against its root
+// (serve_verbs.cpp): read, written, or a folder written into. Each returns `option`.
+inline constexpr const char* kReadsType = "FILE";
+inline constexpr const char* kWritesType = "OUT";
+inline constexpr const char* kWritesIntoType = "DIR";
+CLI::Option* reads(CLI::Option* option);
+CLI::Option* writes(CLI::Option* option);
+CLI::Option* writes_into(CLI::Option* option);
+
+// The positional PATTERN of every verb that takes one, required, its formats listed from io's
+// table; `note` is appended to the description.
+CLI::Option* add_pattern(CLI::App* app, std::string& path, const std::string& note = "");
+
 // Usage errors (bad parameters the parser could not catch) are thrown as UsageError → exit 2.
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;

@@ -145,7 +145,7 @@ void add_bench_options(CLI::App* app, const std::shared_ptr<BenchArgs>& opt) {
                   "Time limits, comma-separated seconds: write DIR/error_vs_time.csv (error reached per limit) instead of logs");
   app->add_flag("--simplify", opt->simplify,
                 "Simplify each solution (OMPL's simplifier, as foldkit plan does) before measuring it");
-  app->add_option("-o,--output", opt->output, "Output folder");
+  writes_into(app->add_option("-o,--output", opt->output, "Output folder"));
   app->add_flag("--list", opt->list, "List suites, scenes and planners");
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
 }
@@ -223,8 +223,8 @@ Command add_bench_merge(CLI::App& root) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("bench-merge", "Join the shard logs of foldkit bench into one log per scene");
-  app->add_option("dirs", opt->inputs, "Folders holding shard logs (*.log)")->required();
-  app->add_option("-o,--output", opt->output, "Output folder")->required();
+  reads(app->add_option("dirs", opt->inputs, "Folders holding shard logs (*.log)"))->required();
+  writes_into(app->add_option("-o,--output", opt->output, "Output folder"))->required();
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
   return {app, [opt]() -> int {
             std::map<std::string, std::vector<std::pair<std::string, bench::BenchLog>>> by_scene;

@@ -116,15 +116,16 @@ Command add_carpenter(CLI::App& root) {
   auto opt = std::make_shared<CarpenterArgs>();
   CLI::App* app = root.add_subcommand(
       "carpenter", "Carpenter's rule: straighten a planar chain, convexify a polygon, or flatten a single vertex");
-  app->add_option("chain", opt->chain,
-                  "Chain file: one 'x y' per line ('#' comments); or a single-vertex crease pattern (.pmml, .fold)")
+  reads(app->add_option("chain", opt->chain,
+                        "Chain file: one 'x y' per line ('#' comments); or a single-vertex crease pattern (" +
+                            io::extensions(io::reads_patterns) + ")"))
       ->required();
   app->add_flag("--closed", opt->closed, "The chain is a polygon (last point joins the first): convexify it");
-  app->add_option("-o,--output", opt->output,
-                  "Write the motion: .cmml (turning angles, docs/CARPENTER.md), .json or .csv (frames)");
-  app->add_option("--frames-csv", opt->frames_csv, "Also write the frames as CSV: frame,vertex,x,y");
+  writes(app->add_option("-o,--output", opt->output,
+                         "Write the motion: .cmml (turning angles, docs/CARPENTER.md), .json or .csv (frames)"));
+  writes(app->add_option("--frames-csv", opt->frames_csv, "Also write the frames as CSV: frame,vertex,x,y"));
   app->add_flag("--fold", opt->fold, "Write the frames backwards: the folding motion, straight (convex) to the input");
-  app->add_option("--state", opt->state, "Single vertex: CMML whose end state is the folded input");
+  reads(app->add_option("--state", opt->state, "Single vertex: CMML whose end state is the folded input"));
   app->add_option("--max-steps", opt->max_steps, "Stop after this many steps (exit 4)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

@@ -208,7 +208,7 @@ int run_demo(const std::string& dir) {
 Command add_demo(CLI::App& root) {
   auto dir = std::make_shared<std::string>("foldkit-demo");
   CLI::App* app = root.add_subcommand("demo", "Run the pipeline on built-in examples and write every output to a folder");
-  app->add_option("-o,--output", *dir, "Output folder")->capture_default_str();
+  writes_into(app->add_option("-o,--output", *dir, "Output folder"))->capture_default_str();
   return {app, [dir] { return run_demo(*dir); }};
 }
 

@@ -66,7 +66,7 @@ struct FoldArgs {
 };
 
 void add_fold_options(CLI::App* app, FoldArgs& opt) {
-  app->add_option("pattern", opt.pattern, "Crease pattern (.pmml or .fold) with a mountain/valley assignment")->required();
+  add_pattern(app, opt.pattern, " with a mountain/valley assignment, or --velocity or --toward");
   app->add_option("--fraction", opt.fraction,
                   "Stop when the largest fold angle reaches this fraction of 180 degrees (with --toward: of the targets' largest)")
       ->check(CLI::Range(0.0, 1.0))
@@ -82,13 +82,13 @@ void add_fold_options(CLI::App* app, FoldArgs& opt) {
   app->add_option("--max-steps", opt.max_steps, "Give up after this many steps")->check(CLI::PositiveNumber)->capture_default_str();
   app->add_option("--velocity", opt.velocity,
                   "Desired velocity as ID:VALUE,… over the assignment's signs (mountain +1, valley -1, others 0)");
-  app->add_option("--toward", opt.toward,
+  reads(app->add_option("--toward", opt.toward,
                   "Fold toward these fold angles: a CMML's end state, or a pattern file's own targets (SVG stroke opacities, "
-                  "FOLD edges_foldAngle). They are the desired velocity, and --fraction is of their largest angle")
+                  "FOLD edges_foldAngle). They are the desired velocity, and --fraction is of their largest angle"))
       ->excludes(app->get_option("--velocity"));
   app->add_flag("--no-collision", opt.no_collision, "Closure only: no self-collision checks (folding or replay)");
   app->add_flag("--partial", opt.partial, "When the target is not reached, still write the path up to the stop");
-  app->add_option("-o,--output", opt.output, "Output CMML")->required();
+  writes(app->add_option("-o,--output", opt.output, "Output CMML"))->required();
   app->add_flag("--json", opt.json, "Print one JSON object on stdout");
 }
 

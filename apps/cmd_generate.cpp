@@ -94,7 +94,7 @@ CLI::Range count_range() { return CLI::Range(1, 100000); }
 
 CLI::App* kind(CLI::App* parent, const std::string& name, const std::string& what, const std::shared_ptr<Common>& common) {
   CLI::App* k = parent->add_subcommand(name, what);
-  k->add_option("-o,--output", common->output, "Output file (.pmml, .fold or .svg)")->required();
+  writes(k->add_option("-o,--output", common->output, "Output file (" + io::extensions(io::writes_patterns) + ")"))->required();
   k->add_option("--title", common->title, "Title written into the file");
   k->add_option("--spring", common->joints.spring, "SpringConst of every joint")->capture_default_str();
   k->add_option("--damping", common->joints.damping, "DampConst of every joint")->capture_default_str();
@@ -190,8 +190,8 @@ CLI::App* add_cube_sheet(CLI::App* app, const Context& c) {
   CLI::App* cubes = kind(app, "cube-sheet", "Cube nets in a row (paper Fig. 8a)", c.common);
   cubes->add_option("--cubes", opt.cubes, "Number of cube nets")->check(count_range())->capture_default_str();
   cubes->add_option("--tile", opt.tile, "Tile size")->check(CLI::PositiveNumber)->capture_default_str();
-  cubes->add_option("--chain-cmml", opt.chain_cmml,
-                    "Also write the CMML that folds the sheet into a straight line of cubes (docs/CARPENTER.md)");
+  writes(cubes->add_option("--chain-cmml", opt.chain_cmml,
+                           "Also write the CMML that folds the sheet into a straight line of cubes (docs/CARPENTER.md)"));
   on_chosen(cubes, c, [](const Params& p, const Common& common) { return gen::cube_sheet(p.cubes, p.tile, common.joints); });
   return cubes;
 }

@@ -11,7 +11,7 @@ Command add_info(CLI::App& root) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("info", "Counts and facts about a crease pattern");
-  app->add_option("pattern", opt->file, "Crease pattern (.pmml or .fold)")->required();
+  add_pattern(app, opt->file);
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
   return {app, [opt] {
             const LoadedPattern loaded = load_pattern(opt->file);

@@ -19,8 +19,8 @@ Command add_dof(CLI::App& root) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("dof", "Instantaneous degrees of freedom: creases minus the rank of the closure Jacobian");
-  app->add_option("pattern", opt->pattern, "Crease pattern (.pmml or .fold)")->required();
-  app->add_option("--state", opt->state, "CMML whose end state is analysed (default: flat)");
+  add_pattern(app, opt->pattern);
+  reads(app->add_option("--state", opt->state, "CMML whose end state is analysed (default: flat)"));
   app->add_option("--tolerance", opt->tolerance, "Rank tolerance, relative to the largest singular value")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
@@ -61,9 +61,9 @@ Command add_project(CLI::App& root) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("project", "Write the nearest closed configuration to a state");
-  app->add_option("pattern", opt->pattern, "Crease pattern (.pmml or .fold)")->required();
-  app->add_option("--state", opt->state, "CMML whose end state is projected")->required();
-  app->add_option("-o,--output", opt->output, "Output .cmml: one event from flat to the closed state")->required();
+  add_pattern(app, opt->pattern);
+  reads(app->add_option("--state", opt->state, "CMML whose end state is projected"))->required();
+  writes(app->add_option("-o,--output", opt->output, "Output .cmml: one event from flat to the closed state"))->required();
   app->add_option("--tolerance", opt->projection.tolerance, "Largest loop error accepted, radians")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

@@ -31,14 +31,14 @@ struct PlanArgs {
 };
 
 void add_plan_options(CLI::App* app, PlanArgs& opt) {
-  app->add_option("pattern", opt.pattern, "Crease pattern (.pmml or .fold)")->required();
-  CLI::Option* goal = app->add_option("--goal", opt.goal, "CMML whose end state is the goal");
+  add_pattern(app, opt.pattern);
+  CLI::Option* goal = reads(app->add_option("--goal", opt.goal, "CMML whose end state is the goal"));
   CLI::Option* goal_angles =
       app->add_option("--goal-angles", opt.goal_angles,
                       "Goal as ID:DEGREES,… for some creases: the nearest closed state to flat that holds them");
   goal->excludes(goal_angles);
   goal_angles->excludes(goal);
-  app->add_option("--start", opt.start, "CMML whose end state is the start (default: flat)");
+  reads(app->add_option("--start", opt.start, "CMML whose end state is the start (default: flat)"));
   app->add_option("--space", opt.space, "Space to search (auto: single-vertex for one vertex, else driving)")
       ->check(CLI::IsMember(planners::space_names()))
       ->capture_default_str();
@@ -58,7 +58,7 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
   app->add_flag("--no-fallback", opt.no_fallback,
                 "No way through flat when the planner finds none in a quarter of --time: no spherical Carpenter path "
                 "(single vertex), no start -> flat -> goal plan (driving space, folded --start)");
-  app->add_option("-o,--output", opt.output, "Output CMML")->required();
+  writes(app->add_option("-o,--output", opt.output, "Output CMML"))->required();
   app->add_flag("--json", opt.json, "Print one JSON object on stdout");
 }
 

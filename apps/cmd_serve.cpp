@@ -40,7 +40,7 @@ Command add_serve(CLI::App& root) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("serve", "Serve the JSON API of the verbs on a local HTTP server (docs/SERVE.md)");
-  app->add_option("files", opt->files, "Files under --root to list as open (GET /api)");
+  reads(app->add_option("files", opt->files, "Files under --root to list as open (GET /api)"));
   app->add_option("--host", opt->host, "Address to listen on (127.0.0.1: this machine only)")->capture_default_str();
   app->add_option("--port", opt->port, "Port (0: any free one, printed on stderr)")->check(CLI::Range(0, 65535))->capture_default_str();
   app->add_option("--root", opt->root, "Folder every file a request names lies in")->capture_default_str();

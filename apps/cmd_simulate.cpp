@@ -20,8 +20,8 @@ Command add_simulate(CLI::App& root) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("simulate", "Replay a CMML fold sequence: closure error and self-collision at every step");
-  app->add_option("pattern", opt->pattern, "Crease pattern (.pmml or .fold)")->required();
-  app->add_option("sequence", opt->sequence, "Fold sequence (.cmml)")->required();
+  add_pattern(app, opt->pattern);
+  reads(app->add_option("sequence", opt->sequence, "Fold sequence (.cmml)"))->required();
   app->add_option("--model", opt->model, "Actuation: motor (CMML velocities), spring (PMML constants), sync (joints arrive together)")
       ->check(CLI::IsMember({"motor", "spring", "sync"}))
       ->capture_default_str();
@@ -37,11 +37,11 @@ Command add_simulate(CLI::App& root) {
   app->add_option("--max-event-time", opt->sim.max_event_time, "Spring model: seconds an event may take to settle")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  app->add_option("--frames", opt->frames, "Write the trajectory as FOLD file_frames (.fold)");
+  writes(app->add_option("--frames", opt->frames, "Write the trajectory as FOLD file_frames (.fold)"));
   app->add_option("--max-frames", opt->max_frames, "Frames kept in --frames, evenly thinned")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  app->add_option("--svg", opt->svg, "Folder for SVG snapshots: each event's end and the first collisions");
+  writes_into(app->add_option("--svg", opt->svg, "Folder for SVG snapshots: each event's end and the first collisions"));
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
   return {app, [opt] {
             if (!opt->frames.empty() && !is_kind(opt->frames, FileKind::Fold))

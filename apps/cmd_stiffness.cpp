@@ -27,9 +27,9 @@ Command add_stiffness(CLI::App& root) {
   };
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("stiffness", "Static equilibrium of the folded structure under a load case (lumped 6-DOF springs)");
-  app->add_option("pattern", opt->pattern, "Crease pattern (.pmml or .fold)")->required();
-  app->add_option("loadcase", opt->load_case, "Load case (.loadcase, see docs/FORMATS.md)")->required();
-  app->add_option("--state", opt->state, "CMML whose end state is analysed (default: flat)");
+  add_pattern(app, opt->pattern);
+  reads(app->add_option("loadcase", opt->load_case, "Load case (.loadcase, see docs/FORMATS.md)"))->required();
+  reads(app->add_option("--state", opt->state, "CMML whose end state is analysed (default: flat)"));
   app->add_flag("--linear", opt->linear, "Small displacements: one linear solve");
   app->add_option("--detect-tolerance", opt->tolerance, "Contact detection tolerance, relative to the tile size")
       ->check(CLI::PositiveNumber)

@@ -99,8 +99,8 @@ int run_validate(const ValidateArgs& opt) {
 Command add_validate(CLI::App& root) {
   auto opt = std::make_shared<ValidateArgs>();
   CLI::App* app = root.add_subcommand("validate", "Check PMML, CMML and FOLD files; print every problem as FILE:LINE: message");
-  app->add_option("files", opt->files, "Files to check (.pmml, .cmml, .fold)")->required();
-  app->add_option("--pattern", opt->pattern, "Crease pattern (.pmml or .fold) to check CMML files against");
+  reads(app->add_option("files", opt->files, "Files to check (" + io::extensions(io::readable) + ")"))->required();
+  reads(app->add_option("--pattern", opt->pattern, "Crease pattern (" + io::extensions(io::reads_patterns) + ") to check CMML files against"));
   app->add_flag("--auto-joints", opt->auto_joints, "Treat an edge shared by two actors without a joint as a joint");
   app->add_flag("--json", opt->json, "Print one JSON object on stdout");
   return {app, [opt] { return run_validate(*opt); }};

@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -17,6 +18,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cli_app.hpp"
 #include "cli_common.hpp"
 
 extern char** environ;
@@ -26,9 +28,6 @@ namespace foldkit::apps {
 namespace {
 
 using K = ArgKind;
-
-ArgSpec positional_arg(std::string name, ArgKind kind, bool required = true) { return {std::move(name), kind, true, required, {}}; }
-ArgSpec option_arg(std::string name, ArgKind kind, bool required = false) { return {std::move(name), kind, false, required, {}}; }
 
 std::string number_text(double v) {
   std::ostringstream out;
@@ -90,48 +89,72 @@ void append_words(const ArgSpec& a, const nlohmann::json& v, const RootedPaths& 
   }
 }
 
-// `generate KIND`: the kind is checked against the generators (a free word could be an option),
-// every generator's options are accepted and the CLI refuses those the kind does not have.
-std::vector<ArgSpec> generate_args() {
-  ArgSpec kind = positional_arg("kind", K::Text);
-  kind.choices = {"single-vertex", "strip", "grid", "circular", "miura", "waterbomb", "boat", "cube-sheet", "square-twist"};
-  std::vector<ArgSpec> args = {kind, option_arg("output", K::Output, true), option_arg("title", K::Text), option_arg("sectors", K::Text)};
-  for (const char* n : {"rows", "cols", "units", "cubes", "rings", "spokes", "degree", "panels", "seed"}) args.push_back(option_arg(n, K::Integer));
-  for (const char* n : {"spring", "damping", "a", "b", "angle", "length", "half-width", "bow", "tile", "cell", "ring-width", "width", "height",
-                        "side", "twist", "pleat", "radius"})
-    args.push_back(option_arg(n, K::Number));
-  return args;
+// How a request's value reaches an option, from what the CLI declares: a flag, a file by its
+// role (cli_common.hpp: reads/writes/writes_into), else the option's value type.
+ArgKind kind_of(const CLI::Option& o, const std::string& name) {
+  if (o.get_expected_max() == 0) return K::Flag;
+  const bool many = o.get_items_expected_max() > 1;
+  const std::string full = o.get_type_name();
+  const std::string type = full.substr(0, full.find(':'));
+  if (type == kReadsType) return many ? K::Inputs : K::Input;
+  if (type == kWritesType && !many) return K::Output;
+  if (type == kWritesIntoType && !many) return K::OutputFolder;
+  if (type == "FLOAT" && !many) return K::Number;
+  if ((type == "INT" || type == "UINT") && !many) return K::Integer;
+  if (type == "TEXT") return many ? K::Texts : K::Text;
+  throw std::logic_error("served option '" + name + "' has a type (" + full + ") no JSON value maps to");
+}
+
+// The arguments of one verb as its CLI declares them; --help is not served, --json always given.
+void add_args(const CLI::App& app, VerbSpec& spec) {
+  for (const CLI::Option* o : app.get_options()) {
+    const std::string name = o->get_positional() && !o->nonpositional() ? o->get_name() : o->get_lnames().front();
+    if (name == "help") continue;
+    if (name == "json") {
+      spec.json = true;
+      continue;
+    }
+    const ArgKind kind = kind_of(*o, name);
+    const auto same = std::find_if(spec.args.begin(), spec.args.end(), [&](const ArgSpec& a) { return a.name == name; });
+    if (same == spec.args.end()) {
+      spec.args.push_back({name, kind, o->get_positional() && !o->nonpositional(), o->get_required(), {}});
+    } else if (same->kind != kind) {
+      // Two generators with one option name: a number takes integers too.
+      if (!((same->kind == K::Number && kind == K::Integer) || (same->kind == K::Integer && kind == K::Number)))
+        throw std::logic_error("served option '" + name + "' has two kinds");
+      same->kind = K::Number;
+    }
+  }
+}
+
+// A verb as its CLI declares it. A verb whose choices are subcommands (`generate KIND`) takes the
+// choice as the positional "kind", checked against their names (a free word could be an option),
+// and the options of every choice; the CLI refuses those the chosen one does not have.
+VerbSpec served_spec(const CLI::App& app) {
+  VerbSpec spec{app.get_name(), {}, false};
+  const auto choices = app.get_subcommands([](const CLI::App*) { return true; });
+  if (!choices.empty()) {
+    ArgSpec kind{"kind", K::Text, true, true, {}};
+    for (const CLI::App* c : choices) kind.choices.push_back(c->get_name());
+    spec.args.push_back(kind);
+    add_args(app, spec);
+    for (const CLI::App* c : choices) add_args(*c, spec);
+  } else {
+    add_args(app, spec);
+  }
+  return spec;
 }
 
 }  // namespace
 
 const std::vector<VerbSpec>& served_verbs() {
-  static const std::vector<VerbSpec> verbs = {
-      {"validate", {positional_arg("files", K::Inputs), option_arg("pattern", K::Input), option_arg("auto-joints", K::Flag)}},
-      {"info", {positional_arg("pattern", K::Input)}},
-      {"dof", {positional_arg("pattern", K::Input), option_arg("state", K::Input), option_arg("tolerance", K::Number)}},
-      {"project",
-       {positional_arg("pattern", K::Input), option_arg("state", K::Input, true), option_arg("output", K::Output, true), option_arg("tolerance", K::Number),
-        option_arg("max-iterations", K::Integer), option_arg("free-signs", K::Flag), option_arg("velocity", K::Number)}},
-      {"simulate",
-       {positional_arg("pattern", K::Input), positional_arg("sequence", K::Input), option_arg("model", K::Text), option_arg("time-step", K::Number),
-        option_arg("closure-tolerance", K::Number), option_arg("collision-tolerance", K::Number), option_arg("no-collision", K::Flag),
-        option_arg("max-event-time", K::Number), option_arg("frames", K::Output), option_arg("max-frames", K::Integer), option_arg("svg", K::OutputFolder)}},
-      {"fold",
-       {positional_arg("pattern", K::Input), option_arg("fraction", K::Number), option_arg("step", K::Number), option_arg("chord-tolerance", K::Number),
-        option_arg("max-steps", K::Integer), option_arg("velocity", K::Text), option_arg("toward", K::Input), option_arg("no-collision", K::Flag), option_arg("partial", K::Flag),
-        option_arg("output", K::Output, true)}},
-      {"plan",
-       {positional_arg("pattern", K::Input), option_arg("goal", K::Input), option_arg("goal-angles", K::Text), option_arg("start", K::Input), option_arg("space", K::Text),
-        option_arg("planner", K::Text), option_arg("param", K::Texts), option_arg("time", K::Number), option_arg("seed", K::Integer),
-        option_arg("no-collision", K::Flag), option_arg("search-margin", K::Number), option_arg("free-signs", K::Flag), option_arg("no-fallback", K::Flag),
-        option_arg("output", K::Output, true)}},
-      {"stiffness",
-       {positional_arg("pattern", K::Input), positional_arg("loadcase", K::Input), option_arg("state", K::Input), option_arg("linear", K::Flag),
-        option_arg("detect-tolerance", K::Number), option_arg("max-iterations", K::Integer)}},
-      {"convert", {positional_arg("input", K::Input), positional_arg("output", K::Output), option_arg("pattern", K::Input), option_arg("joint-ids", K::Flag)}, false},
-      {"generate", generate_args()},
-  };
+  static const std::vector<VerbSpec> verbs = [] {
+    const std::unique_ptr<Cli> cli = make_cli();
+    std::vector<VerbSpec> out;
+    for (const char* verb : {"validate", "info", "dof", "project", "simulate", "fold", "plan", "stiffness", "convert", "generate"})
+      out.push_back(served_spec(*cli->app.get_subcommand(verb)));
+    return out;
+  }();
   return verbs;
 }
 

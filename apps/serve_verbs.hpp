@@ -40,7 +40,9 @@ struct VerbSpec {
 };
 
 // The verbs a server runs: validate, info, dof, project, simulate, fold, plan, stiffness, convert,
-// generate.
+// generate, each with the arguments its CLI subcommand declares (make_cli(): names, required,
+// flags, value types, and file roles from cli_common.hpp's reads/writes/writes_into), so that an
+// option added to the CLI is served without more code.
 const std::vector<VerbSpec>& served_verbs();
 // nullptr for a verb the server does not run.
 const VerbSpec* find_served_verb(const std::string& verb);

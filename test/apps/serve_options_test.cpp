@@ -1,0 +1,54 @@
+// foldkit serve takes each verb's arguments from the CLI's own declarations (serve_verbs.cpp):
+// options the server's code never names are served, with the checks their declared kind calls
+// for. Oracles: the CLI's --json on the same files, and the file system.
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "serve_test_server.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using foldkit::test::comparable;
+using foldkit::test::foldkit;
+using foldkit::test::Server;
+using nlohmann::json;
+
+// fold --toward (a file read under the root) and generate cube-sheet --chain-cmml (a file
+// written under the root) were never typed into the server.
+TEST(ServeOptions, OptionsComeFromTheCliDeclarations) {
+  Server s("options");
+  ASSERT_GT(s.port(), 0) << s.log();
+  ASSERT_EQ(foldkit({"generate", "miura", "--rows", "3", "--cols", "3", "-o", s.path("m.svg")}).exit, 0);
+
+  const auto r = s.post("fold", {{"pattern", "m.svg"}, {"toward", "m.svg"}, {"fraction", 0.5}, {"output", "f.cmml"}});
+  ASSERT_TRUE(r) << s.log();
+  ASSERT_EQ(r->status, 200) << r->body;
+  const auto cli = foldkit({"fold", s.path("m.svg"), "--toward", s.path("m.svg"), "--fraction", "0.5", "-o", s.path("g.cmml"), "--json"});
+  ASSERT_EQ(cli.exit, 0) << cli.err;
+  json expected = comparable(json::parse(cli.out), s.root());
+  json got = json::parse(r->body)["result"];
+  for (json* j : {&expected, &got}) j->erase("output");
+  EXPECT_EQ(comparable(got, s.root()), expected);
+  EXPECT_EQ(foldkit::test::slurp(s.path("f.cmml")), foldkit::test::slurp(s.path("g.cmml")));
+
+  // A read file outside the root is refused like any other, whatever option names it.
+  const auto outside = s.post("fold", {{"pattern", "m.svg"}, {"toward", "../m.svg"}, {"output", "h.cmml"}});
+  ASSERT_TRUE(outside);
+  EXPECT_EQ(outside->status, 400) << outside->body;
+
+  const auto chain = s.post("generate", {{"kind", "cube-sheet"}, {"cubes", 2}, {"output", "c.pmml"}, {"chain-cmml", "chain.cmml"}});
+  ASSERT_TRUE(chain);
+  EXPECT_EQ(chain->status, 200) << chain->body;
+  EXPECT_TRUE(fs::exists(s.path("chain.cmml")));
+  // Declared types: a number for --fraction, a flag for --no-collision; kinds are the generators.
+  EXPECT_EQ(s.post("fold", {{"pattern", "m.svg"}, {"fraction", "half"}, {"output", "f.cmml"}})->status, 400);
+  EXPECT_EQ(s.post("fold", {{"pattern", "m.svg"}, {"no-collision", 1}, {"output", "f.cmml"}})->status, 400);
+  EXPECT_EQ(s.post("generate", {{"kind", "--help"}, {"output", "x.pmml"}})->status, 400);
+  EXPECT_EQ(s.post("fold", {{"pattern", "m.svg"}, {"json", true}, {"output", "f.cmml"}})->status, 400) << "--json is always given";
+}
+
+}  // namespace
