@@ -219,10 +219,17 @@ PatternFile pattern_from_lines(const std::vector<DrawnLine>& drawn, const std::s
   if (drawn.empty()) throw ParseError(name, 0, "no lines: nothing is drawn with a stroke of a crease-pattern colour");
   if (std::none_of(drawn.begin(), drawn.end(), [](const DrawnLine& l) { return l.kind == LineKind::Border; }))
     throw ParseError(name, drawn.front().line, "no border line (black): the sheet's outline must be drawn");
-  Eigen::AlignedBox2d box;
-  for (const DrawnLine& l : drawn) box.extend(l.a), box.extend(l.b);
-  const double diagonal = box.diagonal().norm();
-  if (!(diagonal > 0.0) || !std::isfinite(diagonal)) throw ParseError(name, drawn.front().line, "the lines have no extent");
+  // The tolerance is relative to the sheet: the border's extent. A stray line far outside it
+  // (dropped below) must not coarsen it; with the drawing's extent, one line 600 sheets away made
+  // the tolerance a hundredth of the sheet, and a second import of the result differed (fuzz find).
+  Eigen::AlignedBox2d box, sheet;
+  for (const DrawnLine& l : drawn) {
+    box.extend(l.a), box.extend(l.b);
+    if (l.kind == LineKind::Border) sheet.extend(l.a), sheet.extend(l.b);
+  }
+  const double diagonal = sheet.diagonal().norm();
+  if (!(diagonal > 0.0) || !std::isfinite(diagonal) || !std::isfinite(box.diagonal().norm()))
+    throw ParseError(name, drawn.front().line, "the border has no extent");
   const double tol = options.merge_tolerance * diagonal;
   EndGrid ends(box.min(), tol);
   std::vector<DrawnLine> lines = drawn;

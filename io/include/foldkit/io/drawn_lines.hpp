@@ -62,7 +62,8 @@ std::vector<DrawnLine> parse_opx_lines(const std::string& text, const std::strin
 
 /// How lines become a pattern.
 struct LineImportOptions {
-  /// Ends closer than this, relative to the drawing's diagonal, are one vertex; a line that stops
+  /// Ends closer than this, relative to the diagonal of the border lines (the sheet: lines far
+  /// outside it do not coarsen it), are one vertex; a line that stops
   /// this short of another, or overshoots it by this, meets it. 1e-5: Illustrator writes
   /// coordinates to 0.001, which on the small canvases of Origami Simulator's files (300 units)
   /// leaves ends 3e-6 of the diagonal apart.
