@@ -59,9 +59,9 @@ Eigen::VectorXd target_angles(const geometry::CreasePattern& pattern, const std:
 
 struct FoldArgs {
   std::string pattern, output, velocity, toward;
-  double fraction = 0.9, step = folding::ProjectedFoldingOptions{}.max_step,
+  double fraction = folding::ProjectedFoldingOptions{}.target_fraction, step = folding::ProjectedFoldingOptions{}.max_step,
          chord_tolerance = folding::ProjectedFoldingOptions{}.chord_tolerance;
-  int max_steps = 20000;
+  int max_steps = folding::ProjectedFoldingOptions{}.max_steps;
   bool no_collision = false, partial = false, json = false;
 };
 

@@ -14,7 +14,7 @@ namespace foldkit::apps {
 Command add_dof(CLI::App& root) {
   struct Options {
     std::string pattern, state;
-    double tolerance = 1e-8;
+    double tolerance = geometry::kMobilityTolerance;
     bool json = false;
   };
   auto opt = std::make_shared<Options>();

@@ -22,11 +22,12 @@ std::vector<std::pair<int, double>> parse_goal_angles(const geometry::CreasePatt
   return out;
 }
 
-struct PlanArgs {
-  std::string pattern, goal, goal_angles, start, space = "auto", planner = "RRTConnect", output;
+struct PlanArgs {  // defaults: PlanRequest's
+  std::string pattern, goal, goal_angles, start, space = planners::to_string(planners::PlanRequest{}.space),
+                                                 planner = planners::PlanRequest{}.planner, output;
   std::vector<std::string> params;
-  double time = 5.0, search_margin = -1.0;
-  unsigned int seed = 1;
+  double time = planners::PlanRequest{}.time, search_margin = planners::PlanRequest{}.search_margin;
+  unsigned int seed = planners::PlanRequest{}.seed;
   bool no_collision = false, free_signs = false, no_fallback = false, json = false;
 };
 

@@ -12,7 +12,7 @@ namespace foldkit::apps {
 
 Command add_simulate(CLI::App& root) {
   struct Options {
-    std::string pattern, sequence, model = "motor", frames, svg;
+    std::string pattern, sequence, model = simulation::to_string(simulation::SimulationOptions{}.model), frames, svg;
     simulation::SimulationOptions sim;
     bool no_collision = false;
     std::size_t max_frames = 1000;

@@ -6,6 +6,7 @@
 #include "progress_line.hpp"
 #include "foldkit/analysis/load_case.hpp"
 #include "foldkit/analysis/solver.hpp"
+#include "foldkit/analysis/structure.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
 
@@ -22,7 +23,7 @@ Command add_stiffness(CLI::App& root) {
   struct Options {
     std::string pattern, load_case, state;
     bool linear = false, json = false;
-    double tolerance = 1e-6;
+    double tolerance = analysis::DetectOptions{}.tolerance;
     analysis::SolveOptions solve;
   };
   auto opt = std::make_shared<Options>();

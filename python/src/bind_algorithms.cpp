@@ -2,6 +2,7 @@
 // and spherical Carpenter's rule, Hamiltonian paths of pixel/voxel shapes, the cube-chain fold.
 #include "bindings.hpp"
 #include "foldkit/analysis/solver.hpp"
+#include "foldkit/analysis/structure.hpp"
 #include "foldkit/folding/carpenter.hpp"
 #include "foldkit/folding/carpenter_spherical.hpp"
 #include "foldkit/folding/cube_chain.hpp"
@@ -69,8 +70,11 @@ void bind_fold(py::module_& m) {
         py::gil_scoped_release release;
         return folding::fold_projected(p, o);
       },
-      py::arg("pattern"), py::arg("fraction") = 0.9, py::arg("velocity") = py::none(), py::arg("toward") = py::none(), py::arg("max_step") = folding::ProjectedFoldingOptions{}.max_step,
-      py::arg("chord_tolerance") = folding::ProjectedFoldingOptions{}.chord_tolerance, py::arg("collisions") = true, py::arg("max_steps") = 20000, py::arg("replay") = true,
+      py::arg("pattern"), py::arg("fraction") = folding::ProjectedFoldingOptions{}.target_fraction, py::arg("velocity") = py::none(),
+      py::arg("toward") = py::none(), py::arg("max_step") = folding::ProjectedFoldingOptions{}.max_step,
+      py::arg("chord_tolerance") = folding::ProjectedFoldingOptions{}.chord_tolerance,
+      py::arg("collisions") = folding::ProjectedFoldingOptions{}.collisions, py::arg("max_steps") = folding::ProjectedFoldingOptions{}.max_steps,
+      py::arg("replay") = folding::ProjectedFoldingOptions{}.replay,
       "Folds every crease at once along the closure manifold (Tachi's projected velocity), as `foldkit fold`, until the "
       "largest angle is `fraction` of π. `velocity` (one value per joint) defaults to the mountain/valley assignment. "
       "`toward` (a FoldState or one angle per joint, radians: e.g. read_pattern's `state` of an SVG) folds toward "
@@ -135,7 +139,7 @@ void bind_stiffness(py::module_& m) {
         return analysis::solve(problem, so);
       },
       py::arg("pattern"), py::arg("load_case"), py::arg("state") = py::none(), py::arg("linear") = false,
-      py::arg("detect_tolerance") = 1e-6, py::arg("max_iterations") = 2000,
+      py::arg("detect_tolerance") = analysis::DetectOptions{}.tolerance, py::arg("max_iterations") = analysis::SolveOptions{}.max_total_iterations,
       "Equilibrium of the folded `pattern` at `state` (default flat) under `load_case` (a path or a LoadCase), as "
       "`foldkit stiffness`: modules are the actors, springs the creases and the contacts found.");
 }

@@ -4,6 +4,7 @@
 #include "bindings.hpp"
 #include "foldkit/analysis/load_case.hpp"
 #include "foldkit/analysis/solver.hpp"
+#include "foldkit/analysis/structure.hpp"
 
 namespace foldkit::python {
 namespace {
@@ -69,7 +70,7 @@ void bind_equilibrium(py::module_& m) {
         py::gil_scoped_release release;
         return EquilibriumSystem(problem);
       },
-      py::arg("pattern"), py::arg("load_case"), py::arg("state") = py::none(), py::arg("detect_tolerance") = 1e-6,
+      py::arg("pattern"), py::arg("load_case"), py::arg("state") = py::none(), py::arg("detect_tolerance") = analysis::DetectOptions{}.tolerance,
       "The equilibrium equations of the folded `pattern` at `state` (default flat) under `load_case` (a path or a "
       "LoadCase): the system `stiffness` solves, for solving or studying it with other tools.");
 }

@@ -131,7 +131,7 @@ void bind_pattern_files(py::module_& m) {
       "read_pmml", [](const std::string& path, double merge_tolerance, bool auto_joints) {
         return io::read_pmml(path, build_options(merge_tolerance, auto_joints));
       },
-      py::arg("path"), py::arg("merge_tolerance") = 1e-9, py::arg("auto_joints") = false,
+      py::arg("path"), py::arg("merge_tolerance") = geometry::BuildOptions{}.merge_tolerance, py::arg("auto_joints") = geometry::BuildOptions{}.auto_joints,
       "Reads a PMML crease pattern; ParseError ('FILE:LINE: message') on bad input.");
   m.def(
       "parse_pmml", [](const std::string& text, const std::string& name) { return geometry::build_or_throw(io::parse_pmml(text, name)); },
@@ -151,7 +151,7 @@ void bind_pattern_files(py::module_& m) {
       "read_fold", [](const std::string& path, double merge_tolerance) {
         return fold_file(io::read_fold(path, build_options(merge_tolerance, false)), path);
       },
-      py::arg("path"), py::arg("merge_tolerance") = 1e-9,
+      py::arg("path"), py::arg("merge_tolerance") = geometry::BuildOptions{}.merge_tolerance,
       "Reads a FOLD 1.2 file (its fold angles change sign: FOLD's positive is valley).");
   m.def(
       "parse_fold", [](const std::string& text, const std::string& name) { return fold_file(io::parse_fold(text, name), name); },

@@ -90,7 +90,7 @@ void bind_mobility(py::module_& m) {
         const ClosureSystem system(p);
         return DofReport{geometry::mobility(system, s, tolerance), system.vertex_loops(), system.hole_cycles(), system.max_error(s)};
       },
-      py::arg("pattern"), py::arg("state") = py::none(), py::arg("tolerance") = 1e-8,
+      py::arg("pattern"), py::arg("state") = py::none(), py::arg("tolerance") = geometry::kMobilityTolerance,
       "Instantaneous degrees of freedom at `state` (default flat), as `foldkit dof`; `tolerance` is relative to the largest "
       "singular value.");
 }
@@ -118,7 +118,8 @@ void bind_projection(py::module_& m) {
         py::gil_scoped_release release;
         return geometry::project(ClosureSystem(p), start, o);
       },
-      py::arg("pattern"), py::arg("state"), py::arg("tolerance") = 1e-10, py::arg("max_iterations") = 200, py::arg("keep_signs") = true,
+      py::arg("pattern"), py::arg("state"), py::arg("tolerance") = geometry::ProjectionOptions{}.tolerance,
+      py::arg("max_iterations") = geometry::ProjectionOptions{}.max_iterations, py::arg("keep_signs") = geometry::ProjectionOptions{}.keep_signs,
       "The closed state nearest to `state` (Levenberg–Marquardt), as `foldkit project`; keep_signs=False lets creases "
       "change between mountain and valley.");
   m.def(

@@ -75,11 +75,14 @@ void bind_plan(py::module_& m) {
         py::gil_scoped_release release;
         return planners::plan(req);
       },
-      py::arg("pattern"), py::arg("goal"), py::arg("start") = py::none(), py::arg("space") = "auto",
-      py::arg("planner") = "RRTConnect", py::arg("time") = 5.0, py::arg("seed") = 1u, py::arg("collisions") = true,
-      py::arg("use_assignment") = true, py::arg("simplify") = true, py::arg("search_margin") = -1.0,
-      py::arg("waypoint_step") = 0.02, py::arg("velocity") = 1.0, py::arg("replay") = true,
-      py::arg("params") = std::map<std::string, std::string>{}, py::arg("fallback") = true,
+      // The defaults are PlanRequest's.
+      py::arg("pattern"), py::arg("goal"), py::arg("start") = py::none(), py::arg("space") = std::string(planners::to_string(planners::PlanRequest{}.space)),
+      py::arg("planner") = planners::PlanRequest{}.planner, py::arg("time") = planners::PlanRequest{}.time,
+      py::arg("seed") = planners::PlanRequest{}.seed, py::arg("collisions") = planners::PlanRequest{}.collisions,
+      py::arg("use_assignment") = planners::PlanRequest{}.use_assignment, py::arg("simplify") = planners::PlanRequest{}.simplify,
+      py::arg("search_margin") = planners::PlanRequest{}.search_margin, py::arg("waypoint_step") = planners::PlanRequest{}.waypoint_step,
+      py::arg("velocity") = planners::PlanRequest{}.velocity, py::arg("replay") = planners::PlanRequest{}.replay,
+      py::arg("params") = std::map<std::string, std::string>{}, py::arg("fallback") = planners::PlanRequest{}.fallback,
       "Plans from `start` to the closed state `goal`. `start` is None (flat), a FoldSequence (its end state is the start; "
       "the plan's sequence begins with it, as the CLI's --start CMML), or a closed state: then the plan's sequence reaches "
       "it from flat in one straight event, which the replay accepts only where that line stays closed (pass the "

@@ -118,9 +118,12 @@ void bind_simulate(py::module_& m) {
         out.attr("poses") = pose_array;
         return out;
       },
-      py::arg("pattern"), py::arg("sequence"), py::arg("model") = "motor", py::arg("time_step") = 0.01,
-      py::arg("closure_tolerance") = 1e-3, py::arg("collisions") = true, py::arg("record_frames") = true, py::arg("poses") = false,
-      py::arg("max_event_time") = 600.0,
+      // SimulationOptions' defaults, but record_frames: the frames are what a notebook plots.
+      py::arg("pattern"), py::arg("sequence"), py::arg("model") = std::string(simulation::to_string(simulation::SimulationOptions{}.model)),
+      py::arg("time_step") = simulation::SimulationOptions{}.time_step,
+      py::arg("closure_tolerance") = simulation::SimulationOptions{}.closure_tolerance,
+      py::arg("collisions") = simulation::SimulationOptions{}.collisions, py::arg("record_frames") = true, py::arg("poses") = false,
+      py::arg("max_event_time") = simulation::SimulationOptions{}.max_event_time,
       "Replays `sequence` on `pattern` as `foldkit simulate`: model 'motor' (CMML velocities), 'spring' or 'sync'. "
       "Returns a SimulationReport; with poses=True its `poses` holds each actor's 4×4 pose at every frame, shape "
       "(frames, actors, 4, 4). A sequence naming joints the pattern lacks raises ParseError at its line.");

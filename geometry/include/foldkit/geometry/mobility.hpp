@@ -18,6 +18,9 @@ struct Mobility {
   RankDecision decision;   ///< the singular values behind the count, with their gap
 };
 
+/// The default relative tolerance of mobility(), which `foldkit dof` and Python's `dof` take too.
+inline constexpr double kMobilityTolerance = 1e-8;
+
 /// The mobility of `system` at `state`. The rank is decided by singular values
 /// (LeastNormSolver::decide_rank): singular values above relative_tolerance · max(σ_max, 1)
 /// count (σ_max is floored at 1, the size of a closure Jacobian's entries, so that a Jacobian
@@ -28,7 +31,7 @@ struct Mobility {
 /// @param relative_tolerance  relative threshold on the singular values
 /// @param dense_limit         largest number of creases decided by a dense SVD
 /// @throws std::runtime_error when the sparse factorisation of the subspace iteration fails
-Mobility mobility(const ClosureSystem& system, const FoldState& state, double relative_tolerance = 1e-8,
+Mobility mobility(const ClosureSystem& system, const FoldState& state, double relative_tolerance = kMobilityTolerance,
                   Eigen::Index dense_limit = 400);
 
 }  // namespace foldkit::geometry
