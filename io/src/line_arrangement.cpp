@@ -228,7 +228,7 @@ PatternFile pattern_from_lines(const std::vector<DrawnLine>& drawn, const std::s
     if (l.kind == LineKind::Border) sheet.extend(l.a), sheet.extend(l.b);
   }
   const double diagonal = sheet.diagonal().norm();
-  if (!(diagonal > 0.0) || !std::isfinite(diagonal) || !std::isfinite(box.diagonal().norm()))
+  if (!(diagonal > 0.0) || !std::isfinite(diagonal))
     throw ParseError(name, drawn.front().line, "the border has no extent");
   const double tol = options.merge_tolerance * diagonal;
   EndGrid ends(box.min(), tol);

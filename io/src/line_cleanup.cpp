@@ -60,7 +60,7 @@ void split_at_points(const std::vector<Vec2>& points, std::vector<Edge>& edges, 
     const Vec2 lo = a.cwiseMin(a + d) - Vec2::Constant(reach), hi = a.cwiseMax(a + d) + Vec2::Constant(reach);
     const long long i0 = cells.cell(lo.x(), box.min().x()), i1 = cells.cell(hi.x(), box.min().x());
     const long long j0 = cells.cell(lo.y(), box.min().y()), j1 = cells.cell(hi.y(), box.min().y());
-    if ((i1 - i0 + 1) * (j1 - j0 + 1) > static_cast<long long>(grid.size())) {
+    if (static_cast<double>(i1 - i0 + 1) * static_cast<double>(j1 - j0 + 1) > static_cast<double>(grid.size())) {
       // A long slanted piece covers more cells than hold points: every point, once.
       for (const auto& [k, list] : grid)
         for (int w : list) consider(w);
@@ -119,7 +119,13 @@ void place_clusters(const std::vector<DrawnLine>& lines, std::vector<Vec2>& poin
 
 }  // namespace
 
-long long GridCells::cell(double x, double lo) const { return static_cast<long long>(std::floor((x - lo) / h)); }
+long long GridCells::cell(double x, double lo) const {
+  // Clamped to ±2^40 cells, so that key() cannot overflow: a stray line 1e118 tolerances away
+  // (outside the sheet, dropped later) is in the outermost cell. Distances are checked exactly,
+  // so a clamped cell only holds more points.
+  constexpr double kLimit = 1099511627776.0;
+  return static_cast<long long>(std::clamp(std::floor((x - lo) / h), -kLimit, kLimit));
+}
 
 const Vec2* EndGrid::near(const Vec2& p, double reach) const {
   const long long i = cells_.cell(p.x(), cells_.origin.x()), j = cells_.cell(p.y(), cells_.origin.y());

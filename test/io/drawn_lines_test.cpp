@@ -311,6 +311,23 @@ TEST(DrawnLines, FixturesRoundTripThroughFoldkitsSvg) {
 }
 
 // Bad input is a ParseError at the element's line, whatever is wrong.
+// A line far outside the sheet neither changes the sheet nor the tolerance (relative to the
+// border), and its distance in tolerances does not overflow the grids (UBSan: fuzz find).
+TEST(DrawnLines, StrayLineFarOutsideIsDroppedAndChangesNothing) {
+  const std::string sheet = "<rect stroke=\"#000\" x=\"0\" y=\"0\" width=\"10\" height=\"10\"/>\n"
+                            "<line stroke=\"#f00\" x1=\"5\" y1=\"0\" x2=\"5.00002\" y2=\"10\"/>\n";
+  const PatternFile alone = pattern_from_lines(parse_svg_lines(svg(sheet), "a.svg"), "a.svg");
+  for (const char* far : {"1e6", "1e118", "-1e300"}) {
+    SCOPED_TRACE(far);
+    const std::string stray = std::string("<line stroke=\"#00f\" x1=\"") + far + "\" y1=\"0\" x2=\"" + far + "\" y2=\"10\"/>\n";
+    const PatternFile with = pattern_from_lines(parse_svg_lines(svg(sheet + stray), "b.svg"), "b.svg");
+    EXPECT_EQ(with.pattern.vertices(), alone.pattern.vertices());
+    EXPECT_EQ(with.pattern.joints().size(), 1U);
+    ASSERT_FALSE(with.warnings.empty());
+    EXPECT_EQ(with.warnings.front().line, 5);
+  }
+}
+
 // A cut drawn on the border is border: it cuts nothing off.
 TEST(DrawnLines, CutOnTheBorderIsBorder) {
   const std::string text = svg("<rect stroke=\"#000\" x=\"0\" y=\"0\" width=\"10\" height=\"10\"/>\n"
