@@ -9,12 +9,13 @@ name=${1:?usage: fuzz.sh pmml|cmml|fold|svg|cp|opx|loadcase|cli [seconds] [jobs]
 seconds=${2:-600}
 jobs=${3:-1}
 command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ is needed (apt-get install clang)" >&2; exit 1; }
-flags="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -g -O1"
+flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g -O1"
 cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DFOLDKIT_BUILD_FUZZERS=ON \
   -DFOLDKIT_BUILD_TESTS=OFF -DFOLDKIT_BUILD_BENCHMARKS=OFF -DCMAKE_CXX_FLAGS="$flags" >&2
-cmake --build build-fuzz -j "$(nproc)" --target "fuzz_$name" foldkit >&2
 corpus=build-fuzz/corpus-$name
+cmake --build build-fuzz -j "$(nproc)" --target "fuzz_$name" >&2
 if [ ! -d "$corpus" ]; then
+  cmake --build build-fuzz -j "$(nproc)" --target foldkit >&2  # for the seeds
   mkdir -p "$corpus"
   ./build-fuzz/apps/foldkit demo -o build-fuzz/seeds >/dev/null 2>&1
   cp build-fuzz/seeds/*."$name" test/data/bad/*."$name" "$corpus"/ 2>/dev/null || true
