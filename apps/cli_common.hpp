@@ -16,7 +16,7 @@
 
 namespace foldkit::apps {
 
-// Exit codes of DEVELOPERS.md.
+// Exit codes, as docs/CLI.md lists them.
 enum Exit : int { kOk = 0, kInvalidInput = 1, kUsage = 2, kInvalidSequence = 3, kNoPlan = 4 };
 
 // A subcommand and what runs when it was chosen; run() returns the exit code.
