@@ -11,7 +11,8 @@
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/geometry/null_space.hpp"
 #include "foldkit/geometry/projection.hpp"
-#include "foldkit/simulation/collision_world.hpp"
+
+#include "path_checker.hpp"
 
 namespace foldkit::folding {
 
@@ -30,66 +31,6 @@ Eigen::VectorXd assignment_velocity(const geometry::CreasePattern& pattern) {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-double fraction_of(const FoldState& s) { return s.angles.size() ? s.angles.cwiseAbs().maxCoeff() / kPi : 0.0; }
-
-// Follows the path through a collision world, in order, with sub-steps so that no facet corner
-// moves farther between two checks than the world's margin (its memory of stacked facets needs that).
-class PathChecker {
- public:
-  explicit PathChecker(const geometry::CreasePattern& pattern)
-      : pattern_(pattern), tree_(geometry::make_tree(pattern)), margin_(0.25 * simulation::smallest_feature(pattern)),
-        world_(pattern, options(margin_)) {}
-
-  // Empty when the straight motion from `a` to `b` crosses nothing, else what crossed.
-  std::string crossing(const FoldState& a, const FoldState& b) {
-    const auto pa = geometry::facet_poses(pattern_, tree_, a), pb = geometry::facet_poses(pattern_, tree_, b);
-    double moved = 0.0;
-    for (std::size_t f = 0; f < pattern_.actors().size(); ++f)
-      for (const auto& t : pattern_.actors()[f].triangles)
-        for (int v : t.v) {
-          const Eigen::Vector3d p(pattern_.vertices()[v].x(), pattern_.vertices()[v].y(), 0.0);
-          moved = std::max(moved, (pa[f] * p - pb[f] * p).norm());
-        }
-    const int parts = std::max(1, static_cast<int>(std::ceil(moved / margin_)));
-    for (int k = first_ ? 0 : 1; k <= parts; ++k) {
-      const FoldState s{a.angles + (static_cast<double>(k) / parts) * (b.angles - a.angles)};
-      const auto crossings = world_.check(geometry::facet_poses(pattern_, tree_, s), s);
-      if (!crossings.empty()) {
-        const auto& c = crossings.front();
-        std::ostringstream out;
-        out << "actors " << pattern_.actors()[c.actors[0]].id << " and " << pattern_.actors()[c.actors[1]].id << " cross ("
-            << simulation::to_string(c.kind);
-        if (c.kind == simulation::CrossingKind::Mesh) out << ", depth " << c.depth;
-        out << ") at largest fold angle " << fraction_of(s) * 180.0 << " deg";
-        return out.str();
-      }
-    }
-    first_ = false;
-    return {};
-  }
-
-  // Starts the world's memory of the motion again at `x` (a state crossing-free on the path
-  // checked so far), to check another motion from it.
-  void restart(const FoldState& x) {
-    world_ = simulation::CollisionWorld(pattern_, options(margin_));
-    first_ = true;
-    crossing(x, x);
-  }
-
- private:
-  static simulation::CollisionOptions options(double margin) {
-    simulation::CollisionOptions o;
-    o.margin = margin;
-    return o;
-  }
-
-  const geometry::CreasePattern& pattern_;
-  geometry::KinematicTree tree_;
-  double margin_;
-  simulation::CollisionWorld world_;
-  bool first_ = true;
-};
 
 struct Corrected {
   FoldState state;
