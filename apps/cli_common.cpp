@@ -23,6 +23,14 @@ CLI::Option* add_pattern(CLI::App* app, std::string& path, const std::string& no
   return reads(app->add_option("pattern", path, "Crease pattern (" + io::extensions(io::reads_patterns) + ")" + note))->required();
 }
 
+CLI::Option* positive(CLI::Option* option) { return option->check(CLI::PositiveNumber)->capture_default_str(); }
+
+CLI::Option* add_json(CLI::App* app, bool& json) { return app->add_flag("--json", json, "Print one JSON object on stdout"); }
+
+CLI::Option* add_state(CLI::App* app, std::string& path, const std::string& what) {
+  return reads(app->add_option("--state", path, "CMML whose end state is " + what));
+}
+
 bool is_kind(const std::string& path, FileKind kind) {
   const io::FileFormat* f = io::format_of(path);
   return f && f->kind == kind;

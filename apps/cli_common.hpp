@@ -56,6 +56,14 @@ CLI::Option* writes_into(CLI::Option* option);
 // table; `note` is appended to the description.
 CLI::Option* add_pattern(CLI::App* app, std::string& path, const std::string& note = "");
 
+// A positive number whose default --help shows. Returns `option`.
+CLI::Option* positive(CLI::Option* option);
+// --json: print one JSON object on stdout (every verb that reports has it).
+CLI::Option* add_json(CLI::App* app, bool& json);
+// --state CMML: the end state of a fold sequence, `what` is done with it ("analysed (default:
+// flat)", "projected").
+CLI::Option* add_state(CLI::App* app, std::string& path, const std::string& what);
+
 // Usage errors (bad parameters the parser could not catch) are thrown as UsageError → exit 2.
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;

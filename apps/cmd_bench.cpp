@@ -120,12 +120,10 @@ struct BenchArgs {
 
 void add_bench_options(CLI::App* app, const std::shared_ptr<BenchArgs>& opt) {
   app->add_option("suite", opt->suite, "Suite: quick, full, spaces, vertex-complete or miura-scale (see --list)");
-  app->add_option("--time", opt->time, "Seconds per run")->check(CLI::PositiveNumber)->capture_default_str();
-  app->add_option("--runs", opt->runs, "Runs per planner and scene (per time limit with --error-vs-time)")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  positive(app->add_option("--time", opt->time, "Seconds per run"));
+  positive(app->add_option("--runs", opt->runs, "Runs per planner and scene (per time limit with --error-vs-time)"));
   app->add_option("--shard", opt->shard, "Run shard K of N of the (scene, planner, run) list")->capture_default_str();
-  app->add_option("--seed", opt->seed, "Seed of the scenes' goals and of OMPL")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(app->add_option("--seed", opt->seed, "Seed of the scenes' goals and of OMPL"));
   app->add_option("--planners", opt->planners, "Planners, comma-separated (default: the suite's)");
   app->add_option("--scenes", opt->scenes, "Scenes, comma-separated (default: the suite's)");
   app->add_option("--space", opt->space,
@@ -147,7 +145,7 @@ void add_bench_options(CLI::App* app, const std::shared_ptr<BenchArgs>& opt) {
                 "Simplify each solution (OMPL's simplifier, as foldkit plan does) before measuring it");
   writes_into(app->add_option("-o,--output", opt->output, "Output folder"));
   app->add_flag("--list", opt->list, "List suites, scenes and planners");
-  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  add_json(app, opt->json);
 }
 
 }  // namespace
@@ -225,7 +223,7 @@ Command add_bench_merge(CLI::App& root) {
   CLI::App* app = root.add_subcommand("bench-merge", "Join the shard logs of foldkit bench into one log per scene");
   reads(app->add_option("dirs", opt->inputs, "Folders holding shard logs (*.log)"))->required();
   writes_into(app->add_option("-o,--output", opt->output, "Output folder"))->required();
-  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  add_json(app, opt->json);
   return {app, [opt]() -> int {
             std::map<std::string, std::vector<std::pair<std::string, bench::BenchLog>>> by_scene;
             for (const std::string& dir : opt->inputs) {

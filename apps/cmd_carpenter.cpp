@@ -126,10 +126,8 @@ Command add_carpenter(CLI::App& root) {
   writes(app->add_option("--frames-csv", opt->frames_csv, "Also write the frames as CSV: frame,vertex,x,y"));
   app->add_flag("--fold", opt->fold, "Write the frames backwards: the folding motion, straight (convex) to the input");
   reads(app->add_option("--state", opt->state, "Single vertex: CMML whose end state is the folded input"));
-  app->add_option("--max-steps", opt->max_steps, "Stop after this many steps (exit 4)")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  positive(app->add_option("--max-steps", opt->max_steps, "Stop after this many steps (exit 4)"));
+  add_json(app, opt->json);
   return {app, [opt] {
             const io::FileFormat* format = io::format_of(opt->chain);
             if (format && io::reads_patterns(*format)) return run_spherical(*opt);

@@ -54,9 +54,12 @@ int run_convert(const ConvertArgs& opt) {
 
 Command add_convert(CLI::App& root) {
   auto opt = std::make_shared<ConvertArgs>();
-  CLI::App* app = root.add_subcommand("convert", "Convert between .pmml, .cmml, .fold and .svg by file extension");
-  reads(app->add_option("input", opt->input, "Input file: a crease pattern (" + io::extensions(io::reads_patterns) + "), or .cmml with --pattern"))->required();
-  writes(app->add_option("output", opt->output, "Output file (" + io::extensions([](const io::FileFormat& f) { return io::writes_patterns(f) || f.sequence; }) + ")"))->required();
+  CLI::App* app = root.add_subcommand("convert", "Convert between the formats of docs/FORMATS.md by file extension");
+  const std::string written = io::extensions([](const io::FileFormat& f) { return io::writes_patterns(f) || f.sequence; });
+  reads(app->add_option("input", opt->input,
+                        "Input file: a crease pattern (" + io::extensions(io::reads_patterns) + "), or .cmml with --pattern"))
+      ->required();
+  writes(app->add_option("output", opt->output, "Output file (" + written + ")"))->required();
   reads(app->add_option("--pattern", opt->pattern, "The crease pattern a .cmml input folds"));
   app->add_flag("--joint-ids", opt->joint_ids, "Label joints with their IDs in SVG output");
   return {app, [opt] { return run_convert(*opt); }};

@@ -16,11 +16,9 @@ Command add_dof(CLI::App& root) {
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("dof", "Instantaneous degrees of freedom: creases minus the rank of the closure Jacobian");
   add_pattern(app, opt->pattern);
-  reads(app->add_option("--state", opt->state, "CMML whose end state is analysed (default: flat)"));
-  app->add_option("--tolerance", opt->tolerance, "Rank tolerance, relative to the largest singular value")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  add_state(app, opt->state, "analysed (default: flat)");
+  positive(app->add_option("--tolerance", opt->tolerance, "Rank tolerance, relative to the largest singular value"));
+  add_json(app, opt->json);
   return {app, [opt] {
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
             const geometry::FoldState state = state_from(pattern, opt->state);

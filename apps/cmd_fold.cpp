@@ -79,7 +79,7 @@ void add_fold_options(CLI::App* app, FoldArgs& opt) {
                   "the closure manifold by at most this, radians; 0: fixed steps of --step")
       ->check(CLI::Range(0.0, 0.1))
       ->capture_default_str();
-  app->add_option("--max-steps", opt.max_steps, "Give up after this many steps")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(app->add_option("--max-steps", opt.max_steps, "Give up after this many steps"));
   app->add_option("--velocity", opt.velocity,
                   "Desired velocity as ID:VALUE,… over the assignment's signs (mountain +1, valley -1, others 0)");
   reads(app->add_option("--toward", opt.toward,
@@ -89,7 +89,7 @@ void add_fold_options(CLI::App* app, FoldArgs& opt) {
   app->add_flag("--no-collision", opt.no_collision, "Closure only: no self-collision checks (folding or replay)");
   app->add_flag("--partial", opt.partial, "When the target is not reached, still write the path up to the stop");
   writes(app->add_option("-o,--output", opt.output, "Output CMML"))->required();
-  app->add_flag("--json", opt.json, "Print one JSON object on stdout");
+  add_json(app, opt.json);
 }
 
 folding::ProjectedFoldingResult fold(const FoldArgs& opt, const geometry::CreasePattern& pattern) {

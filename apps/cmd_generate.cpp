@@ -98,7 +98,7 @@ CLI::App* kind(CLI::App* parent, const std::string& name, const std::string& wha
   k->add_option("--title", common->title, "Title written into the file");
   k->add_option("--spring", common->joints.spring, "SpringConst of every joint")->capture_default_str();
   k->add_option("--damping", common->joints.damping, "DampConst of every joint")->capture_default_str();
-  k->add_flag("--json", common->json, "Print one JSON object on stdout");
+  add_json(k, common->json);
   return k;
 }
 
@@ -115,7 +115,7 @@ void add_single_vertex(CLI::App* app, const Context& c) {
   sv->add_option("--sectors", opt.sectors, "Sector angles in degrees, comma-separated, summing to 360");
   sv->add_option("--degree", opt.degree, "Number of creases (equal sectors, or random with --seed)")->check(CLI::Range(3, 100000));
   auto* seed = sv->add_option("--seed", opt.seed, "Seed for random sector angles with --degree");
-  sv->add_option("--radius", opt.radius, "Sheet radius")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(sv->add_option("--radius", opt.radius, "Sheet radius"));
   on_chosen(sv, c, [seed](const Params& p, const Common& common) {
     auto s = sectors_from(p.sectors, p.degree, seed->count() ? std::optional<unsigned>(p.seed) : std::nullopt);
     return gen::single_vertex(s, p.radius, common.joints);
@@ -126,8 +126,8 @@ void add_strip(CLI::App* app, const Context& c) {
   Params& opt = *c.p;
   CLI::App* strip = kind(app, "strip", "Panels in a row joined by parallel creases", c.common);
   strip->add_option("--panels", opt.n, "Number of panels")->check(count_range())->capture_default_str();
-  strip->add_option("--width", opt.width, "Panel width")->check(CLI::PositiveNumber)->capture_default_str();
-  strip->add_option("--height", opt.height, "Panel height")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(strip->add_option("--width", opt.width, "Panel width"));
+  positive(strip->add_option("--height", opt.height, "Panel height"));
   on_chosen(strip, c, [](const Params& p, const Common& common) { return gen::strip(p.n, p.width, p.height, common.joints); });
 }
 
@@ -136,7 +136,7 @@ CLI::App* add_grid(CLI::App* app, const Context& c) {
   CLI::App* grid = kind(app, "grid", "Square lattice of cells", c.common);
   grid->add_option("--rows", opt.rows, "Rows of cells")->check(count_range())->capture_default_str();
   grid->add_option("--cols", opt.cols, "Columns of cells")->check(count_range())->capture_default_str();
-  grid->add_option("--cell", opt.cell, "Cell size")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(grid->add_option("--cell", opt.cell, "Cell size"));
   on_chosen(grid, c, [](const Params& p, const Common& common) { return gen::grid(p.rows, p.cols, p.cell, common.joints); });
   return grid;
 }
@@ -146,7 +146,7 @@ CLI::App* add_circular(CLI::App* app, const Context& c) {
   CLI::App* circ = kind(app, "circular", "Circular lattice: rings crossed by spokes", c.common);
   circ->add_option("--rings", opt.rings, "Number of rings")->check(count_range())->capture_default_str();
   circ->add_option("--spokes", opt.spokes, "Number of radial creases")->check(CLI::Range(3, 100000))->capture_default_str();
-  circ->add_option("--ring-width", opt.ring_width, "Width of each ring")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(circ->add_option("--ring-width", opt.ring_width, "Width of each ring"));
   on_chosen(circ, c, [](const Params& p, const Common& common) {
     return gen::circular_lattice(p.rings, p.spokes, p.ring_width, common.joints);
   });
@@ -158,8 +158,8 @@ CLI::App* add_miura(CLI::App* app, const Context& c) {
   CLI::App* miura = kind(app, "miura", "Miura-ori of rows × cols parallelograms", c.common);
   miura->add_option("--rows", opt.rows, "Rows")->check(count_range())->capture_default_str();
   miura->add_option("--cols", opt.cols, "Columns")->check(count_range())->capture_default_str();
-  miura->add_option("--a", opt.a, "Column width")->check(CLI::PositiveNumber)->capture_default_str();
-  miura->add_option("--b", opt.b, "Row height")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(miura->add_option("--a", opt.a, "Column width"));
+  positive(miura->add_option("--b", opt.b, "Row height"));
   miura->add_option("--angle", opt.angle, "Parallelogram angle in degrees, (0, 90]")->check(CLI::Range(0.0, 90.0))->capture_default_str();
   on_chosen(miura, c, [](const Params& p, const Common& common) {
     return gen::miura(p.rows, p.cols, p.a, p.b, radians(p.angle), common.joints);
@@ -179,9 +179,9 @@ CLI::App* add_waterbomb(CLI::App* app, const Context& c) {
 void add_boat(CLI::App* app, const Context& c) {
   Params& opt = *c.p;
   CLI::App* boat = kind(app, "boat", "The boat of the paper's Fig. 3", c.common);
-  boat->add_option("--length", opt.length, "Sheet length")->check(CLI::PositiveNumber)->capture_default_str();
-  boat->add_option("--half-width", opt.half_width, "Half the sheet width")->check(CLI::PositiveNumber)->capture_default_str();
-  boat->add_option("--bow", opt.bow, "Distance from each end to its vertex")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(boat->add_option("--length", opt.length, "Sheet length"));
+  positive(boat->add_option("--half-width", opt.half_width, "Half the sheet width"));
+  positive(boat->add_option("--bow", opt.bow, "Distance from each end to its vertex"));
   on_chosen(boat, c, [](const Params& p, const Common& common) { return gen::boat(p.length, p.half_width, p.bow, common.joints); });
 }
 
@@ -189,7 +189,7 @@ CLI::App* add_cube_sheet(CLI::App* app, const Context& c) {
   Params& opt = *c.p;
   CLI::App* cubes = kind(app, "cube-sheet", "Cube nets in a row (paper Fig. 8a)", c.common);
   cubes->add_option("--cubes", opt.cubes, "Number of cube nets")->check(count_range())->capture_default_str();
-  cubes->add_option("--tile", opt.tile, "Tile size")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(cubes->add_option("--tile", opt.tile, "Tile size"));
   writes(cubes->add_option("--chain-cmml", opt.chain_cmml,
                            "Also write the CMML that folds the sheet into a straight line of cubes (docs/CARPENTER.md)"));
   on_chosen(cubes, c, [](const Params& p, const Common& common) { return gen::cube_sheet(p.cubes, p.tile, common.joints); });
@@ -199,9 +199,9 @@ CLI::App* add_cube_sheet(CLI::App* app, const Context& c) {
 void add_square_twist(CLI::App* app, const Context& c) {
   Params& opt = *c.p;
   CLI::App* twist = kind(app, "square-twist", "The classic square twist (not rigidly foldable)", c.common);
-  twist->add_option("--side", opt.side, "Side of the central square")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(twist->add_option("--side", opt.side, "Side of the central square"));
   twist->add_option("--twist", opt.twist, "Twist angle in degrees, (0, 90)")->check(CLI::Range(0.0, 90.0))->capture_default_str();
-  twist->add_option("--pleat", opt.pleat, "Pleat length")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(twist->add_option("--pleat", opt.pleat, "Pleat length"));
   on_chosen(twist, c, [](const Params& p, const Common& common) {
     if (p.twist <= 0.0 || p.twist >= 90.0) throw UsageError("--twist must lie strictly between 0 and 90 degrees");
     return gen::square_twist(p.side, radians(p.twist), p.pleat, common.joints);

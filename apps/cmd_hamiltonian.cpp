@@ -52,10 +52,10 @@ Command add_hamiltonian(CLI::App& root) {
   reads(app->add_option("shape", opt->shape, "Shape: ASCII grid (.txt, .grid), PBM (.pbm) or voxel layers (.vox)"))->required();
   app->add_flag("--refine", opt->refine, "Refine each cell 2× (2×2 or 2×2×2) and build a Hamiltonian cycle in linear time");
   app->add_flag("--cycle", opt->cycle, "Exact search for a Hamiltonian cycle instead of a path");
-  app->add_option("--budget", opt->budget, "Node budget of the exact search")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(app->add_option("--budget", opt->budget, "Node budget of the exact search"));
   app->add_option("--start", opt->start, "Exact path from this cell, X,Y (X,Y,Z for voxels)");
   writes(app->add_option("-o,--output", opt->output, "Write the path, one 'x y' or 'x y z' per line"));
-  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  add_json(app, opt->json);
   return {app, [opt] {
             const std::string& path = opt->shape;
             const bool three_d = io::is_voxel_path(path);

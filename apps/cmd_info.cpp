@@ -12,7 +12,7 @@ Command add_info(CLI::App& root) {
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("info", "Counts and facts about a crease pattern");
   add_pattern(app, opt->file);
-  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  add_json(app, opt->json);
   return {app, [opt] {
             const LoadedPattern loaded = load_pattern(opt->file);
             const nlohmann::json s = pattern_summary(loaded.pattern);

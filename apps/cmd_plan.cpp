@@ -46,11 +46,9 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
   app->add_option("--planner", opt.planner, "OMPL geometric planner by name (RRTConnect, RRT*, PRM, KPIECE1, BiTRRT, …)")
       ->capture_default_str();
   app->add_option("--param", opt.params, "NAME=VALUE: a planner parameter by OMPL's name (repeatable), e.g. range=0.3");
-  app->add_option("--time", opt.time,
-                  "Seconds the search may take: sampling, the Carpenter fallback and the way through flat (not the replay)")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  app->add_option("--seed", opt.seed, "Random seed (same seed, same plan)")->check(CLI::PositiveNumber)->capture_default_str();
+  positive(app->add_option("--time", opt.time,
+                  "Seconds the search may take: sampling, the Carpenter fallback and the way through flat (not the replay)"));
+  positive(app->add_option("--seed", opt.seed, "Random seed (same seed, same plan)"));
   app->add_flag("--no-collision", opt.no_collision, "Closure only (no collision world is built)");
   app->add_option("--search-margin", opt.search_margin,
                   "Constrained spaces: sample only within the box of start and goal widened by this (radians)")
@@ -60,7 +58,7 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
                 "No way through flat when the planner finds none in a quarter of --time: no spherical Carpenter path "
                 "(single vertex), no start -> flat -> goal plan (driving space, folded --start)");
   writes(app->add_option("-o,--output", opt.output, "Output CMML"))->required();
-  app->add_flag("--json", opt.json, "Print one JSON object on stdout");
+  add_json(app, opt.json);
 }
 
 // A CMML file checked against the pattern: its first error ends the command.

@@ -20,19 +20,13 @@ Command add_project(CLI::App& root) {
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("project", "Write the nearest closed configuration to a state");
   add_pattern(app, opt->pattern);
-  reads(app->add_option("--state", opt->state, "CMML whose end state is projected"))->required();
+  add_state(app, opt->state, "projected")->required();
   writes(app->add_option("-o,--output", opt->output, "Output .cmml: one event from flat to the closed state"))->required();
-  app->add_option("--tolerance", opt->projection.tolerance, "Largest loop error accepted, radians")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  app->add_option("--max-iterations", opt->projection.max_iterations, "Iteration limit")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  positive(app->add_option("--tolerance", opt->projection.tolerance, "Largest loop error accepted, radians"));
+  positive(app->add_option("--max-iterations", opt->projection.max_iterations, "Iteration limit"));
   app->add_flag("--free-signs", opt->free_signs, "Let creases change between mountain and valley");
-  app->add_option("--velocity", opt->velocity, "Velocity written into the CMML, degrees per second")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  positive(app->add_option("--velocity", opt->velocity, "Velocity written into the CMML, degrees per second"));
+  add_json(app, opt->json);
   return {app, [opt] {
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
             const geometry::FoldState start = state_from(pattern, opt->state);

@@ -25,24 +25,18 @@ Command add_simulate(CLI::App& root) {
   app->add_option("--model", opt->model, "Actuation: motor (CMML velocities), spring (PMML constants), sync (joints arrive together)")
       ->check(CLI::IsMember({"motor", "spring", "sync"}))
       ->capture_default_str();
-  app->add_option("--time-step", opt->sim.time_step, "Seconds per step")->check(CLI::PositiveNumber)->capture_default_str();
-  app->add_option("--closure-tolerance", opt->sim.closure_tolerance, "Largest loop error accepted, radians")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  positive(app->add_option("--time-step", opt->sim.time_step, "Seconds per step"));
+  positive(app->add_option("--closure-tolerance", opt->sim.closure_tolerance, "Largest loop error accepted, radians"));
   app->add_option("--collision-tolerance", opt->sim.collision.tolerance,
                   "Touching distance, relative to the sheet's bounding-box diagonal")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app->add_flag("--no-collision", opt->no_collision, "Check closure only (no collision world is built)");
-  app->add_option("--max-event-time", opt->sim.max_event_time, "Spring model: seconds an event may take to settle")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  positive(app->add_option("--max-event-time", opt->sim.max_event_time, "Spring model: seconds an event may take to settle"));
   writes(app->add_option("--frames", opt->frames, "Write the trajectory as FOLD file_frames (.fold)"));
-  app->add_option("--max-frames", opt->max_frames, "Frames kept in --frames, evenly thinned")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  positive(app->add_option("--max-frames", opt->max_frames, "Frames kept in --frames, evenly thinned"));
   writes_into(app->add_option("--svg", opt->svg, "Folder for SVG snapshots: each event's end and the first collisions"));
-  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  add_json(app, opt->json);
   return {app, [opt] {
             if (!opt->frames.empty() && !is_kind(opt->frames, FileKind::Fold))
               throw UsageError("--frames needs a .fold file name, not '" + opt->frames + "'");

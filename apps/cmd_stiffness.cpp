@@ -30,15 +30,11 @@ Command add_stiffness(CLI::App& root) {
   CLI::App* app = root.add_subcommand("stiffness", "Static equilibrium of the folded structure under a load case (lumped 6-DOF springs)");
   add_pattern(app, opt->pattern);
   reads(app->add_option("loadcase", opt->load_case, "Load case (.loadcase, see docs/FORMATS.md)"))->required();
-  reads(app->add_option("--state", opt->state, "CMML whose end state is analysed (default: flat)"));
+  add_state(app, opt->state, "analysed (default: flat)");
   app->add_flag("--linear", opt->linear, "Small displacements: one linear solve");
-  app->add_option("--detect-tolerance", opt->tolerance, "Contact detection tolerance, relative to the tile size")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  app->add_option("--max-iterations", opt->solve.max_total_iterations, "Newton iteration limit over all load steps")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  positive(app->add_option("--detect-tolerance", opt->tolerance, "Contact detection tolerance, relative to the tile size"));
+  positive(app->add_option("--max-iterations", opt->solve.max_total_iterations, "Newton iteration limit over all load steps"));
+  add_json(app, opt->json);
   return {app, [opt] {
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
             const geometry::FoldState state = state_from(pattern, opt->state);

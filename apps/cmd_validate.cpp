@@ -102,7 +102,7 @@ Command add_validate(CLI::App& root) {
   reads(app->add_option("files", opt->files, "Files to check (" + io::extensions(io::readable) + ")"))->required();
   reads(app->add_option("--pattern", opt->pattern, "Crease pattern (" + io::extensions(io::reads_patterns) + ") to check CMML files against"));
   app->add_flag("--auto-joints", opt->auto_joints, "Treat an edge shared by two actors without a joint as a joint");
-  app->add_flag("--json", opt->json, "Print one JSON object on stdout");
+  add_json(app, opt->json);
   return {app, [opt] { return run_validate(*opt); }};
 }
 
