@@ -179,6 +179,10 @@ void bind_pattern_files(py::module_& m) {
       },
       py::arg("path"), py::arg("pattern"), py::arg("state") = py::none(), py::arg("joint_ids") = false,
       "Writes the crease pattern as SVG (mountain/valley styled; with `state`, creases coloured by their angle's sign).");
+}
+
+// Any format of io::file_formats(), by extension, as the CLI's PATTERN arguments.
+void bind_any_pattern_file(py::module_& m) {
   m.def(
       "load_pattern", [](const std::string& path) {
         try {
@@ -282,6 +286,7 @@ void bind_other_files(py::module_& m) {
 void bind_io(py::module_& m) {
   bind_sequence(m);
   bind_pattern_files(m);
+  bind_any_pattern_file(m);
   bind_cmml(m);
   bind_other_files(m);
 }
