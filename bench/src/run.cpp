@@ -27,6 +27,7 @@
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/simulation/clearance.hpp"
 #include "foldkit/simulation/simulate.hpp"
+#include "run_scenes.hpp"
 
 namespace foldkit::bench {
 
@@ -82,13 +83,7 @@ PathMetrics measure_path(const BenchScene& scene, const std::vector<FoldState>& 
 
 namespace {
 
-std::string num(double v) {
-  if (!std::isfinite(v)) return "";  // ompl_benchmark_statistics stores an empty value as NULL
-  std::ostringstream s;
-  s.precision(12);
-  s << v;
-  return s.str();
-}
+using run_detail::num;
 
 // OMPL records some run properties only for some runs (the solution's, when there is one); the
 // list is fixed here so that every log of a planner, and so every shard, has the same columns.
@@ -140,48 +135,6 @@ std::string clean(std::string v) {
   return v;
 }
 
-// The planner named `name` for the scene; "X+Carpenter" gives X a quarter of `time`
-// (planners::kSamplerShare) before the single-vertex fallback, as plan() does.
-ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, const PlanSetup& setup,
-                             const std::vector<std::pair<std::string, std::string>>& params, double time);
-
-// The planner of a list entry, "NAME" or "NAME@SPACE" (`setup` is the scene's in that space),
-// named as the entry.
-ob::PlannerPtr entry_planner(const std::string& entry, const BenchScene& scene, const PlanSetup& setup,
-                             const std::vector<std::pair<std::string, std::string>>& params, double time) {
-  ob::PlannerPtr p = bench_planner(planner_and_space(entry).first, scene, setup, params, time);
-  p->setName(entry);
-  return p;
-}
-
-ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, const PlanSetup& setup,
-                             const std::vector<std::pair<std::string, std::string>>& params, double time) {
-  if (const std::string inner = fallback_inner(name); !inner.empty()) {
-    ob::PlannerPtr p = make_planner(inner, setup.si);
-    planners::set_planner_params(*p, inner, params);
-    return planners::with_carpenter_fallback(setup, *scene.pattern, p, time, scene.request.waypoint_step);
-  }
-  if (!is_deterministic_planner(name)) {
-    ob::PlannerPtr p = make_planner(name, setup.si);
-    planners::set_planner_params(*p, name, params);
-    return p;
-  }
-  const PlanSetup* s = &setup;
-  return std::make_shared<DeterministicPlanner>(
-      setup.si, name, deterministic_method(name), *scene.pattern, setup.reader,
-      [s](const FoldState& f, ob::State* out) { return s->write(f, out); }, setup.prefix, scene.request.waypoint_step);
-}
-
-// The fold states of the problem definition's best solution, from the scene's start.
-std::optional<std::vector<FoldState>> solution_states(const PlanSetup& setup, const BenchScene& scene,
-                                                      const ob::ProblemDefinitionPtr& pdef) {
-  if (!pdef->hasSolution()) return std::nullopt;
-  const auto path = std::dynamic_pointer_cast<og::PathGeometric>(pdef->getSolutionPath());
-  if (!path || path->getStateCount() == 0) return std::nullopt;
-  std::string why;
-  return path_waypoints(setup, *path, scene.request, false, &why);
-}
-
 // SimpleSetup::print, which Benchmark writes into every log header, estimates the space's
 // properties by sampling (valid-state probability, motion length, sampling speed): seconds on a
 // constrained space with collision checks, for each Benchmark. The logs keep the settings, the
@@ -196,104 +149,11 @@ class BenchSetup : public og::SimpleSetup {
   }
 };
 
-struct Resolved {
-  const BenchSuite* suite = nullptr;
-  std::vector<std::string> scenes, planners;
-};
-
-Resolved resolve(const BenchOptions& o) {
-  Resolved r;
-  r.suite = &bench_suite(o.suite);
-  r.scenes = o.scenes.empty() ? r.suite->scenes : o.scenes;
-  const auto known = bench_scene_names();
-  for (const auto& s : r.scenes)
-    if (std::find(known.begin(), known.end(), s) == known.end()) make_bench_scene(s, o.seed);  // throws, naming them
-  std::vector<std::string> spaces;  // --space A,B,…: every planner in each, side by side in one log
-  for (std::size_t i = 0, j; i <= o.space.size(); i = j + 1) {
-    j = std::min(o.space.find(',', i), o.space.size());
-    spaces.push_back(o.space.substr(i, j - i));
-  }
-  for (const auto& sp : spaces) planners::parse_space(sp);  // throws, naming the spaces
-  for (const auto& p : o.planners.empty() ? r.suite->planners : o.planners) {
-    if (spaces.size() == 1) r.planners.push_back(canonical_bench_planner(p));
-    for (std::size_t k = 0; spaces.size() > 1 && k < spaces.size(); ++k)
-      r.planners.push_back(canonical_bench_planner(p + "@" + spaces[k]));
-  }
-  if (!(o.time > 0.0) || !std::isfinite(o.time)) throw std::invalid_argument("the time per run must be positive");
-  if (o.runs == 0) throw std::invalid_argument("at least one run per planner");
-  for (const auto& entry : r.planners) {  // before anything is written
-    const std::string p = planner_and_space(entry).first;
-    if (!is_deterministic_planner(p)) planners::check_planner_params(fallback_inner(p).empty() ? p : fallback_inner(p), o.params);
-  }
-  if (o.shards == 0 || o.shard == 0 || o.shard > o.shards)
-    throw std::invalid_argument("--shard " + std::to_string(o.shard) + "/" + std::to_string(o.shards) +
-                                " is not K/N with 1 <= K <= N");
-  return r;
-}
-
-// The scene's space, planner setup and way out of its start; a scene whose way out collides is
-// broken (std::runtime_error), since every built-in scene must be plannable.
-PlanSetup scene_setup(const BenchScene& scene) {
-  PlanSetup setup = make_plan_setup(scene.request, true);
-  if (!setup.blocked.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.blocked);
-  if (!setup.unreachable.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.unreachable);
-  return setup;
-}
-
-// A scene of the run (its goal drawn once) and its setup in each space that the planner entries
-// name, made when first asked for.
-class SceneSpaces {
- public:
-  /// The scene and its setup in one space.
-  struct InSpace {
-    BenchScene scene;
-    PlanSetup setup;
-  };
-  SceneSpaces(const BenchOptions& o, const std::string& name) : base_(make_bench_scene(name, o.seed)) {
-    if (o.space.find(',') == std::string::npos && o.space != "auto") base_.request.space = planners::parse_space(o.space);
-  }
-  const BenchScene& scene() const { return base_; }
-  // In the space of the planner entry ("NAME@SPACE"; the options' or the scene's own without '@').
-  const InSpace& for_entry(const std::string& entry) {
-    const std::string space = planner_and_space(entry).second;
-    auto it = spaces_.find(space);
-    if (it == spaces_.end()) {
-      InSpace in{base_, {}};
-      if (!space.empty()) in.scene.request.space = planners::parse_space(space);
-      in.setup = scene_setup(in.scene);
-      it = spaces_.emplace(space, std::move(in)).first;
-    }
-    return it->second;
-  }
-
- private:
-  BenchScene base_;
-  std::map<std::string, InSpace> spaces_;
-};
-
-// "X+Carpenter" needs each scene in the single-vertex space (the fallback is Carpenter's rule on
-// the sphere): checked on every scene before anything is written, so that a run never stops
-// half-way with some logs written.
-void check_fallback_entries(const BenchOptions& o, const Resolved& r) {
-  for (const auto& scene : r.scenes) {
-    std::optional<SceneSpaces> spaces;
-    for (const auto& entry : r.planners) {
-      if (fallback_inner(planner_and_space(entry).first).empty()) continue;
-      if (!spaces) spaces.emplace(o, scene);
-      if (!spaces->for_entry(entry).setup.single_vertex)
-        throw std::invalid_argument("scene " + scene + ": " + entry +
-                                    " needs the single-vertex space (the fallback is Carpenter's rule on the sphere)");
-    }
-  }
-}
-
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 }  // namespace
 
 namespace {
+
+using namespace run_detail;  // NOLINT: the scenes, planners and helpers every run shares
 
 // Our per-run properties, added to the run's row after each run (OMPL's post-run event).
 void add_path_properties(const PlanSetup& setup, const BenchScene& scene, const ob::PlannerPtr& planner,
@@ -467,76 +327,6 @@ std::vector<BenchSceneResult> run_bench(const BenchOptions& o) {
   std::vector<BenchSceneResult> results;
   for (std::size_t si = 0; si < res.scenes.size(); ++si) results.push_back(SceneRun(o, res, work, si, t0, done).run());
   return results;
-}
-
-std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::vector<double>& limits) {
-  const Resolved res = resolve(o);
-  check_fallback_entries(o, res);
-  if (limits.empty()) throw std::invalid_argument("no time limits");
-  for (double t : limits)
-    if (!(t > 0.0) || !std::isfinite(t)) throw std::invalid_argument("time limits must be positive");
-  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-  ompl::RNG::setSeed(std::max(1u, o.seed));
-  const auto t0 = std::chrono::steady_clock::now();
-  const std::size_t total = res.scenes.size() * res.planners.size() * limits.size() * o.runs;
-  std::size_t done = 0;
-  std::vector<ErrorVsTimeRow> rows;
-  for (const auto& scene_name : res.scenes) {
-    SceneSpaces scenes(o, scene_name);
-    for (const auto& name : res.planners) {
-      const BenchScene& scene = scenes.for_entry(name).scene;
-      const PlanSetup& setup = scenes.for_entry(name).setup;
-      const double start_distance = (setup.start.angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
-      for (double limit : limits)
-        for (unsigned int run = 0; run < o.runs; ++run) {
-          og::SimpleSetup ss(setup.si);
-          setup.set_start_and_goal(ss, scene.request.goal);
-          ss.setPlanner(entry_planner(name, scene, setup, o.params, limit));
-          ss.setup();
-          const auto t1 = std::chrono::steady_clock::now();
-          setup.solve(ss, limit);
-          ErrorVsTimeRow row;
-          row.scene = scene.name;
-          row.planner = name;
-          row.time_limit = limit;
-          row.time = since(t1);
-          row.run = run;
-          const auto pdef = ss.getProblemDefinition();
-          const auto states = solution_states(setup, scene, pdef);
-          row.solution = !pdef->hasSolution() ? "none" : pdef->hasApproximateSolution() ? "approximate" : "exact";
-          if (states) {
-            const geometry::ClosureSystem& system = *setup.system;
-            row.goal_distance = (states->back().angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
-            row.final_closure_error = system.max_error(states->back());
-            for (std::size_t i = 0; i < states->size(); ++i) {
-              row.max_closure_error = std::max(row.max_closure_error, system.max_error((*states)[i]));
-              if (i > 0) row.path_length += ((*states)[i].angles - (*states)[i - 1].angles).norm();
-            }
-          } else {
-            // No solution (or one that jumps): nothing gained; the error stays the start's.
-            row.goal_distance = start_distance;
-            row.final_closure_error = row.max_closure_error = row.path_length = std::numeric_limits<double>::quiet_NaN();
-            if (pdef->hasSolution()) row.solution = "jumps";
-          }
-          rows.push_back(row);
-          ++done;
-          if (o.progress) o.progress({done, total, scene.name, name, since(t0), false});
-        }
-    }
-    if (o.progress) o.progress({done, total, scene_name, "", since(t0), true});
-  }
-  return rows;
-}
-
-std::string error_vs_time_csv(const std::vector<ErrorVsTimeRow>& rows) {
-  std::ostringstream out;
-  out << "scene,planner,time_limit_s,run,solution,time_s,goal_distance_rad,final_closure_error_rad,"
-         "max_closure_error_rad,path_length_rad\n";
-  for (const auto& r : rows)
-    out << r.scene << ',' << r.planner << ',' << num(r.time_limit) << ',' << r.run << ',' << r.solution << ','
-        << num(r.time) << ',' << num(r.goal_distance) << ',' << num(r.final_closure_error) << ','
-        << num(r.max_closure_error) << ',' << num(r.path_length) << '\n';
-  return out.str();
 }
 
 }  // namespace foldkit::bench
