@@ -16,8 +16,6 @@ using State = SingleVertexStateSpace::StateType;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 geometry::FoldState& scratch(std::size_t n) {
   thread_local geometry::FoldState s;
   if (static_cast<std::size_t>(s.angles.size()) != n) s.angles.resize(static_cast<Eigen::Index>(n));
@@ -43,23 +41,6 @@ class ActiveProjection : public ob::ProjectionEvaluator {
 };
 
 }  // namespace
-
-AngleBounds AngleBounds::of(const geometry::CreasePattern& pattern, bool use_assignment) {
-  const auto n = static_cast<Eigen::Index>(pattern.joints().size());
-  AngleBounds b{Eigen::VectorXd::Constant(n, -kPi), Eigen::VectorXd::Constant(n, kPi)};
-  if (use_assignment)
-    for (Eigen::Index j = 0; j < n; ++j) {
-      const auto a = pattern.joints()[static_cast<std::size_t>(j)].assignment;
-      if (a == geometry::Assignment::Mountain) b.lower[j] = 0.0;
-      if (a == geometry::Assignment::Valley) b.upper[j] = 0.0;
-    }
-  return b;
-}
-
-bool AngleBounds::contains(const geometry::FoldState& state, double slack) const {
-  return state.angles.size() == lower.size() && (state.angles.array() >= lower.array() - slack).all() &&
-         (state.angles.array() <= upper.array() + slack).all();
-}
 
 SingleVertexStateSpace::SingleVertexStateSpace(std::shared_ptr<const SingleVertexChain> chain, AngleBounds bounds)
     : chain_(std::move(chain)), bounds_(std::move(bounds)), n_(chain_->pattern().joints().size()) {

@@ -7,6 +7,7 @@
 #include <ompl/base/spaces/constraint/ConstrainedStateSpace.h>
 
 #include "foldkit/statespaces/driving_space.hpp"
+#include "foldkit/statespaces/single_vertex_space.hpp"
 
 namespace foldkit::statespaces {
 

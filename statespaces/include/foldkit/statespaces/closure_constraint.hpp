@@ -12,7 +12,7 @@
 #include <ompl/base/spaces/constraint/ConstrainedStateSpace.h>
 
 #include "foldkit/geometry/closure.hpp"
-#include "foldkit/statespaces/single_vertex_space.hpp"
+#include "foldkit/statespaces/angle_bounds.hpp"
 
 /// OMPL state spaces, samplers and validity checking for planning fold motions on the closure
 /// manifold: the exact single-vertex space, the constrained spaces on ClosureConstraint, and the

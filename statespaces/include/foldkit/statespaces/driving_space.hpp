@@ -11,7 +11,7 @@
 #include <ompl/base/StateSpace.h>
 
 #include "foldkit/geometry/driving_chart.hpp"
-#include "foldkit/statespaces/single_vertex_space.hpp"
+#include "foldkit/statespaces/angle_bounds.hpp"
 
 namespace foldkit::statespaces {
 

@@ -1,7 +1,6 @@
 #pragma once
 /// @file
-/// The exact OMPL state space of a single interior vertex, its sampler, and per-joint angle
-/// bounds.
+/// The exact OMPL state space of a single interior vertex and its sampler.
 #include <memory>
 #include <vector>
 
@@ -9,20 +8,10 @@
 #include <ompl/base/StateSpace.h>
 
 #include "foldkit/geometry/fold_state.hpp"
+#include "foldkit/statespaces/angle_bounds.hpp"
 #include "foldkit/statespaces/single_vertex_chain.hpp"
 
 namespace foldkit::statespaces {
-
-/// Per-joint angle bounds (radians): [−π, π], narrowed to [0, π] for a mountain and [−π, 0] for a
-/// valley when `use_assignment` and the pattern assigns the crease.
-struct AngleBounds {
-  Eigen::VectorXd lower,  ///< lower bound of each joint, radians
-      upper;              ///< upper bound of each joint, radians
-  /// The bounds of `pattern`'s joints, narrowed by their assignments when `use_assignment`.
-  static AngleBounds of(const geometry::CreasePattern& pattern, bool use_assignment);
-  /// Whether `state` has one angle per joint, each within its bounds widened by `slack` (radians).
-  bool contains(const geometry::FoldState& state, double slack = 1e-12) const;
-};
 
 /// The exact, (n − 3)-dimensional space of a single vertex (docs/PLANNING.md): a state holds the
 /// full angle vector (always closed, to rounding) and its branch. Distance: Euclidean over the

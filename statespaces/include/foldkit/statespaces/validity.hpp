@@ -17,13 +17,14 @@
 #include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/simulation/collision_world.hpp"
-#include "foldkit/statespaces/single_vertex_space.hpp"
+#include "foldkit/statespaces/angle_bounds.hpp"
 
 namespace foldkit::statespaces {
 
 /// Reads the fold angles of an OMPL state of some space into its second argument; false when
 /// the state holds none (a single-vertex state without a root).
 using StateReader = std::function<bool(const ompl::base::State*, geometry::FoldState&)>;
+class SingleVertexStateSpace;
 /// The reader of SingleVertexStateSpace states: false for a state that is not closed.
 StateReader single_vertex_reader(std::shared_ptr<const SingleVertexStateSpace> space);
 class DrivingStateSpace;
