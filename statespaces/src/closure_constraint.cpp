@@ -179,4 +179,11 @@ geometry::FoldState to_fold_state(const ob::ConstrainedStateSpace::StateType* st
   return geometry::FoldState{Eigen::VectorXd(*state)};
 }
 
+StateReader constrained_reader() {
+  return [](const ompl::base::State* state, geometry::FoldState& out) {
+    out.angles = *state->as<ompl::base::ConstrainedStateSpace::StateType>();
+    return true;
+  };
+}
+
 }  // namespace foldkit::statespaces

@@ -357,4 +357,6 @@ void DrivingSampler::sampleGaussian(ob::State* state, const ob::State* mean, dou
   if (!ok) space_->copyState(state, mean);
 }
 
+StateReader driving_reader(std::shared_ptr<const DrivingStateSpace> space) { return closed_angles_reader(std::move(space)); }
+
 }  // namespace foldkit::statespaces

@@ -312,4 +312,8 @@ void SingleVertexSampler::sampleGaussian(ob::State* state, const ob::State* mean
   sv_->copyState(state, mean);
 }
 
+StateReader single_vertex_reader(std::shared_ptr<const SingleVertexStateSpace> space) {
+  return closed_angles_reader(std::move(space));
+}
+
 }  // namespace foldkit::statespaces

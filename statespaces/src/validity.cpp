@@ -4,42 +4,11 @@
 #include <utility>
 
 #include <ompl/base/SpaceInformation.h>
-#include <ompl/base/spaces/constraint/ConstrainedStateSpace.h>
 
-#include "foldkit/statespaces/driving_space.hpp"
-#include "foldkit/statespaces/single_vertex_space.hpp"
 
 namespace foldkit::statespaces {
 
 namespace ob = ompl::base;
-
-namespace {
-
-// Both exact spaces hold every angle of a state and whether it closes.
-template <class Space>
-StateReader closed_angles_reader(std::shared_ptr<const Space> space) {
-  return [space](const ob::State* state, geometry::FoldState& out) {
-    const auto* s = state->as<typename Space::StateType>();
-    if (!s->closed) return false;
-    out.angles = Eigen::Map<const Eigen::VectorXd>(s->angles, static_cast<Eigen::Index>(space->joints()));
-    return true;
-  };
-}
-
-}  // namespace
-
-StateReader driving_reader(std::shared_ptr<const DrivingStateSpace> space) { return closed_angles_reader(std::move(space)); }
-
-StateReader single_vertex_reader(std::shared_ptr<const SingleVertexStateSpace> space) {
-  return closed_angles_reader(std::move(space));
-}
-
-StateReader constrained_reader() {
-  return [](const ob::State* state, geometry::FoldState& out) {
-    out.angles = *state->as<ob::ConstrainedStateSpace::StateType>();
-    return true;
-  };
-}
 
 FoldValidity::FoldValidity(const geometry::CreasePattern& p, AngleBounds b, bool check_collisions,
                            double tolerance, const simulation::CollisionOptions& collision)

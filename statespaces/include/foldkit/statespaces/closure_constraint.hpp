@@ -13,6 +13,7 @@
 
 #include "foldkit/geometry/closure.hpp"
 #include "foldkit/statespaces/angle_bounds.hpp"
+#include "foldkit/statespaces/state_reader.hpp"
 
 /// OMPL state spaces, samplers and validity checking for planning fold motions on the closure
 /// manifold: the exact single-vertex space, the constrained spaces on ClosureConstraint, and the
@@ -114,5 +115,8 @@ ConstrainedSetup make_constrained(const geometry::CreasePattern& pattern, const 
 
 /// The fold angles held by a state of a constrained space.
 geometry::FoldState to_fold_state(const ompl::base::ConstrainedStateSpace::StateType* state);
+
+/// The reader of states of a constrained space (ompl::base::ConstrainedStateSpace); never false.
+StateReader constrained_reader();
 
 }  // namespace foldkit::statespaces

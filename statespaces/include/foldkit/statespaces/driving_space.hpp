@@ -12,6 +12,7 @@
 
 #include "foldkit/geometry/driving_chart.hpp"
 #include "foldkit/statespaces/angle_bounds.hpp"
+#include "foldkit/statespaces/state_reader.hpp"
 
 namespace foldkit::statespaces {
 
@@ -190,5 +191,8 @@ class DrivingSampler : public ompl::base::StateSampler {
   bool draw_about(ompl::base::State* state, const ompl::base::State* about, Draw draw);
   const DrivingStateSpace* space_;
 };
+
+/// The reader of DrivingStateSpace states: false for a state that is not closed.
+StateReader driving_reader(std::shared_ptr<const DrivingStateSpace> space);
 
 }  // namespace foldkit::statespaces

@@ -9,6 +9,7 @@
 
 #include "foldkit/geometry/fold_state.hpp"
 #include "foldkit/statespaces/angle_bounds.hpp"
+#include "foldkit/statespaces/state_reader.hpp"
 #include "foldkit/statespaces/single_vertex_chain.hpp"
 
 namespace foldkit::statespaces {
@@ -138,5 +139,8 @@ class SingleVertexSampler : public ompl::base::StateSampler {
   const SingleVertexStateSpace* sv_;
   double meeting_fraction_ = 0.2;
 };
+
+/// The reader of SingleVertexStateSpace states: false for a state that is not closed.
+StateReader single_vertex_reader(std::shared_ptr<const SingleVertexStateSpace> space);
 
 }  // namespace foldkit::statespaces

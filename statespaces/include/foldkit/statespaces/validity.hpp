@@ -18,20 +18,9 @@
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/simulation/collision_world.hpp"
 #include "foldkit/statespaces/angle_bounds.hpp"
+#include "foldkit/statespaces/state_reader.hpp"
 
 namespace foldkit::statespaces {
-
-/// Reads the fold angles of an OMPL state of some space into its second argument; false when
-/// the state holds none (a single-vertex state without a root).
-using StateReader = std::function<bool(const ompl::base::State*, geometry::FoldState&)>;
-class SingleVertexStateSpace;
-/// The reader of SingleVertexStateSpace states: false for a state that is not closed.
-StateReader single_vertex_reader(std::shared_ptr<const SingleVertexStateSpace> space);
-class DrivingStateSpace;
-/// The reader of DrivingStateSpace states: false for a state that is not closed.
-StateReader driving_reader(std::shared_ptr<const DrivingStateSpace> space);
-/// The reader of states of a constrained space (ompl::base::ConstrainedStateSpace); never false.
-StateReader constrained_reader();
 
 /// What a valid state is: finite angles, every angle within its bounds (to 1e-9 rad), every loop
 /// closed within `closure_tolerance` (the simulator's, 1e-3 rad), and — when collisions are
