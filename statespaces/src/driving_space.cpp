@@ -71,19 +71,16 @@ Eigen::VectorXd angles_of(const State* s, std::size_t n) {
 DrivingStateSpace::DrivingStateSpace(std::shared_ptr<const geometry::ClosureSystem> system, geometry::DrivingChart chart,
                                      AngleBounds bounds, Eigen::VectorXd driving_lower, Eigen::VectorXd driving_upper,
                                      geometry::PassiveSolverOptions options)
-    : system_(std::move(system)),
+    : ClosedAnglesSpace(static_cast<std::size_t>(system->cols()), std::move(bounds)),
+      system_(std::move(system)),
       chart_(std::move(chart)),
-      bounds_(std::move(bounds)),
       driving_lower_(std::move(driving_lower)),
       driving_upper_(std::move(driving_upper)),
-      options_(options),
-      n_(static_cast<std::size_t>(system_->cols())) {
+      options_(options) {
   setName("Driving" + getName());
   type_ = ob::STATE_SPACE_TYPE_COUNT + 72;
   const auto d = static_cast<Eigen::Index>(chart_.driving.size());
   if (d == 0) throw ompl::Exception("DrivingStateSpace: the chart has no driving crease (nothing moves)");
-  if (static_cast<std::size_t>(bounds_.lower.size()) != n_ || static_cast<std::size_t>(bounds_.upper.size()) != n_)
-    throw ompl::Exception("DrivingStateSpace: bounds do not hold one range per joint");
   if (driving_lower_.size() != d || driving_upper_.size() != d || (driving_lower_.array() > driving_upper_.array()).any())
     throw ompl::Exception("DrivingStateSpace: the driving bounds do not hold one range per driving crease");
   focus_lower_ = driving_lower_;
@@ -199,22 +196,9 @@ void DrivingStateSpace::enforceBounds(ob::State* state) const {
 }
 
 bool DrivingStateSpace::satisfiesBounds(const ob::State* state) const {
-  const auto* s = state->as<State>();
-  if (!s->closed) return false;
-  for (std::size_t j = 0; j < n_; ++j) {
-    const auto k = static_cast<Eigen::Index>(j);
-    if (s->angles[j] < bounds_.lower[k] - 1e-12 || s->angles[j] > bounds_.upper[k] + 1e-12) return false;
-  }
+  if (!ClosedAnglesSpace::satisfiesBounds(state)) return false;
   const Eigen::VectorXd d = driving_of(state);
   return (d.array() >= driving_lower_.array() - 1e-12).all() && (d.array() <= driving_upper_.array() + 1e-12).all();
-}
-
-void DrivingStateSpace::copyState(ob::State* destination, const ob::State* source) const {
-  if (destination == source) return;
-  auto* d = destination->as<State>();
-  const auto* s = source->as<State>();
-  std::copy(s->angles, s->angles + n_, d->angles);
-  d->closed = s->closed;
 }
 
 double DrivingStateSpace::distance(const ob::State* state1, const ob::State* state2) const {
@@ -267,40 +251,13 @@ void DrivingStateSpace::interpolate(const ob::State* from, const ob::State* to, 
   w->points.emplace_back(t, std::move(out));
 }
 
-unsigned int DrivingStateSpace::getSerializationLength() const { return static_cast<unsigned int>(n_ * sizeof(double) + 1); }
-
-void DrivingStateSpace::serialize(void* serialization, const ob::State* state) const {
-  const auto* s = state->as<State>();
-  auto* out = static_cast<char*>(serialization);
-  std::memcpy(out, s->angles, n_ * sizeof(double));
-  out[n_ * sizeof(double)] = s->closed ? 1 : 0;
-}
-
-void DrivingStateSpace::deserialize(ob::State* state, const void* serialization) const {
-  auto* s = state->as<State>();
-  const auto* in = static_cast<const char*>(serialization);
-  std::memcpy(s->angles, in, n_ * sizeof(double));
-  s->closed = in[n_ * sizeof(double)] != 0;
-}
-
-ob::StateSamplerPtr DrivingStateSpace::allocDefaultStateSampler() const { return std::make_shared<DrivingSampler>(this); }
-
-ob::State* DrivingStateSpace::allocState() const {
-  auto* s = new State;
-  s->angles = new double[n_]();
+ClosedAnglesState* DrivingStateSpace::new_state() const {
+  auto* s = new StateType;
   s->closed = false;
   return s;
 }
 
-void DrivingStateSpace::freeState(ob::State* state) const {
-  auto* s = state->as<State>();
-  delete[] s->angles;
-  delete s;
-}
-
-double* DrivingStateSpace::getValueAddressAtIndex(ob::State* state, unsigned int index) const {
-  return index < n_ ? state->as<State>()->angles + index : nullptr;
-}
+ob::StateSamplerPtr DrivingStateSpace::allocDefaultStateSampler() const { return std::make_shared<DrivingSampler>(this); }
 
 void DrivingStateSpace::printState(const ob::State* state, std::ostream& out) const {
   const auto* s = state->as<State>();

@@ -43,11 +43,21 @@ class ActiveProjection : public ob::ProjectionEvaluator {
 }  // namespace
 
 SingleVertexStateSpace::SingleVertexStateSpace(std::shared_ptr<const SingleVertexChain> chain, AngleBounds bounds)
-    : chain_(std::move(chain)), bounds_(std::move(bounds)), n_(chain_->pattern().joints().size()) {
+    : ClosedAnglesSpace(chain->pattern().joints().size(), std::move(bounds)), chain_(std::move(chain)) {
   setName("SingleVertex" + getName());
   type_ = ob::STATE_SPACE_TYPE_COUNT + 71;
-  if (static_cast<std::size_t>(bounds_.lower.size()) != n_ || static_cast<std::size_t>(bounds_.upper.size()) != n_)
-    throw ompl::Exception("SingleVertexStateSpace: bounds do not hold one range per joint");
+}
+
+void SingleVertexStateSpace::write_extra(const ClosedAnglesState& state, char* out) const {
+  std::memcpy(out, &static_cast<const StateType&>(state).branch, sizeof(int));
+}
+
+void SingleVertexStateSpace::read_extra(const char* in, ClosedAnglesState& state) const {
+  std::memcpy(&static_cast<StateType&>(state).branch, in, sizeof(int));
+}
+
+void SingleVertexStateSpace::copy_extra(const ClosedAnglesState& from, ClosedAnglesState& to) const {
+  static_cast<StateType&>(to).branch = static_cast<const StateType&>(from).branch;
 }
 
 void SingleVertexStateSpace::complete(StateType* s, int branch) const {
@@ -110,24 +120,6 @@ void SingleVertexStateSpace::enforceBounds(ob::State* state) const {
   complete(s, s->branch);
 }
 
-bool SingleVertexStateSpace::satisfiesBounds(const ob::State* state) const {
-  const auto* s = state->as<StateType>();
-  if (!s->closed) return false;
-  for (std::size_t j = 0; j < n_; ++j) {
-    const auto k = static_cast<Eigen::Index>(j);
-    if (s->angles[j] < bounds_.lower[k] - 1e-12 || s->angles[j] > bounds_.upper[k] + 1e-12) return false;
-  }
-  return true;
-}
-
-void SingleVertexStateSpace::copyState(ob::State* destination, const ob::State* source) const {
-  auto* d = destination->as<StateType>();
-  const auto* s = source->as<StateType>();
-  std::copy(s->angles, s->angles + n_, d->angles);
-  d->branch = s->branch;
-  d->closed = s->closed;
-}
-
 double SingleVertexStateSpace::distance(const ob::State* state1, const ob::State* state2) const {
   // Euclidean over the active angles and the middle passive one: coordinates that determine the
   // state (the middle passive angle carries the branch) and that never wrap, so that the
@@ -177,44 +169,8 @@ void SingleVertexStateSpace::interpolate(const ob::State* from, const ob::State*
   complete(s, branch);
 }
 
-unsigned int SingleVertexStateSpace::getSerializationLength() const {
-  return static_cast<unsigned int>(n_ * sizeof(double) + sizeof(int) + 1);
-}
-
-void SingleVertexStateSpace::serialize(void* serialization, const ob::State* state) const {
-  const auto* s = state->as<StateType>();
-  auto* out = static_cast<char*>(serialization);
-  std::memcpy(out, s->angles, n_ * sizeof(double));
-  std::memcpy(out + n_ * sizeof(double), &s->branch, sizeof(int));
-  out[n_ * sizeof(double) + sizeof(int)] = s->closed ? 1 : 0;
-}
-
-void SingleVertexStateSpace::deserialize(ob::State* state, const void* serialization) const {
-  auto* s = state->as<StateType>();
-  const auto* in = static_cast<const char*>(serialization);
-  std::memcpy(s->angles, in, n_ * sizeof(double));
-  std::memcpy(&s->branch, in + n_ * sizeof(double), sizeof(int));
-  s->closed = in[n_ * sizeof(double) + sizeof(int)] != 0;
-}
-
 ob::StateSamplerPtr SingleVertexStateSpace::allocDefaultStateSampler() const {
   return std::make_shared<SingleVertexSampler>(this);
-}
-
-ob::State* SingleVertexStateSpace::allocState() const {
-  auto* s = new StateType;
-  s->angles = new double[n_]();
-  return s;
-}
-
-void SingleVertexStateSpace::freeState(ob::State* state) const {
-  auto* s = state->as<StateType>();
-  delete[] s->angles;
-  delete s;
-}
-
-double* SingleVertexStateSpace::getValueAddressAtIndex(ob::State* state, unsigned int index) const {
-  return index < n_ ? state->as<StateType>()->angles + index : nullptr;
 }
 
 void SingleVertexStateSpace::printState(const ob::State* state, std::ostream& out) const {

@@ -12,6 +12,7 @@
 
 #include "foldkit/geometry/driving_chart.hpp"
 #include "foldkit/statespaces/angle_bounds.hpp"
+#include "foldkit/statespaces/closed_angles_space.hpp"
 #include "foldkit/statespaces/state_reader.hpp"
 
 namespace foldkit::statespaces {
@@ -29,14 +30,11 @@ namespace foldkit::statespaces {
 /// (the motion validator's, PathGeometric::interpolate's) continue from the last point computed,
 /// so checking a motion costs one continuation, not one per check. Safe for several threads
 /// (each takes a solver of its own from a pool).
-class DrivingStateSpace : public ompl::base::StateSpace {
+class DrivingStateSpace : public ClosedAnglesSpace {
  public:
-  /// A state of the space: the full angle vector and whether it closes.
-  class StateType : public ompl::base::State {
-   public:
-    double* angles = nullptr;  ///< one per joint of the pattern, radians (owned by the space)
-    bool closed = true;        ///< false when the continuation did not reach the driving angles
-  };
+  /// A state of the space: the full angle vector and whether it closes (false when the
+  /// continuation did not reach the driving angles).
+  using StateType = ClosedAnglesState;
 
   /// The space of `system` in `chart`'s coordinates.
   /// @param system          the closure equations (kept; must outlive the space)
@@ -56,14 +54,10 @@ class DrivingStateSpace : public ompl::base::StateSpace {
   const geometry::DrivingChart& chart() const { return chart_; }
   /// The closure equations.
   const geometry::ClosureSystem& system() const { return *system_; }
-  /// The per-joint angle bounds.
-  const AngleBounds& bounds() const { return bounds_; }
   /// Sampling bounds of the driving creases, chart order, radians.
   const Eigen::VectorXd& driving_lower() const { return driving_lower_; }
   /// See driving_lower().
   const Eigen::VectorXd& driving_upper() const { return driving_upper_; }
-  /// Number of joints of the pattern: the length of StateType::angles.
-  std::size_t joints() const { return n_; }
 
   /// Makes a share of the uniform samples fall in a smaller box of driving angles (clamped into
   /// the driving bounds), e.g. around the plan's start and goal: uniform samples of a box of many
@@ -115,8 +109,6 @@ class DrivingStateSpace : public ompl::base::StateSpace {
   /// Whether the state is closed, every angle within its bounds and every driving angle within
   /// the driving bounds (to 1e-12 rad).
   bool satisfiesBounds(const ompl::base::State* state) const override;
-  /// Copies the angles and `closed`.
-  void copyState(ompl::base::State* destination, const ompl::base::State* source) const override;
   /// Euclidean distance over the driving angles, radians.
   double distance(const ompl::base::State* state1, const ompl::base::State* state2) const override;
   /// Whether both are closed or both not, with every angle within 1e-12 rad.
@@ -126,25 +118,17 @@ class DrivingStateSpace : public ompl::base::StateSpace {
   /// itself at t ≥ 1. `state` may alias either argument.
   void interpolate(const ompl::base::State* from, const ompl::base::State* to, double t,
                    ompl::base::State* state) const override;
-  /// Bytes serialize() writes: the angles and `closed`.
-  unsigned int getSerializationLength() const override;
-  /// Writes the state (the machine's own representation, as RealVectorStateSpace does).
-  void serialize(void* serialization, const ompl::base::State* state) const override;
-  /// Reads a state serialize() wrote.
-  void deserialize(ompl::base::State* state, const void* serialization) const override;
   /// A DrivingSampler.
   ompl::base::StateSamplerPtr allocDefaultStateSampler() const override;
-  /// A new state: all angles 0, not closed.
-  ompl::base::State* allocState() const override;
-  /// Frees a state of allocState().
-  void freeState(ompl::base::State* state) const override;
-  /// The address of angle `index` (a joint index), or null past the last joint.
-  double* getValueAddressAtIndex(ompl::base::State* state, unsigned int index) const override;
   /// The driving angles, and "(not closed)" for a state that is not.
   void printState(const ompl::base::State* state, std::ostream& out) const override;
   /// Registers the default projection (for planners that grid the space): the first two driving
   /// angles, cells of 0.1 rad.
   void registerProjections() override;
+
+ protected:
+  /// A StateType, not closed until it is set.
+  ClosedAnglesState* new_state() const override;
 
  private:
   struct Worker;  // a solver and its interpolation memory, one per thread at a time
@@ -156,11 +140,9 @@ class DrivingStateSpace : public ompl::base::StateSpace {
 
   std::shared_ptr<const geometry::ClosureSystem> system_;
   geometry::DrivingChart chart_;
-  AngleBounds bounds_;
   Eigen::VectorXd driving_lower_, driving_upper_, focus_lower_, focus_upper_;
   double focus_share_ = 0.0;
   geometry::PassiveSolverOptions options_;
-  std::size_t n_;
   std::vector<geometry::FoldState> anchors_;
   std::vector<Eigen::VectorXd> anchor_driving_;
   mutable std::mutex mutex_;  // guards pool_

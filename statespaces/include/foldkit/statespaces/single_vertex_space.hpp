@@ -9,6 +9,7 @@
 
 #include "foldkit/geometry/fold_state.hpp"
 #include "foldkit/statespaces/angle_bounds.hpp"
+#include "foldkit/statespaces/closed_angles_space.hpp"
 #include "foldkit/statespaces/state_reader.hpp"
 #include "foldkit/statespaces/single_vertex_chain.hpp"
 
@@ -21,14 +22,13 @@ namespace foldkit::statespaces {
 /// branches that do not meet at either end there is no such segment, and the states in between are
 /// not closed). A state for which
 /// no root exists is marked not `closed`; the validity checker rejects it.
-class SingleVertexStateSpace : public ompl::base::StateSpace {
+class SingleVertexStateSpace : public ClosedAnglesSpace {
  public:
-  /// A state of the space: the full angle vector and its branch.
-  class StateType : public ompl::base::State {
+  /// A state of the space: the full angle vector (`closed` false when no root exists for the
+  /// active angles) and its branch.
+  class StateType : public ClosedAnglesState {
    public:
-    double* angles = nullptr;  ///< one per joint of the pattern, radians (owned by the space)
-    int branch = 1;            ///< +1 or −1: the sign of the middle passive crease
-    bool closed = true;        ///< false when no root exists for the active angles
+    int branch = 1;  ///< +1 or −1: the sign of the middle passive crease
   };
 
   /// The space of `chain`, sampled and checked within `bounds`.
@@ -37,10 +37,6 @@ class SingleVertexStateSpace : public ompl::base::StateSpace {
 
   /// The chain whose configurations the space holds.
   const SingleVertexChain& chain() const { return *chain_; }
-  /// The per-joint angle bounds.
-  const AngleBounds& bounds() const { return bounds_; }
-  /// Number of joints of the pattern: the length of StateType::angles.
-  std::size_t joints() const { return n_; }
   /// Where the branches count as meeting: |middle passive angle| below this (radians).
   double meeting_tolerance() const { return meeting_tolerance_; }
   /// Sets meeting_tolerance() (radians; default 1e-3).
@@ -66,10 +62,6 @@ class SingleVertexStateSpace : public ompl::base::StateSpace {
   double getMeasure() const override;
   /// Clamps the active angles into their bounds and re-solves the passives on the state's branch.
   void enforceBounds(ompl::base::State* state) const override;
-  /// Whether the state is closed and every angle within its bounds (to 1e-12 rad).
-  bool satisfiesBounds(const ompl::base::State* state) const override;
-  /// Copies angles, branch and `closed`.
-  void copyState(ompl::base::State* destination, const ompl::base::State* source) const override;
   /// Euclidean distance over the active angles and the middle passive one, radians: coordinates
   /// that determine the state and never wrap, so that the distance to a target shrinks to zero
   /// along the interpolation.
@@ -79,33 +71,29 @@ class SingleVertexStateSpace : public ompl::base::StateSpace {
   /// The state a fraction `t` of the way from `from` to `to`, as described for the class.
   void interpolate(const ompl::base::State* from, const ompl::base::State* to, double t,
                    ompl::base::State* state) const override;
-  /// Bytes serialize() writes: the angles, the branch and `closed`.
-  unsigned int getSerializationLength() const override;
-  /// Writes the state to `serialization` (getSerializationLength() bytes; the machine's own
-  /// representation, as OMPL's RealVectorStateSpace does), for PlannerDataStorage and
-  /// experience-based planners.
-  void serialize(void* serialization, const ompl::base::State* state) const override;
-  /// Reads a state serialize() wrote.
-  void deserialize(ompl::base::State* state, const void* serialization) const override;
   /// A SingleVertexSampler.
   ompl::base::StateSamplerPtr allocDefaultStateSampler() const override;
-  /// A new state, all angles 0, branch +1, closed.
-  ompl::base::State* allocState() const override;
-  /// Frees a state of allocState().
-  void freeState(ompl::base::State* state) const override;
-  /// The address of angle `index` (a joint index), or null past the last joint.
-  double* getValueAddressAtIndex(ompl::base::State* state, unsigned int index) const override;
   /// The angles, the branch, and "(no root)" for a state that is not closed.
   void printState(const ompl::base::State* state, std::ostream& out) const override;
   /// Registers the default projection (for planners that grid the space): the first two active
   /// angles, cells of 0.2 rad.
   void registerProjections() override;
 
+ protected:
+  /// A StateType.
+  ClosedAnglesState* new_state() const override { return new StateType; }
+  /// The branch, an int.
+  std::size_t extra_bytes() const override { return sizeof(int); }
+  /// Writes the branch.
+  void write_extra(const ClosedAnglesState& state, char* out) const override;
+  /// Reads the branch.
+  void read_extra(const char* in, ClosedAnglesState& state) const override;
+  /// Copies the branch.
+  void copy_extra(const ClosedAnglesState& from, ClosedAnglesState& to) const override;
+
  private:
   void set_open(StateType* state, int branch) const;  // no root: canonical passives
   std::shared_ptr<const SingleVertexChain> chain_;
-  AngleBounds bounds_;
-  std::size_t n_;
   double meeting_tolerance_ = 1e-3;
 };
 
