@@ -22,9 +22,7 @@
 #include "foldkit/bench/deterministic_planner.hpp"
 #include "foldkit/bench/log.hpp"
 #include "foldkit/bench/run.hpp"
-#include "foldkit/planners/carpenter_fallback.hpp"
 #include "foldkit/planners/plan_setup.hpp"
-#include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/simulation/clearance.hpp"
 #include "foldkit/simulation/simulate.hpp"
 #include "run_scenes.hpp"
@@ -32,9 +30,6 @@
 namespace foldkit::bench {
 
 using planners::PlanSetup;
-using planners::make_plan_setup;
-using planners::make_planner;
-using planners::path_waypoints;
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
