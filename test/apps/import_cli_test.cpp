@@ -62,7 +62,8 @@ TEST(ImportCli, RigidlyFoldableDrawingsFoldTowardTheirTargetsAndTheOthersAreSaid
   // All the way: the square base and the waterbomb base reach their flat-folded targets, also
   // given as the goal CMML that convert writes from the same file. The plus-shaped simple vertex
   // folds one line at a time (its sectors are all 90 degrees), so one fold along its targets
-  // ends on the other line's branch, 180 degrees from the valley's target, and says so.
+  // creases one line to 180 and leaves the other line's creases flat, 180 degrees from their
+  // targets, and says so.
   for (const char* name : {"squareBase", "waterbombBase"}) {
     SCOPED_TRACE(name);
     const std::string out = foldkit::test::write_temp(std::string(name) + "-flat.cmml", "");
