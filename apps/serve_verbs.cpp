@@ -108,7 +108,8 @@ ArgKind kind_of(const CLI::Option& o, const std::string& name) {
 // The arguments of one verb as its CLI declares them; --help is not served, --json always given.
 void add_args(const CLI::App& app, VerbSpec& spec) {
   for (const CLI::Option* o : app.get_options()) {
-    const std::string name = o->get_positional() && !o->nonpositional() ? o->get_name() : o->get_lnames().front();
+    const bool positional = o->get_positional() && !o->nonpositional();
+    const std::string name = positional ? o->get_name() : o->get_lnames().front();
     if (name == "help") continue;
     if (name == "json") {
       spec.json = true;
@@ -117,7 +118,7 @@ void add_args(const CLI::App& app, VerbSpec& spec) {
     const ArgKind kind = kind_of(*o, name);
     const auto same = std::find_if(spec.args.begin(), spec.args.end(), [&](const ArgSpec& a) { return a.name == name; });
     if (same == spec.args.end()) {
-      spec.args.push_back({name, kind, o->get_positional() && !o->nonpositional(), o->get_required(), {}});
+      spec.args.push_back({name, kind, positional, o->get_required(), {}});
     } else if (same->kind != kind) {
       // Two generators with one option name: a number takes integers too.
       if (!((same->kind == K::Number && kind == K::Integer) || (same->kind == K::Integer && kind == K::Number)))
@@ -137,11 +138,9 @@ VerbSpec served_spec(const CLI::App& app) {
     ArgSpec kind{"kind", K::Text, true, true, {}};
     for (const CLI::App* c : choices) kind.choices.push_back(c->get_name());
     spec.args.push_back(kind);
-    add_args(app, spec);
-    for (const CLI::App* c : choices) add_args(*c, spec);
-  } else {
-    add_args(app, spec);
   }
+  add_args(app, spec);
+  for (const CLI::App* c : choices) add_args(*c, spec);
   return spec;
 }
 

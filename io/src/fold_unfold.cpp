@@ -1,11 +1,11 @@
 #include "fold_unfold.hpp"
 
 #include <algorithm>
-#include <map>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <deque>
+#include <map>
 #include <unordered_map>
 
 #include <Eigen/Eigenvalues>

@@ -10,9 +10,11 @@ namespace foldkit::statespaces {
 
 namespace ob = ompl::base;
 
-ClosedAnglesSpace::ClosedAnglesSpace(std::size_t joints, AngleBounds bounds) : n_(joints), bounds_(std::move(bounds)) {
+ClosedAnglesSpace::ClosedAnglesSpace(const std::string& kind, std::size_t joints, AngleBounds bounds)
+    : n_(joints), bounds_(std::move(bounds)) {
+  setName(kind + getName());
   if (static_cast<std::size_t>(bounds_.lower.size()) != n_ || static_cast<std::size_t>(bounds_.upper.size()) != n_)
-    throw ompl::Exception("bounds do not hold one range per joint");
+    throw ompl::Exception(kind + "StateSpace: bounds do not hold one range per joint");
 }
 
 bool ClosedAnglesSpace::satisfiesBounds(const ob::State* state) const {

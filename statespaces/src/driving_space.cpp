@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <ostream>
 #include <stdexcept>
@@ -71,13 +70,12 @@ Eigen::VectorXd angles_of(const State* s, std::size_t n) {
 DrivingStateSpace::DrivingStateSpace(std::shared_ptr<const geometry::ClosureSystem> system, geometry::DrivingChart chart,
                                      AngleBounds bounds, Eigen::VectorXd driving_lower, Eigen::VectorXd driving_upper,
                                      geometry::PassiveSolverOptions options)
-    : ClosedAnglesSpace(static_cast<std::size_t>(system->cols()), std::move(bounds)),
+    : ClosedAnglesSpace("Driving", static_cast<std::size_t>(system->cols()), std::move(bounds)),
       system_(std::move(system)),
       chart_(std::move(chart)),
       driving_lower_(std::move(driving_lower)),
       driving_upper_(std::move(driving_upper)),
       options_(options) {
-  setName("Driving" + getName());
   type_ = ob::STATE_SPACE_TYPE_COUNT + 72;
   const auto d = static_cast<Eigen::Index>(chart_.driving.size());
   if (d == 0) throw ompl::Exception("DrivingStateSpace: the chart has no driving crease (nothing moves)");

@@ -6,7 +6,6 @@
 #include <ostream>
 
 #include <ompl/base/ProjectionEvaluator.h>
-#include <ompl/util/Exception.h>
 #include <ompl/util/RandomNumbers.h>
 
 namespace foldkit::statespaces {
@@ -43,8 +42,7 @@ class ActiveProjection : public ob::ProjectionEvaluator {
 }  // namespace
 
 SingleVertexStateSpace::SingleVertexStateSpace(std::shared_ptr<const SingleVertexChain> chain, AngleBounds bounds)
-    : ClosedAnglesSpace(chain->pattern().joints().size(), std::move(bounds)), chain_(std::move(chain)) {
-  setName("SingleVertex" + getName());
+    : ClosedAnglesSpace("SingleVertex", chain->pattern().joints().size(), std::move(bounds)), chain_(std::move(chain)) {
   type_ = ob::STATE_SPACE_TYPE_COUNT + 71;
 }
 

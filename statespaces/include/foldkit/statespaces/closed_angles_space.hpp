@@ -3,6 +3,7 @@
 /// What the exact state spaces (single-vertex, driving) share: states that hold every fold angle
 /// of the pattern and whether they close, within per-joint bounds, and OMPL's storage of them.
 #include <cstddef>
+#include <string>
 
 #include <ompl/base/StateSpace.h>
 
@@ -23,9 +24,10 @@ class ClosedAnglesState : public ompl::base::State {
 /// one whose state carries more (the single vertex's branch) overrides the extra hooks.
 class ClosedAnglesSpace : public ompl::base::StateSpace {
  public:
-  /// A space of states with `joints` angles, valid within `bounds`.
+  /// A space of states with `joints` angles, valid within `bounds`, named `kind` + OMPL's
+  /// numbered name ("SingleVertex", "Driving").
   /// @throws ompl::Exception when `bounds` does not hold one range per joint
-  ClosedAnglesSpace(std::size_t joints, AngleBounds bounds);
+  ClosedAnglesSpace(const std::string& kind, std::size_t joints, AngleBounds bounds);
 
   /// The per-joint angle bounds.
   const AngleBounds& bounds() const { return bounds_; }
