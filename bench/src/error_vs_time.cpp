@@ -42,11 +42,11 @@ std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::
       for (double limit : limits)
         for (unsigned int run = 0; run < o.runs; ++run) {
           og::SimpleSetup ss(setup.si);
-          setup.set_start_and_goal(ss, scene.request.goal);
+          set_start_and_goal(setup, ss, scene.request.goal);
           ss.setPlanner(entry_planner(name, scene, setup, o.params, limit));
           ss.setup();
           const auto t1 = std::chrono::steady_clock::now();
-          setup.solve(ss, limit);
+          run_planner(setup, ss, limit);
           ErrorVsTimeRow row;
           row.scene = scene.name;
           row.planner = name;

@@ -189,8 +189,8 @@ class SceneRun {
       const SceneSpaces::InSpace& in = scenes_->for_entry(entry);
       objects_.push_back(entry_planner(entry, in.scene, in.setup, o_.params, o_.time));
       names_ += (names_.empty() ? "" : ",") + objects_.back()->getName();
-      if (std::find(space_names.begin(), space_names.end(), in.setup.space_name) == space_names.end())
-        space_names.push_back(in.setup.space_name);
+      if (std::find(space_names.begin(), space_names.end(), std::string(in.setup.plan_space->name())) == space_names.end())
+        space_names.push_back(std::string(in.setup.plan_space->name()));
     }
     std::string spaces;
     for (const auto& n : space_names) spaces += (spaces.empty() ? "" : ",") + n;
@@ -209,7 +209,7 @@ class SceneRun {
     const BenchScene& scene = in.scene;
     const PlanSetup& setup = in.setup;
     BenchSetup ss(setup.si);
-    setup.set_start_and_goal(ss, scene.request.goal);
+    set_start_and_goal(setup, ss, scene.request.goal);
     ompl::tools::Benchmark bench(ss, scene.name);
     bench.addExperimentParameter("suite", "STRING", clean(res_.suite->name));
     bench.addExperimentParameter("scene", "STRING", clean(scene.name));

@@ -65,10 +65,10 @@ ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, c
     planners::set_planner_params(*p, name, params);
     return p;
   }
-  const PlanSetup* s = &setup;
+  std::shared_ptr<const planners::PlanSpace> space = setup.plan_space;
   return std::make_shared<DeterministicPlanner>(
       setup.si, name, deterministic_method(name), *scene.pattern, setup.reader,
-      [s](const FoldState& f, ob::State* out) { return s->write(f, out); }, setup.prefix, scene.request.waypoint_step);
+      [space](const FoldState& f, ob::State* out) { return space->write(f, out); }, setup.prefix, scene.request.waypoint_step);
 }
 
 }  // namespace
@@ -120,7 +120,7 @@ namespace {
 PlanSetup scene_setup(const BenchScene& scene) {
   PlanSetup setup = make_plan_setup(scene.request, true);
   if (!setup.blocked.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.blocked);
-  if (!setup.unreachable.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.unreachable);
+  if (!setup.other_branch.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.other_branch);
   return setup;
 }
 
@@ -151,7 +151,7 @@ void check_fallback_entries(const BenchOptions& o, const Resolved& r) {
     for (const auto& entry : r.planners) {
       if (fallback_inner(planner_and_space(entry).first).empty()) continue;
       if (!spaces) spaces.emplace(o, scene);
-      if (!spaces->for_entry(entry).setup.single_vertex)
+      if (spaces->for_entry(entry).setup.plan_space->fallback() != planners::Fallback::Carpenter)
         throw std::invalid_argument("scene " + scene + ": " + entry +
                                     " needs the single-vertex space (the fallback is Carpenter's rule on the sphere)");
     }

@@ -65,10 +65,10 @@ CarpenterFallbackPlanner::CarpenterFallbackPlanner(const ob::SpaceInformationPtr
 
 std::shared_ptr<CarpenterFallbackPlanner> with_carpenter_fallback(const PlanSetup& setup, const geometry::CreasePattern& pattern,
                                                                   ob::PlannerPtr inner, double time, double step) {
-  if (!setup.single_vertex)
-    throw std::invalid_argument("the Carpenter fallback needs the single-vertex space (it is Carpenter's rule on the sphere)");
-  return std::make_shared<CarpenterFallbackPlanner>(setup.si, std::move(inner), kSamplerShare * time, pattern,
-                                                    setup.single_vertex, setup.validity, step);
+  auto space = std::dynamic_pointer_cast<const statespaces::SingleVertexStateSpace>(setup.space);
+  if (!space) throw std::invalid_argument("the Carpenter fallback needs the single-vertex space (it is Carpenter's rule on the sphere)");
+  return std::make_shared<CarpenterFallbackPlanner>(setup.si, std::move(inner), kSamplerShare * time, pattern, std::move(space),
+                                                    setup.validity, step);
 }
 
 void CarpenterFallbackPlanner::clear() {

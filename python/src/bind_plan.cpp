@@ -9,12 +9,22 @@ namespace {
 
 using planners::PlanResult;
 
+// The spaces plan() accepts, quoted for a docstring: 'auto', 'single-vertex', … (from the C++
+// table, not retyped). `from` skips the first `from` names ("auto" is no searched space).
+std::string quoted_spaces(std::size_t from) {
+  const std::vector<std::string> names = planners::space_names();
+  std::string list;
+  for (std::size_t i = from; i < names.size(); ++i)
+    list += (i == from ? "'" : i + 1 == names.size() ? " or '" : ", '") + names[i] + "'";
+  return list;
+}
+
 void bind_result(py::module_& m) {
   py::class_<PlanResult>(m, "PlanResult", "A plan: the waypoints from start to goal, their CMML, and the simulator's replay.")
       .def_readonly("status", &PlanResult::status, "'success' when solved (and the replay is valid).")
       .def_property_readonly("solved", [](const PlanResult& r) { return r.status.ok(); }, "Whether a valid plan was found.")
       .def_readonly("planner", &PlanResult::planner, "The planner's name.")
-      .def_readonly("space", &PlanResult::space, "The space searched: 'single-vertex', 'driving', 'projected', 'atlas' or 'tangent-bundle'.")
+      .def_readonly("space", &PlanResult::space, ("The space searched: " + quoted_spaces(1) + ".").c_str())
       .def_readonly("time", &PlanResult::time, "Seconds the planner ran (the fallback included).")
       .def_readonly("fallback", &PlanResult::fallback,
                     "Whether the path came from a fallback: Carpenter's rule on the sphere (single vertex) or via flat.")
@@ -83,18 +93,19 @@ void bind_plan(py::module_& m) {
       py::arg("search_margin") = planners::PlanRequest{}.search_margin, py::arg("waypoint_step") = planners::PlanRequest{}.waypoint_step,
       py::arg("velocity") = planners::PlanRequest{}.velocity, py::arg("replay") = planners::PlanRequest{}.replay,
       py::arg("params") = std::map<std::string, std::string>{}, py::arg("fallback") = planners::PlanRequest{}.fallback,
-      "Plans from `start` to the closed state `goal`. `start` is None (flat), a FoldSequence (its end state is the start; "
+      ("Plans from `start` to the closed state `goal`. `start` is None (flat), a FoldSequence (its end state is the start; "
       "the plan's sequence begins with it, as the CLI's --start CMML), or a closed state: then the plan's sequence reaches "
       "it from flat in one straight event, which the replay accepts only where that line stays closed (pass the "
       "FoldSequence otherwise). Planning runs "
-      "an OMPL planner by name, as `foldkit plan`: space 'auto', 'single-vertex', 'driving', 'projected', 'atlas' or "
-      "'tangent-bundle'; `time` seconds at most; the same seed gives the same plan. `params` sets planner parameters by "
+      "an OMPL planner by name, as `foldkit plan`: space " + quoted_spaces(0) + " (spaces()); `time` seconds at most; the same seed gives the same plan. `params` sets planner parameters by "
       "OMPL's names, e.g. {'range': '0.3'} (ValueError for one the planner does not have). When the planner finds "
       "none in a quarter of `time`, `fallback` goes through flat: on a single vertex the path of Carpenter's rule on the "
       "sphere (start, flat, goal); in the driving space from a folded start, a plan from flat to the start, reversed, then "
       "one from flat to the goal (at once for a goal known to lie on another branch). The result's `fallback` and "
-      "`via_flat` say so. Returns a PlanResult (check `solved`).");
+      "`via_flat` say so. Returns a PlanResult (check `solved`).")
+          .c_str());
   m.def("planners", &planners::planner_names, "The planner names plan() accepts.");
+  m.def("spaces", &planners::space_names, "The space names plan() accepts ('auto' first).");
 }
 
 }  // namespace foldkit::python

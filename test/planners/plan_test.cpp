@@ -306,7 +306,7 @@ TEST(Plan, DrivingSpaceFromOneFoldedStateToAnother) {
     req.goal = folded_along_assignment(p, next);
     // Along the start's own branch: a direct path exists, so the planner keeps all of its time
     // (no way through flat after a quarter of it).
-    EXPECT_TRUE(foldkit::planners::make_plan_setup(req).reachable);
+    EXPECT_TRUE(foldkit::planners::make_plan_setup(req).continues_to_goal);
     const PlanResult r = plan(req);
     ASSERT_TRUE(r.status.ok()) << r.status.message;
     EXPECT_FALSE(r.via_flat);

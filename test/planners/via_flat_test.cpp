@@ -73,7 +73,7 @@ TEST(PlanViaFlat, FoldedStatesOnSheetsThatMeetOnlyAtFlat) {
   const auto a = folded(p, kReschVelocityA), b = folded(p, kReschVelocityB);
   ASSERT_TRUE(a.status.ok() && b.status.ok()) << a.status.message << " / " << b.status.message;
   const PlanRequest req = between(p, a, b);
-  EXPECT_FALSE(foldkit::planners::make_plan_setup(req).reachable);
+  EXPECT_FALSE(foldkit::planners::make_plan_setup(req).continues_to_goal);
   const PlanResult r = plan(req);
   expect_valid_plan(sys, req, r);
   EXPECT_TRUE(r.via_flat);

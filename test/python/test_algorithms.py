@@ -1,6 +1,8 @@
 """plan, fold, stiffness, Carpenter's rule, Hamiltonian paths: the CLI's numbers on the same
 files, and invariants checked here with numpy."""
 import math
+import os
+import subprocess
 
 import numpy as np
 import pytest
@@ -56,6 +58,16 @@ def single_vertex_goal():
     velocity = np.array([1.0, -1.0, 1.0, -1.0, 1.0, -1.0])
     goal = foldkit.fold(p, fraction=0.6, velocity=velocity, collisions=False, replay=False).states[-1]
     return p, goal
+
+
+def test_spaces_are_the_clis(cli):
+    """foldkit.spaces() is the C++ table the CLI's --space choices come from, and plan() names each."""
+    help_text = subprocess.run([os.environ["FOLDKIT_CLI"], "plan", "--help"], capture_output=True, text=True).stdout
+    names = foldkit.spaces()
+    assert names[0] == "auto" and len(names) == len(set(names)) >= 6
+    assert "{" + ",".join(names) + "}" in help_text
+    for name in names:
+        assert "'" + name + "'" in foldkit.plan.__doc__
 
 
 def test_plan_single_vertex_matches_cli(cli, tmp_path):

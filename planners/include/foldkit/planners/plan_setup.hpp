@@ -11,54 +11,49 @@
 #include <ompl/geometric/SimpleSetup.h>
 
 #include "foldkit/planners/plan.hpp"
-#include "foldkit/statespaces/closure_constraint.hpp"
-#include "foldkit/statespaces/driving_space.hpp"
-#include "foldkit/statespaces/single_vertex_space.hpp"
+#include "foldkit/planners/plan_space.hpp"
+#include "foldkit/statespaces/state_reader.hpp"
 #include "foldkit/statespaces/validity.hpp"
 
 namespace foldkit::planners {
 
 /// The pieces of plan() that `foldkit bench` shares with it: the checked problem, the space, its
-/// SpaceInformation (validity checker and motion validator set) and the way out of a singular start.
+/// SpaceInformation (validity checker and motion validator set) and the way out of a singular
+/// start. Plain data; what differs between the kinds of space is in `plan_space`.
 struct PlanSetup {
-  SpaceKind kind = SpaceKind::Auto;  ///< resolved; Auto only for `joint_space`
-  std::string space_name;            ///< "single-vertex", "projected", … or "joint" (no loop)
-  geometry::FoldState start;         ///< the request's start (flat when it gives none)
-  std::vector<geometry::FoldState> prefix;  ///< start … the state the planner starts from
+  std::shared_ptr<PlanSpace> plan_space;   ///< the space's kind, built: its name, states, paths and fallback
+  geometry::FoldState start;               ///< the request's start (flat when it gives none)
+  std::vector<geometry::FoldState> prefix;  ///< start … the state the planner starts from (the lead-in)
   std::shared_ptr<const geometry::ClosureSystem> system;  ///< the pattern's closure equations
   std::shared_ptr<statespaces::FoldValidity> validity;    ///< what a valid state is
   ompl::base::StateSpacePtr space;   ///< the space the planner searches
   ompl::base::SpaceInformationPtr si;  ///< its SpaceInformation, checkers set
   statespaces::StateReader reader;   ///< reads fold angles from a state of `space`
-  std::shared_ptr<statespaces::SingleVertexStateSpace> single_vertex;  ///< the single-vertex space; null otherwise
-  std::shared_ptr<statespaces::DrivingStateSpace> driving;            ///< the driving-crease space; null otherwise
-  statespaces::ConstrainedSetup constrained;                          ///< constrained spaces only
-  bool joint_space = false;  ///< a pattern without loops: a plain box over the fold angles
-  std::string blocked;       ///< not empty: the way out of the start collides (no plan)
-  /// Not empty: the space cannot reach the goal from the start, and why (a 1-DOF pattern whose
-  /// start continues to another state at the goal's driving angle: the goal is on another branch).
-  std::string unreachable;
+  std::string blocked;               ///< not empty: the way out of the start collides (no plan)
+  /// Driving space, not empty: the goal lies on another branch than the start, and why (a 1-DOF
+  /// pattern whose start continues to another state at the goal's driving angle): no motion of
+  /// the space joins them.
+  std::string other_branch;
   /// Driving space: the straight continuation from the start to the goal's driving angles ends at
   /// the goal, so a direct path exists (collisions aside) and a folded start is not planned
   /// through flat.
-  bool reachable = false;
-
-  /// Writes a closed fold state into a state of `space`.
-  /// @return false when the space cannot hold it (a singular state of the single-vertex space)
-  bool write(const geometry::FoldState& state, ompl::base::State* out) const;
-  /// Start = prefix.back(), goal = `goal` (threshold 1e-9); anchors Atlas/TangentBundle charts.
-  /// @throws std::invalid_argument when the goal is singular for the single-vertex space
-  void set_start_and_goal(ompl::geometric::SimpleSetup& ss, const geometry::FoldState& goal) const;
-  /// Runs `ss`'s planner (set up on `si`) until its first exact solution or `seconds`. The time
-  /// holds even in planner loops that never consult their termination condition (RRTConnect's
-  /// connect loop): `validity` is under a FoldValidity::TimeLimit meanwhile.
-  ompl::base::PlannerStatus solve(ompl::geometric::SimpleSetup& ss, double seconds) const;
+  bool continues_to_goal = false;
 };
+
+/// Sets `ss`'s start to setup.prefix.back() and its goal to `goal` (threshold 1e-9), anchored in
+/// the space (PlanSpace::anchor).
+/// @throws PlanInputError when the goal is a singular state of the space
+void set_start_and_goal(const PlanSetup& setup, ompl::geometric::SimpleSetup& ss, const geometry::FoldState& goal);
+
+/// Runs `ss`'s planner (set up on setup.si) until its first exact solution or `seconds`. The time
+/// holds even in planner loops that never consult their termination condition (RRTConnect's
+/// connect loop): setup.validity is under a FoldValidity::TimeLimit meanwhile.
+ompl::base::PlannerStatus run_planner(const PlanSetup& setup, ompl::geometric::SimpleSetup& ss, double seconds);
 
 /// Checks the request as plan() does and builds the space: SpaceKind::Auto picks the
 /// single-vertex space for a pattern with one interior vertex and no hole, else the driving-crease
-/// one. A singular start (such as the flat sheet) is left along geometry::lead_in, giving the
-/// prefix.
+/// one. A start below the rank the space needs (PlanSpace::lead_in_rank; the flat sheet) is left
+/// along geometry::lead_in, giving the prefix.
 /// @param request         the planning problem
 /// @param allow_no_loops  give a pattern without closed loops a joint-angle box (plan() refuses
 ///                        such patterns: nothing to plan on)
@@ -70,7 +65,7 @@ struct PlanSetup {
 PlanSetup make_plan_setup(const PlanRequest& request, bool allow_no_loops = false);
 
 /// A solution path as fold states: the prefix, then the path densified along the space's own
-/// interpolation (single-vertex: linear in the active angles; constrained: OMPL's geodesic), then,
+/// motion (PlanSpace::path_states), then,
 /// with `to_goal`, the goal when the path ends short of it; finally densified onto the closure
 /// manifold (densify()), no joint moving more than request.waypoint_step between waypoints.
 /// @return the waypoints, or nothing, with `*why` set when `why` is not null, when the path jumps

@@ -1,0 +1,85 @@
+#pragma once
+/// @file
+/// What one kind of state space brings to a plan: how far its start must leave a singular state,
+/// how it is built, how a fold state enters it, how its paths are densified and which way through
+/// flat applies when its planner finds nothing. One implementation per kind, each in its own file
+/// under planners/src/spaces/, registered in the table of plan_space.cpp (docs/ARCHITECTURE.md,
+/// "One place to extend").
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+#include <ompl/base/State.h>
+#include <ompl/geometric/PathGeometric.h>
+
+#include "foldkit/geometry/fold_state.hpp"
+#include "foldkit/planners/plan.hpp"
+#include "foldkit/statespaces/angle_bounds.hpp"
+
+namespace foldkit::planners {
+
+struct PlanSetup;
+
+/// The way through flat a plan takes when its planner finds no path (PlanRequest::fallback).
+enum class Fallback {
+  None,       ///< none: the planner has all of the time
+  Carpenter,  ///< Carpenter's rule on the sphere, start → flat → goal (CarpenterFallbackPlanner)
+  ViaFlat,    ///< from a folded start, two plans from flat: to the start reversed, then to the goal
+};
+
+/// One kind of state space in plan() and `foldkit bench`. make_plan_setup() asks lead_in_rank(),
+/// leaves a start below that rank along geometry::lead_in (the one lead-in all spaces share), then
+/// build()s the space from the end of that way out; the rest of the pipeline reaches the space
+/// only through these members. Implementations hold what they built (not thread-safe while
+/// building; const afterwards).
+class PlanSpace {
+ public:
+  virtual ~PlanSpace() = default;
+
+  /// The space's name in results and messages: "single-vertex", "driving", "projected", "atlas",
+  /// "tangent-bundle" or "joint" (the box of a pattern without loops).
+  virtual const char* name() const = 0;
+
+  /// The rank of the closure Jacobian the planner's first state must have; a start below it is
+  /// left along geometry::lead_in to that rank first. May build what it needs to tell (the
+  /// single-vertex space asks its closed form).
+  /// @param setup   the checked ends and the closure system (setup.start, setup.system)
+  /// @param request the problem (its goal and settings)
+  /// @param bounds  the per-joint angle bounds of the plan (radians)
+  /// @return 0 when the start needs no way out
+  virtual Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanRequest& request,
+                                    const statespaces::AngleBounds& bounds) = 0;
+
+  /// Builds setup.space, setup.si (motion validator set; make_plan_setup() adds the validity
+  /// checker) and setup.reader, for a plan from setup.prefix.back() to request.goal.
+  /// @throws PlanInputError when an end is a singular state of the space; std::invalid_argument
+  ///         when the space cannot be built on the pattern
+  virtual void build(PlanSetup& setup, const PlanRequest& request, const statespaces::AngleBounds& bounds) = 0;
+
+  /// Writes a closed fold state into a state of the built space.
+  /// @return false when the space cannot hold it (a singular state of its closed form or chart)
+  virtual bool write(const geometry::FoldState& state, ompl::base::State* out) const = 0;
+
+  /// Marks the planner's start and goal states in the space (the Atlas charts); nothing by default.
+  virtual void anchor(ompl::base::State* start, ompl::base::State* goal) const;
+
+  /// A solution path's states as fold states, densified along the space's own motion so that no
+  /// crease moves more than `step` (radians) between neighbours where the space can tell; by
+  /// default OMPL's path.interpolate() (the constrained spaces follow their manifold's geodesic).
+  virtual std::vector<geometry::FoldState> path_states(const PlanSetup& setup, ompl::geometric::PathGeometric path,
+                                                       double step) const;
+
+  /// The way through flat that applies to this space (PlanRequest::fallback); None by default.
+  virtual Fallback fallback() const;
+};
+
+/// A new, unbuilt space of `kind` (not SpaceKind::Auto): the one place that maps a kind to its
+/// implementation.
+/// @throws std::invalid_argument for SpaceKind::Auto
+std::shared_ptr<PlanSpace> make_plan_space(SpaceKind kind);
+
+/// A new, unbuilt joint-angle box: the space of a pattern without closed loops, where every state
+/// is closed (`foldkit bench` only; plan() refuses such patterns).
+std::shared_ptr<PlanSpace> make_joint_plan_space();
+
+}  // namespace foldkit::planners
