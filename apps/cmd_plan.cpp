@@ -22,12 +22,12 @@ std::vector<std::pair<int, double>> parse_goal_angles(const geometry::CreasePatt
   return out;
 }
 
-struct PlanArgs {  // defaults: PlanRequest's
-  std::string pattern, goal, goal_angles, start, space = planners::to_string(planners::PlanRequest{}.space),
-                                                 planner = planners::PlanRequest{}.planner, output;
+struct PlanArgs {  // defaults: PlanOptions's
+  std::string pattern, goal, goal_angles, start, space = planners::to_string(planners::PlanOptions{}.space),
+                                                 planner = planners::PlanOptions{}.planner, output;
   std::vector<std::string> params;
-  double time = planners::PlanRequest{}.time, search_margin = planners::PlanRequest{}.search_margin;
-  unsigned int seed = planners::PlanRequest{}.seed;
+  double time = planners::PlanOptions{}.time, search_margin = planners::PlanOptions{}.search_margin;
+  unsigned int seed = planners::PlanOptions{}.seed;
   bool no_collision = false, free_signs = false, no_fallback = false, json = false;
 };
 
@@ -79,10 +79,10 @@ int end_line(const geometry::FoldSequence& seq) {
 
 // The goal from --goal or --goal-angles (`goal_line`: where the goal CMML ends); false (after
 // saying so) when no closed state holds the angles asked for.
-bool set_goal(const PlanArgs& opt, const geometry::CreasePattern& pattern, planners::PlanRequest& req, int& goal_line) {
+bool set_goal(const PlanArgs& opt, const geometry::CreasePattern& pattern, geometry::FoldState& goal, int& goal_line) {
   if (!opt.goal.empty()) {
     const geometry::FoldSequence seq = read_sequence(pattern, opt.goal);
-    req.goal = geometry::end_state(pattern, seq);
+    goal = geometry::end_state(pattern, seq);
     goal_line = end_line(seq);
     return true;
   }
@@ -98,28 +98,28 @@ bool set_goal(const PlanArgs& opt, const geometry::CreasePattern& pattern, plann
     }
     return false;
   }
-  req.goal = *g;
+  goal = *g;
   return true;
 }
 
-void set_start_and_settings(const PlanArgs& opt, const geometry::CreasePattern& pattern, planners::PlanRequest& req) {
+void set_start_and_settings(const PlanArgs& opt, const geometry::CreasePattern& pattern, planners::PlanOptions& options) {
   if (!opt.start.empty()) {
-    req.start_sequence = read_sequence(pattern, opt.start);
-    req.start = geometry::end_state(pattern, req.start_sequence);
+    options.start_sequence = read_sequence(pattern, opt.start);
+    options.start = geometry::end_state(pattern, options.start_sequence);
   }
-  req.space = planners::parse_space(opt.space);
-  req.planner = opt.planner;
-  req.time = opt.time;
-  req.seed = opt.seed;
-  req.collisions = !opt.no_collision;
-  req.search_margin = opt.search_margin;
-  req.use_assignment = !opt.free_signs;
-  req.fallback = !opt.no_fallback;
+  options.space = planners::parse_space(opt.space);
+  options.planner = opt.planner;
+  options.time = opt.time;
+  options.seed = opt.seed;
+  options.collisions = !opt.no_collision;
+  options.search_margin = opt.search_margin;
+  options.use_assignment = !opt.free_signs;
+  options.fallback = !opt.no_fallback;
 }
 
 int report(const PlanArgs& opt, const planners::PlanResult& r) {
   std::cerr << (r.status.ok() ? "solved" : "no plan") << ": " << r.status.message << " (" << r.planner << " in " << r.space
-            << ", " << r.time << " s, " << r.waypoints.size() << " waypoints)\n";
+            << ", " << r.seconds << " s, " << r.waypoints.size() << " waypoints)\n";
   if (r.status.ok()) {
     io::write_file_atomic(opt.output, io::write_cmml(r.sequence));
     std::cerr << "wrote " << opt.output << '\n';
@@ -130,7 +130,7 @@ int report(const PlanArgs& opt, const planners::PlanResult& r) {
                      {"space", r.space},
                      {"fallback", r.fallback},
                      {"via_flat", r.via_flat},
-                     {"time", r.time},
+                     {"time", r.seconds},
                      {"path_length", r.path_length},
                      {"max_closure_error", r.max_closure_error},
                      {"waypoints", r.waypoints.size()}};
@@ -151,22 +151,22 @@ int run_plan(PlanArgs& opt) {
     throw UsageError(e.what());
   }
   const geometry::CreasePattern pattern = load_pattern(opt.pattern).pattern;
-  planners::PlanRequest req;
-  req.pattern = &pattern;
+  planners::PlanOptions options;
   if (opt.goal.empty() == opt.goal_angles.empty()) throw UsageError("give the goal as --goal CMML or --goal-angles ID:DEG,…");
+  geometry::FoldState goal;
   int goal_line = 0;
-  if (!set_goal(opt, pattern, req, goal_line)) return kNoPlan;
-  set_start_and_settings(opt, pattern, req);
-  req.params = params;
+  if (!set_goal(opt, pattern, goal, goal_line)) return kNoPlan;
+  set_start_and_settings(opt, pattern, options);
+  options.params = params;
   planners::PlanResult r;
   try {
     ProgressLine progress("plan (replay)");
-    req.progress = progress.callback();
-    r = planners::plan(req);
+    options.progress = progress.callback();
+    r = planners::plan(pattern, goal, options);
   } catch (const planners::PlanInputError& e) {
     // The file the faulty end came from, at the line where its sequence ends.
     if (e.end() == planners::PlanInputError::End::Start && !opt.start.empty())
-      throw io::ParseError(opt.start, end_line(req.start_sequence), e.what());
+      throw io::ParseError(opt.start, end_line(options.start_sequence), e.what());
     throw io::ParseError(opt.goal.empty() ? "--goal-angles" : opt.goal, opt.goal.empty() ? 0 : goal_line, e.what());
   } catch (const std::invalid_argument& e) {
     throw io::ParseError(opt.goal.empty() ? "--goal-angles" : opt.goal, 0, e.what());

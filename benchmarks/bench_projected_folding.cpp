@@ -82,9 +82,8 @@ void BM_RRTConnectProjectedMiura(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const geo::CreasePattern p = geo::build_or_throw(geo::generators::miura(n, n));
   const fo::ProjectedFoldingResult folded = fo::fold_projected(p, folding_options());
-  pl::PlanRequest req;
-  req.pattern = &p;
-  req.goal = folded.states.back();
+  pl::PlanOptions req;
+  const geo::FoldState goal = folded.states.back();
   req.space = pl::SpaceKind::Projected;
   req.planner = "RRTConnect";
   req.time = static_cast<double>(state.range(1));
@@ -92,10 +91,10 @@ void BM_RRTConnectProjectedMiura(benchmark::State& state) {
   req.replay = false;
   req.search_margin = 0.1;  // docs/PLANNING.md: without it RRTConnect wanders onto other Miura branches
   pl::PlanResult r;
-  for (auto _ : state) r = pl::plan(req);
+  for (auto _ : state) r = pl::plan(p, goal, req);
   state.counters["creases"] = static_cast<double>(p.joints().size());
   state.counters["solved"] = r.status.ok() ? 1 : 0;
-  state.counters["planner_time_s"] = r.time;
+  state.counters["planner_time_s"] = r.seconds;
   state.counters["waypoints"] = static_cast<double>(r.waypoints.size());
   state.counters["max_closure_error"] = r.status.ok() ? r.max_closure_error : -1.0;
   if (!r.status.ok()) state.SetLabel("not solved: " + r.status.message);

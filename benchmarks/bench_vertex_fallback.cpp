@@ -29,7 +29,7 @@ void BM_VertexFallback_Flatten(benchmark::State& state) {
       state.PauseTiming();
       const auto s = scene(degree, g);
       state.ResumeTiming();
-      const auto r = foldkit::folding::flatten_single_vertex(*s.pattern, s.request.goal);
+      const auto r = foldkit::folding::flatten_single_vertex(*s.pattern, s.goal);
       steps += r.steps;
       runs += 1.0;
     }
@@ -43,11 +43,11 @@ void plan_all(benchmark::State& state, bool fallback) {
     for (unsigned g = 1; g <= kGoals; ++g) {
       state.PauseTiming();
       auto s = scene(degree, g);
-      s.request.time = kTime;
-      s.request.fallback = fallback;
-      s.request.seed = g;
+      s.options.time = kTime;
+      s.options.fallback = fallback;
+      s.options.seed = g;
       state.ResumeTiming();
-      const auto r = foldkit::planners::plan(s.request);
+      const auto r = foldkit::planners::plan(*s.pattern, s.goal, s.options);
       solved += r.status.ok();
       used += r.fallback;
       runs += 1.0;

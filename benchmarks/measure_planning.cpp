@@ -92,9 +92,7 @@ struct Run {
 };
 
 Run run_planner(char method, const CreasePattern& p, const FoldState& goal, const Options& o, int seed) {
-  foldkit::planners::PlanRequest req;
-  req.pattern = &p;
-  req.goal = goal;
+  foldkit::planners::PlanOptions req;
   req.space = method == 'a' ? foldkit::planners::SpaceKind::SingleVertex : foldkit::planners::SpaceKind::Projected;
   req.numerical_jacobian = method == 'c';
   req.time = o.time;
@@ -104,9 +102,9 @@ Run run_planner(char method, const CreasePattern& p, const FoldState& goal, cons
   req.replay = false;  // the planner is measured; tests replay plans in the simulator
   Run r{method, static_cast<int>(p.joints().size()), seed, false, o.time, ""};
   try {
-    const foldkit::planners::PlanResult res = foldkit::planners::plan(req);
+    const foldkit::planners::PlanResult res = foldkit::planners::plan(p, goal, req);
     r.solved = res.status.ok();
-    r.time = res.status.ok() ? res.time : o.time;
+    r.time = res.status.ok() ? res.seconds : o.time;
     r.message = res.status.message;
   } catch (const std::exception& e) {
     r.message = e.what();

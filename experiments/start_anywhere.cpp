@@ -114,17 +114,15 @@ std::vector<Row> measure(const std::string& name, const geometry::CreasePattern&
       FoldState reached;
       row.one_chart = solver.follow(states[a].state, solver.driving_of(goal), reached).ok() && reaches(reached, goal);
       row.switching = follow_switching(sys, chart, states[a].state, goal, dof, row.switches);
-      planners::PlanRequest req;
-      req.pattern = &p;
+      planners::PlanOptions req;
       req.start = states[a].state;
       req.start_sequence = states[a].sequence;
-      req.goal = goal;
       req.time = kPlanTime;
-      const planners::PlanResult r = planners::plan(req);
+      const planners::PlanResult r = planners::plan(p, goal, req);
       row.solved = r.status.ok();
       row.via_flat = r.via_flat;
       row.replay_valid = r.replay && r.replay->status.ok();
-      row.time = r.time;
+      row.time = r.seconds;
       rows.push_back(row);
     }
   return rows;

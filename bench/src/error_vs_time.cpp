@@ -38,11 +38,11 @@ std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::
     for (const auto& name : res.planners) {
       const BenchScene& scene = scenes.for_entry(name).scene;
       const PlanSetup& setup = scenes.for_entry(name).setup;
-      const double start_distance = (setup.start.angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
+      const double start_distance = (setup.start.angles - scene.goal.angles).cwiseAbs().maxCoeff();
       for (double limit : limits)
         for (unsigned int run = 0; run < o.runs; ++run) {
           og::SimpleSetup ss(setup.si);
-          set_start_and_goal(setup, ss, scene.request.goal);
+          set_start_and_goal(setup, ss, scene.goal);
           ss.setPlanner(entry_planner(name, scene, setup, o.params, limit));
           ss.setup();
           const auto t1 = std::chrono::steady_clock::now();
@@ -58,7 +58,7 @@ std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::
           row.solution = !pdef->hasSolution() ? "none" : pdef->hasApproximateSolution() ? "approximate" : "exact";
           if (states) {
             const geometry::ClosureSystem& system = *setup.system;
-            row.goal_distance = (states->back().angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
+            row.goal_distance = (states->back().angles - scene.goal.angles).cwiseAbs().maxCoeff();
             row.final_closure_error = system.max_error(states->back());
             for (std::size_t i = 0; i < states->size(); ++i) {
               row.max_closure_error = std::max(row.max_closure_error, system.max_error((*states)[i]));

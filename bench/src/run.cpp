@@ -58,7 +58,7 @@ PathMetrics measure_path(const BenchScene& scene, const std::vector<FoldState>& 
     if (i > 0) m.path_length += (waypoints[i].angles - waypoints[i - 1].angles).norm();
   }
   m.final_closure_error = system.max_error(waypoints.back());
-  m.goal_distance = (waypoints.back().angles - scene.request.goal.angles).cwiseAbs().maxCoeff();
+  m.goal_distance = (waypoints.back().angles - scene.goal.angles).cwiseAbs().maxCoeff();
   // Clearance on at most 65 states along the path (its ends included): FCL distances are costly.
   std::vector<FoldState> sample;
   const std::size_t stride = std::max<std::size_t>(1, (waypoints.size() + 63) / 64);
@@ -66,7 +66,7 @@ PathMetrics measure_path(const BenchScene& scene, const std::vector<FoldState>& 
   if (sample.size() == 0 || (sample.back().angles - waypoints.back().angles).cwiseAbs().maxCoeff() > 0.0)
     sample.push_back(waypoints.back());
   m.min_clearance = simulation::min_clearance(p, sample);
-  const geometry::FoldSequence seq = geometry::path_sequence(p, waypoints, scene.request.velocity, p.title());
+  const geometry::FoldSequence seq = geometry::path_sequence(p, waypoints, scene.options.speed, p.title());
   m.cmml_events = seq.events.size();
   simulation::SimulationOptions so;
   so.collisions = true;
@@ -209,7 +209,7 @@ class SceneRun {
     const BenchScene& scene = in.scene;
     const PlanSetup& setup = in.setup;
     BenchSetup ss(setup.si);
-    set_start_and_goal(setup, ss, scene.request.goal);
+    set_start_and_goal(setup, ss, scene.goal);
     ompl::tools::Benchmark bench(ss, scene.name);
     bench.addExperimentParameter("suite", "STRING", clean(res_.suite->name));
     bench.addExperimentParameter("scene", "STRING", clean(scene.name));

@@ -58,7 +58,7 @@ ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, c
   if (const std::string inner = fallback_inner(name); !inner.empty()) {
     ob::PlannerPtr p = make_planner(inner, setup.si);
     planners::set_planner_params(*p, inner, params);
-    return planners::with_carpenter_fallback(setup, *scene.pattern, p, time, scene.request.waypoint_step);
+    return planners::with_carpenter_fallback(setup, *scene.pattern, p, time, scene.options.waypoint_step);
   }
   if (!is_deterministic_planner(name)) {
     ob::PlannerPtr p = make_planner(name, setup.si);
@@ -68,7 +68,7 @@ ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, c
   std::shared_ptr<const planners::PlanSpace> space = setup.plan_space;
   return std::make_shared<DeterministicPlanner>(
       setup.si, name, deterministic_method(name), *scene.pattern, setup.reader,
-      [space](const FoldState& f, ob::State* out) { return space->write(f, out); }, setup.prefix, scene.request.waypoint_step);
+      [space](const FoldState& f, ob::State* out) { return space->write(f, out); }, setup.prefix, scene.options.waypoint_step);
 }
 
 }  // namespace
@@ -80,7 +80,7 @@ std::optional<std::vector<FoldState>> solution_states(const PlanSetup& setup, co
   const auto path = std::dynamic_pointer_cast<og::PathGeometric>(pdef->getSolutionPath());
   if (!path || path->getStateCount() == 0) return std::nullopt;
   std::string why;
-  return path_waypoints(setup, *path, scene.request, false, &why);
+  return path_waypoints(setup, *path, scene.options, false, &why);
 }
 
 Resolved resolve(const BenchOptions& o) {
@@ -118,7 +118,7 @@ namespace {
 // The scene's space, planner setup and way out of its start; a scene whose way out collides is
 // broken (std::runtime_error), since every built-in scene must be plannable.
 PlanSetup scene_setup(const BenchScene& scene) {
-  PlanSetup setup = make_plan_setup(scene.request, true);
+  PlanSetup setup = make_plan_setup(*scene.pattern, scene.goal, scene.options, true);
   if (!setup.blocked.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.blocked);
   if (!setup.other_branch.empty()) throw std::runtime_error("scene " + scene.name + ": " + setup.other_branch);
   return setup;
@@ -127,7 +127,7 @@ PlanSetup scene_setup(const BenchScene& scene) {
 }  // namespace
 
 SceneSpaces::SceneSpaces(const BenchOptions& o, const std::string& name) : base_(make_bench_scene(name, o.seed)) {
-  if (o.space.find(',') == std::string::npos && o.space != "auto") base_.request.space = planners::parse_space(o.space);
+  if (o.space.find(',') == std::string::npos && o.space != "auto") base_.options.space = planners::parse_space(o.space);
 }
 
 const SceneSpaces::InSpace& SceneSpaces::for_entry(const std::string& entry) {
@@ -135,7 +135,7 @@ const SceneSpaces::InSpace& SceneSpaces::for_entry(const std::string& entry) {
   auto it = spaces_.find(space);
   if (it == spaces_.end()) {
     InSpace in{base_, {}};
-    if (!space.empty()) in.scene.request.space = planners::parse_space(space);
+    if (!space.empty()) in.scene.options.space = planners::parse_space(space);
     in.setup = scene_setup(in.scene);
     it = spaces_.emplace(space, std::move(in)).first;
   }

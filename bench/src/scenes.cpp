@@ -24,7 +24,7 @@
 
 namespace foldkit::bench {
 
-using planners::PlanRequest;
+using planners::PlanOptions;
 
 namespace ob = ompl::base;
 namespace gen = geometry::generators;
@@ -84,11 +84,10 @@ FoldState single_vertex_goal(const CreasePattern& p, std::mt19937& rng, int degr
   throw std::runtime_error("bench: no reachable goal for the degree-" + std::to_string(degree) + " vertex");
 }
 
-// A closed goal near `guess(rng)` (projection keeping signs), within the request's bounds, whose
+// A closed goal near `guess(rng)` (projection keeping signs), within the options' bounds, whose
 // projected straight line from the start is closed and collision-free.
 template <class Guess>
-FoldState projected_goal(const PlanRequest& req, std::mt19937& rng, Guess guess, const std::string& name) {
-  const CreasePattern& p = *req.pattern;
+FoldState projected_goal(const CreasePattern& p, const PlanOptions& req, std::mt19937& rng, Guess guess, const std::string& name) {
   const geometry::ClosureSystem system(p);
   const statespaces::AngleBounds bounds = statespaces::AngleBounds::of(p, req.use_assignment);
   const statespaces::FoldValidity validity(p, bounds, req.collisions);
@@ -151,10 +150,9 @@ BenchScene scene_of(const std::string& name, CreasePattern pattern, std::string 
   s.name = name;
   s.description = std::move(description);
   s.pattern = std::make_shared<const CreasePattern>(std::move(pattern));
-  s.request.pattern = s.pattern.get();
-  s.request.collisions = true;
-  s.request.use_assignment = false;
-  s.request.replay = false;
+  s.options.collisions = true;
+  s.options.use_assignment = false;
+  s.options.replay = false;
   return s;
 }
 
@@ -165,10 +163,10 @@ BenchScene scene_of(const std::string& name, const geometry::PatternSpec& spec, 
 // Flat to a goal near the assignment's direction, each crease scaled by its own draw from
 // [lo, hi] (the waterbomb and imported scenes).
 BenchScene assignment_scene(BenchScene s, std::mt19937& rng, double lo, double hi) {
-  s.request.use_assignment = true;
-  s.request.search_margin = 0.2;  // for the constrained spaces (see the Miura scenes)
+  s.options.use_assignment = true;
+  s.options.search_margin = 0.2;  // for the constrained spaces (see the Miura scenes)
   const Eigen::VectorXd dir = assignment_signs(*s.pattern);
-  s.request.goal = projected_goal(s.request, rng, [dir, lo, hi](std::mt19937& r) {
+  s.goal = projected_goal(*s.pattern, s.options, rng, [dir, lo, hi](std::mt19937& r) {
     std::uniform_real_distribution<double> u(lo, hi);
     Eigen::VectorXd g = dir;
     for (Eigen::Index j = 0; j < g.size(); ++j) g[j] *= u(r);
@@ -194,10 +192,10 @@ std::optional<BenchScene> miura_scene(const std::string& name, std::mt19937& rng
     const int n = name == "miura4x4" ? 4 : name == "miura10x10" ? 10 : 20;
     BenchScene s = scene_of(name, gen::miura(n, n), "Miura-ori " + std::to_string(n) + "×" + std::to_string(n) +
                                                        ", flat to partly folded along its rigid-folding mode");
-    s.request.use_assignment = true;
-    s.request.search_margin = 0.2;  // see plan_test: Miura's many branches through flat
+    s.options.use_assignment = true;
+    s.options.search_margin = 0.2;  // see plan_test: Miura's many branches through flat
     const Eigen::VectorXd dir = assignment_signs(*s.pattern);
-    s.request.goal = projected_goal(s.request, rng, [dir](std::mt19937& r) {
+    s.goal = projected_goal(*s.pattern, s.options, rng, [dir](std::mt19937& r) {
       return Eigen::VectorXd(dir * std::uniform_real_distribution<double>(0.3, 0.9)(r));
     }, name);
     return s;
@@ -207,8 +205,8 @@ std::optional<BenchScene> miura_scene(const std::string& name, std::mt19937& rng
     BenchScene s = scene_of(name, gen::miura(n, n), "Miura-ori " + std::to_string(n) + "×" + std::to_string(n) +
                                                        ", flat to every zig-zag crease at ±80° (issue 16); the goal "
                                                        "does not depend on the seed");
-    s.request.use_assignment = true;
-    s.request.goal = miura_folded(*s.pattern, n, n, 80.0 * M_PI / 180.0);
+    s.options.use_assignment = true;
+    s.goal = miura_folded(*s.pattern, n, n, 80.0 * M_PI / 180.0);
     return s;
   }
   return std::nullopt;
@@ -238,7 +236,7 @@ BenchScene make_bench_scene(const std::string& name, unsigned int seed) {
     BenchScene s = scene_of(name, gen::single_vertex(random ? gen::random_sectors(d, rng, std::min(0.2, M_PI / d)) : symmetric_sectors(d)),
                             std::string("single vertex of degree ") + std::to_string(d) +
                                 (random ? ", random sectors" : ", symmetric sectors") + ", flat to a random folded state");
-    s.request.goal = single_vertex_goal(*s.pattern, rng, d);
+    s.goal = single_vertex_goal(*s.pattern, rng, d);
     return s;
   }
   for (int d : kAnyDegrees) {
@@ -247,12 +245,12 @@ BenchScene make_bench_scene(const std::string& name, unsigned int seed) {
                             "single vertex of degree " + std::to_string(d) +
                                 ", random sectors, flat to a random closed collision-free state (not filtered for "
                                 "reachability)");
-    s.request.goal = single_vertex_goal(*s.pattern, rng, d, false);
+    s.goal = single_vertex_goal(*s.pattern, rng, d, false);
     return s;
   }
   if (name == "boat") {
     BenchScene s = scene_of(name, gen::boat(), "the boat of the paper's Fig. 3: keel folded, bow and stern diagonals valley");
-    s.request.goal = projected_goal(s.request, rng, [](std::mt19937& r) {
+    s.goal = projected_goal(*s.pattern, s.options, rng, [](std::mt19937& r) {
       Eigen::VectorXd g(10);
       g << 0.9, 0.9, 0.9, 0.9, -0.5, 0.5, 0.0, 0.0, 0.5, -0.5;
       return Eigen::VectorXd(g * std::uniform_real_distribution<double>(0.5, 1.2)(r));
@@ -270,7 +268,7 @@ BenchScene make_bench_scene(const std::string& name, unsigned int seed) {
   if (name == "cube-sheet") {
     BenchScene s = scene_of(name, gen::cube_sheet(1), "one cube net (Fig. 8a), flat to most of the way to the cube");
     const Eigen::VectorXd dir = assignment_signs(*s.pattern);
-    s.request.goal = projected_goal(s.request, rng, [dir](std::mt19937& r) {
+    s.goal = projected_goal(*s.pattern, s.options, rng, [dir](std::mt19937& r) {
       std::uniform_real_distribution<double> u(0.5, 0.9);
       Eigen::VectorXd g = dir;
       for (Eigen::Index j = 0; j < g.size(); ++j) g[j] *= u(r) * M_PI / 2;
@@ -289,7 +287,7 @@ BenchScene make_bench_scene(const std::string& name, unsigned int seed) {
     po.tolerance = 1e-12;
     const auto r = geometry::project(geometry::ClosureSystem(*s.pattern), FoldState{guess}, po);
     if (!r.status.ok()) throw std::runtime_error("bench: the corner-cube goal does not close: " + r.status.message);
-    s.request.goal = r.state;
+    s.goal = r.state;
     return s;
   }
   std::string known;

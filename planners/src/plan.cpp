@@ -54,67 +54,68 @@ void set_start_and_goal(const PlanSetup& setup, og::SimpleSetup& ss, const FoldS
 namespace {
 
 // The start and goal must close, keep the assignment and not cross (std::invalid_argument).
-void check_ends(const PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) {
+void check_ends(const PlanSetup& setup, const statespaces::AngleBounds& bounds) {
   const FoldState& start = setup.start;
-  const double start_error = setup.system->max_error(start), goal_error = setup.system->max_error(req.goal);
+  const double start_error = setup.system->max_error(start), goal_error = setup.system->max_error(setup.goal);
   if (start_error > 1e-6) throw PlanInputError(PlanInputError::End::Start, "plan: the start is not closed (error " + std::to_string(start_error) + " rad)");
   if (goal_error > 1e-6) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal is not closed (error " + std::to_string(goal_error) + " rad)");
   if (!bounds.contains(start, 1e-9)) throw PlanInputError(PlanInputError::End::Start, "plan: the start breaks the mountain/valley assignment");
-  if (!bounds.contains(req.goal, 1e-9)) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal breaks the mountain/valley assignment");
+  if (!bounds.contains(setup.goal, 1e-9)) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal breaks the mountain/valley assignment");
   if (!setup.validity->valid(start)) throw PlanInputError(PlanInputError::End::Start, "plan: the start state is not valid (facets cross)");
-  if (!setup.validity->valid(req.goal)) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal state is not valid (facets cross)");
+  if (!setup.validity->valid(setup.goal)) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal state is not valid (facets cross)");
 }
 
 }  // namespace
 
 namespace {
 
-// The space of the request's kind (SpaceKind::Auto: single-vertex for one interior vertex and no
+// The space of the options' kind (SpaceKind::Auto: single-vertex for one interior vertex and no
 // hole, else driving), or the joint box for a pattern without loops.
-std::shared_ptr<PlanSpace> space_of(const PlanRequest& req, const geometry::ClosureSystem& system) {
-  if (system.rows() == 0) return make_joint_plan_space();
-  SpaceKind kind = req.space;
+std::shared_ptr<PlanSpace> space_of(const PlanSetup& setup, const PlanOptions& options) {
+  if (setup.system->rows() == 0) return make_joint_plan_space();
+  SpaceKind kind = options.space;
   if (kind == SpaceKind::Auto)
-    kind = req.pattern->interior_vertices().size() == 1 && geometry::hole_count(*req.pattern) == 0 ? SpaceKind::SingleVertex
-                                                                                                : SpaceKind::Driving;
+    kind = setup.pattern->interior_vertices().size() == 1 && geometry::hole_count(*setup.pattern) == 0 ? SpaceKind::SingleVertex
+                                                                                                    : SpaceKind::Driving;
   return make_plan_space(kind);
 }
 
 // The prefix: the start, or, below the space's rank, its way out along geometry::lead_in (the one
 // lead-in every space shares).
-void lead_in(PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) {
+void lead_in(PlanSetup& setup, const PlanOptions& options, const statespaces::AngleBounds& bounds) {
   setup.prefix = {setup.start};
-  const Eigen::Index rank = setup.plan_space->lead_in_rank(setup, req, bounds);
+  const Eigen::Index rank = setup.plan_space->lead_in_rank(setup, options, bounds);
   if (rank == 0) return;
-  setup.prefix = geometry::lead_in(*setup.system, setup.start, req.goal, rank, req.waypoint_step);
+  setup.prefix = geometry::lead_in(*setup.system, setup.start, setup.goal, rank, options.waypoint_step);
   if (setup.prefix.empty()) throw PlanInputError(PlanInputError::End::Start, "plan: no closed way out of the singular start state");
 }
 
 }  // namespace
 
-PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
-  if (!req.pattern) throw std::invalid_argument("plan: no pattern");
-  const geometry::CreasePattern& pattern = *req.pattern;
+PlanSetup make_plan_setup(const geometry::CreasePattern& pattern, const FoldState& goal, const PlanOptions& options,
+                          bool allow_no_loops) {
   const auto n = static_cast<Eigen::Index>(pattern.joints().size());
-  if (req.goal.angles.size() != n) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal does not hold one angle per joint");
+  if (goal.angles.size() != n) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal does not hold one angle per joint");
   PlanSetup setup;
-  setup.start = req.start ? *req.start : FoldState::flat(pattern);
+  setup.pattern = &pattern;
+  setup.goal = goal;
+  setup.start = options.start ? *options.start : FoldState::flat(pattern);
   if (setup.start.angles.size() != n) throw PlanInputError(PlanInputError::End::Start, "plan: the start does not hold one angle per joint");
-  if (!(req.resolution > 0.0) || !(req.waypoint_step > 0.0) || !(req.velocity > 0.0))
-    throw std::invalid_argument("plan: resolution, waypoint step and velocity must be positive");
+  if (!(options.resolution > 0.0) || !(options.waypoint_step > 0.0) || !(options.speed > 0.0))
+    throw std::invalid_argument("plan: resolution, waypoint step and speed must be positive");
 
   auto system = std::make_shared<const geometry::ClosureSystem>(pattern);
   setup.system = system;
   if (system->rows() == 0 && !allow_no_loops)
     throw std::invalid_argument("plan: the pattern has no closed loop (every state is closed)");
-  const statespaces::AngleBounds bounds = statespaces::AngleBounds::of(pattern, req.use_assignment);
-  auto validity = std::make_shared<statespaces::FoldValidity>(pattern, bounds, req.collisions);
+  const statespaces::AngleBounds bounds = statespaces::AngleBounds::of(pattern, options.use_assignment);
+  auto validity = std::make_shared<statespaces::FoldValidity>(pattern, bounds, options.collisions);
   setup.validity = validity;
-  check_ends(setup, req, bounds);
+  check_ends(setup, bounds);
 
-  setup.plan_space = space_of(req, *system);
-  lead_in(setup, req, bounds);
-  setup.plan_space->build(setup, req, bounds);
+  setup.plan_space = space_of(setup, options);
+  lead_in(setup, options, bounds);
+  setup.plan_space->build(setup, options, bounds);
   if (setup.prefix.size() > 1) {
     ob::ScopedState<> probe(setup.space);
     if (!setup.plan_space->write(setup.prefix.back(), probe.get()))
@@ -126,25 +127,25 @@ PlanSetup make_plan_setup(const PlanRequest& req, bool allow_no_loops) {
   return setup;
 }
 
-std::optional<std::vector<FoldState>> path_waypoints(const PlanSetup& setup, og::PathGeometric path, const PlanRequest& req,
+std::optional<std::vector<FoldState>> path_waypoints(const PlanSetup& setup, og::PathGeometric path, const PlanOptions& options,
                                                      bool to_goal, std::string* why) {
-  const std::vector<FoldState> states = setup.plan_space->path_states(setup, std::move(path), req.waypoint_step);
+  const std::vector<FoldState> states = setup.plan_space->path_states(setup, std::move(path), options.waypoint_step);
   std::vector<FoldState> full = setup.prefix;
   full.insert(full.end(), states.begin() + (states.empty() ? 0 : 1), states.end());
-  if (to_goal && (full.size() < 2 || (full.back().angles - req.goal.angles).cwiseAbs().maxCoeff() > 1e-6))
-    full.push_back(req.goal);
-  auto dense = geometry::densify(*setup.system, full, req.waypoint_step);
+  if (to_goal && (full.size() < 2 || (full.back().angles - setup.goal.angles).cwiseAbs().maxCoeff() > 1e-6))
+    full.push_back(setup.goal);
+  auto dense = geometry::densify(*setup.system, full, options.waypoint_step);
   if (!dense && why) *why = "the planned path jumps (interpolation left the manifold)";
   return dense;
 }
 
-geometry::FoldSequence plan_sequence(const PlanRequest& req, const PlanSetup& setup, const std::vector<FoldState>& waypoints) {
-  const geometry::CreasePattern& pattern = *req.pattern;
-  geometry::FoldSequence seq = geometry::path_sequence(pattern, waypoints, req.velocity, pattern.title());
-  if (!req.start_sequence.events.empty()) {
+geometry::FoldSequence plan_sequence(const PlanSetup& setup, const PlanOptions& options, const std::vector<FoldState>& waypoints) {
+  const geometry::CreasePattern& pattern = *setup.pattern;
+  geometry::FoldSequence seq = geometry::path_sequence(pattern, waypoints, options.speed, pattern.title());
+  if (!options.start_sequence.events.empty()) {
     // path_sequence starts from the flat sheet: its first event (flat → start) is replaced by
     // the start's own sequence.
-    geometry::FoldSequence joined = req.start_sequence;
+    geometry::FoldSequence joined = options.start_sequence;
     const bool start_flat = setup.start.angles.cwiseAbs().maxCoeff() == 0.0;
     for (std::size_t e = start_flat ? 0 : 1; e < seq.events.size(); ++e) joined.events.push_back(seq.events[e]);
     for (std::size_t e = 0; e < joined.events.size(); ++e) joined.events[e].number = static_cast<int>(e) + 1;
@@ -156,24 +157,24 @@ geometry::FoldSequence plan_sequence(const PlanRequest& req, const PlanSetup& se
 
 namespace {
 
-// Runs the request's planner (with the single-vertex fallback where it applies) until its first
+// Runs the options' planner (with the single-vertex fallback where it applies) until its first
 // exact solution or the time limit; the solution path, or nothing with result.status set.
-std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanRequest& req, PlanResult& result) {
+std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanOptions& options, PlanResult& result) {
   og::SimpleSetup ss(setup.si);
-  ob::PlannerPtr planner = make_planner(req.planner, setup.si);
-  set_planner_params(*planner, req.planner, req.params);
+  ob::PlannerPtr planner = make_planner(options.planner, setup.si);
+  set_planner_params(*planner, options.planner, options.params);
   std::shared_ptr<CarpenterFallbackPlanner> fallback;
-  if (setup.plan_space->fallback() == Fallback::Carpenter && req.fallback) {
-    fallback = with_carpenter_fallback(setup, *req.pattern, planner, req.time, req.waypoint_step);
+  if (setup.plan_space->fallback() == Fallback::Carpenter && options.fallback) {
+    fallback = with_carpenter_fallback(setup, *setup.pattern, planner, options.time, options.waypoint_step);
     planner = fallback;
   }
   ss.setPlanner(planner);
-  set_start_and_goal(setup, ss, req.goal);
+  set_start_and_goal(setup, ss, setup.goal);
   ss.setup();
 
   const auto t0 = std::chrono::steady_clock::now();
-  const ob::PlannerStatus status = run_planner(setup, ss, req.time);
-  result.time = elapsed(t0);
+  const ob::PlannerStatus status = run_planner(setup, ss, options.time);
+  result.seconds = elapsed(t0);
   result.fallback = fallback && fallback->used_fallback();
   if (status == ob::PlannerStatus::EXACT_SOLUTION) return ss.getSolutionPath();
   // The fallback failed (its reason), or the time ran out (OMPL's TIMEOUT, or only an approximate
@@ -181,10 +182,10 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanRequest
   const std::string why_not = fallback ? fallback->fallback_message() : std::string();
   if (status == ob::PlannerStatus::TIMEOUT || status == ob::PlannerStatus::APPROXIMATE_SOLUTION)
     result.status = {geometry::StatusCode::LimitReached,
-                     "no plan found within " + std::to_string(req.time) + " s" + (why_not.empty() ? "" : " (" + why_not + ")")};
+                     "no plan found within " + std::to_string(options.time) + " s" + (why_not.empty() ? "" : " (" + why_not + ")")};
   else if (!why_not.empty())
-    result.status = {geometry::StatusCode::NoProgress, "no plan: " + req.planner + " found none in " +
-                                                           std::to_string(kSamplerShare * req.time) + " s, and " + why_not};
+    result.status = {geometry::StatusCode::NoProgress, "no plan: " + options.planner + " found none in " +
+                                                           std::to_string(kSamplerShare * options.time) + " s, and " + why_not};
   else if (status == ob::PlannerStatus::INVALID_START || status == ob::PlannerStatus::INVALID_GOAL)
     result.status = {geometry::StatusCode::InvalidInput, "no plan: OMPL reports " + status.asString()};
   else
@@ -194,15 +195,14 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanRequest
 
 }  // namespace
 
-PlanResult plan(const PlanRequest& req) {
-  if (!req.pattern) throw std::invalid_argument("plan: no pattern");
-  if (!(req.time > 0.0) || !std::isfinite(req.time)) throw std::invalid_argument("plan: the time limit must be positive");
-  if (req.quiet) ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-  ompl::RNG::setSeed(std::max(1u, req.seed));
+PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, const PlanOptions& options) {
+  if (!(options.time > 0.0) || !std::isfinite(options.time)) throw std::invalid_argument("plan: the time limit must be positive");
+  if (options.quiet) ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  ompl::RNG::setSeed(std::max(1u, options.seed));
 
-  const PlanSetup setup = make_plan_setup(req);
+  const PlanSetup setup = make_plan_setup(pattern, goal, options);
   PlanResult result;
-  result.planner = req.planner;
+  result.planner = options.planner;
   result.space = setup.plan_space->name();
   if (!setup.blocked.empty()) {
     result.status = {geometry::StatusCode::Collision, setup.blocked};
@@ -213,34 +213,34 @@ PlanResult plan(const PlanRequest& req) {
   // start's straight continuation reaches has a direct path: the planner keeps all of the time
   // (a Miura 40×40 from a fold to 0.5 to one to 0.9 needs 1.7 s, more than the quarter).
   const bool via_flat =
-      req.fallback && setup.plan_space->fallback() == Fallback::ViaFlat && !setup.continues_to_goal &&
+      options.fallback && setup.plan_space->fallback() == Fallback::ViaFlat && !setup.continues_to_goal &&
       setup.start.angles.cwiseAbs().maxCoeff() > 0.0;
   if (!setup.other_branch.empty()) {
-    if (via_flat) return detail::plan_via_flat(req, setup, result, setup.other_branch);
+    if (via_flat) return detail::plan_via_flat(setup, options, result, setup.other_branch);
     result.status = {geometry::StatusCode::NoProgress, "no plan: " + setup.other_branch + ": plan each end from flat instead"};
     return result;
   }
-  PlanRequest direct = req;
-  if (via_flat) direct.time = kSamplerShare * req.time;
+  PlanOptions direct = options;
+  if (via_flat) direct.time = kSamplerShare * options.time;
   std::optional<og::PathGeometric> path = solve(setup, direct, result);
   if (!path && via_flat)
     return detail::plan_via_flat(
-        req, setup, result, req.planner + " found no direct plan in " + std::to_string(direct.time) + " s (" + result.status.message + ")");
+        setup, options, result, options.planner + " found no direct plan in " + std::to_string(direct.time) + " s (" + result.status.message + ")");
   if (!path) return result;
-  if (req.simplify) {
+  if (options.simplify) {
     og::PathSimplifier simplifier(setup.si);
     simplifier.reduceVertices(*path);
     simplifier.shortcutPath(*path);
   }
   std::string why;
-  const auto dense = path_waypoints(setup, *path, req, true, &why);
+  const auto dense = path_waypoints(setup, *path, options, true, &why);
   if (!dense) {
     result.status = {geometry::StatusCode::ClosureViolated, why};
     return result;
   }
-  return detail::finish_plan(req, setup, *dense, result,
-                             result.fallback ? "solved by the Carpenter fallback (" + req.planner + " found no plan in " +
-                                                   std::to_string(kSamplerShare * req.time) + " s)"
+  return detail::finish_plan(setup, options, *dense, result,
+                             result.fallback ? "solved by the Carpenter fallback (" + options.planner + " found no plan in " +
+                                                   std::to_string(kSamplerShare * options.time) + " s)"
                                              : std::string("solved"));
 }
 

@@ -11,7 +11,7 @@ namespace foldkit::planners::detail {
 using geometry::FoldState;
 
 // Every path passes these, whichever way it was found.
-PlanResult& finish_plan(const PlanRequest& req, const PlanSetup& setup, std::vector<FoldState> waypoints, PlanResult& result,
+PlanResult& finish_plan(const PlanSetup& setup, const PlanOptions& options, std::vector<FoldState> waypoints, PlanResult& result,
                         const std::string& success) {
   result.waypoints = std::move(waypoints);
   result.path_length = 0.0;
@@ -24,12 +24,12 @@ PlanResult& finish_plan(const PlanRequest& req, const PlanSetup& setup, std::vec
                      "the planned path is not closed (error " + std::to_string(result.max_closure_error) + " rad)"};
     return result;
   }
-  result.sequence = plan_sequence(req, setup, result.waypoints);
-  if (req.replay) {
+  result.sequence = plan_sequence(setup, options, result.waypoints);
+  if (options.replay) {
     simulation::SimulationOptions so;
-    so.collisions = req.collisions;
-    so.progress = req.progress;
-    result.replay = simulation::simulate(*req.pattern, result.sequence, so);
+    so.collisions = options.collisions;
+    so.progress = options.progress;
+    result.replay = simulation::simulate(*setup.pattern, result.sequence, so);
     result.max_closure_error = std::max(result.max_closure_error, result.replay->max_closure_error);
     if (!result.replay->status) {
       result.status = {result.replay->status.code, "the simulator rejects the plan: " + result.replay->status.message};
@@ -45,26 +45,25 @@ PlanResult& finish_plan(const PlanRequest& req, const PlanSetup& setup, std::vec
 // sheet's closed states passes through flat, so this joins ends that no motion of one driving
 // space joins (another branch, or sheets of a multi-DOF pattern that meet only at singular
 // states). `why`: why the direct way was given up.
-PlanResult& plan_via_flat(const PlanRequest& req, const PlanSetup& setup, PlanResult& result, const std::string& why) {
+PlanResult& plan_via_flat(const PlanSetup& setup, const PlanOptions& options, PlanResult& result, const std::string& why) {
   // A leg's refusal (a singular end, say) is this plan's failure, not an input error of its own
   // goal: the legs' ends are the start and goal already checked.
-  const auto leg_plan = [](const PlanRequest& r) {
+  const auto leg_plan = [&](const FoldState& goal, const PlanOptions& leg) {
     try {
-      return plan(r);
+      return plan(*setup.pattern, goal, leg);
     } catch (const std::invalid_argument& e) {
       PlanResult failed;
       failed.status = {geometry::StatusCode::NoProgress, e.what()};
       return failed;
     }
   };
-  PlanRequest leg = req;
+  PlanOptions leg = options;
   leg.start.reset();
   leg.start_sequence = {};
   leg.replay = false;
   leg.progress = nullptr;
-  const double left = std::max(0.0, req.time - result.time);
+  const double left = std::max(0.0, options.time - result.seconds);
   leg.time = std::max(1e-3, 0.5 * left);
-  leg.goal = setup.start;
   // Out of time stays out of time; any other failure of a leg is no progress.
   const auto failed = [&](const PlanResult& r, const char* end) -> PlanResult& {
     result.status = {r.status.code == geometry::StatusCode::LimitReached ? geometry::StatusCode::LimitReached
@@ -72,18 +71,17 @@ PlanResult& plan_via_flat(const PlanRequest& req, const PlanSetup& setup, PlanRe
                      "no plan: " + why + "; via flat: no plan from flat to the " + end + " (" + r.status.message + ")"};
     return result;
   };
-  const PlanResult out = leg_plan(leg);
-  result.time += out.time;
+  const PlanResult out = leg_plan(setup.start, leg);
+  result.seconds += out.seconds;
   if (!out.status) return failed(out, "start");
-  leg.goal = req.goal;
-  leg.time = std::max(1e-3, req.time - result.time);
-  const PlanResult in = leg_plan(leg);
-  result.time += in.time;
+  leg.time = std::max(1e-3, options.time - result.seconds);
+  const PlanResult in = leg_plan(setup.goal, leg);
+  result.seconds += in.seconds;
   if (!in.status) return failed(in, "goal");
   std::vector<FoldState> waypoints(out.waypoints.rbegin(), out.waypoints.rend());
   waypoints.insert(waypoints.end(), in.waypoints.begin() + 1, in.waypoints.end());
   result.fallback = result.via_flat = true;
-  return finish_plan(req, setup, std::move(waypoints), result, "solved via flat (" + why + ")");
+  return finish_plan(setup, options, std::move(waypoints), result, "solved via flat (" + why + ")");
 }
 
 }  // namespace foldkit::planners::detail

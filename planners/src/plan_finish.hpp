@@ -11,11 +11,11 @@ namespace foldkit::planners::detail {
 
 // Closure along `waypoints`, the CMML and the simulator's replay, into `result`; its status is
 // Success with the message `success` when all pass.
-PlanResult& finish_plan(const PlanRequest& req, const PlanSetup& setup, std::vector<geometry::FoldState> waypoints,
+PlanResult& finish_plan(const PlanSetup& setup, const PlanOptions& options, std::vector<geometry::FoldState> waypoints,
                         PlanResult& result, const std::string& success);
 
-// Start → flat → goal as two plans from flat (PlanRequest::fallback in the driving space), in the
-// time `result.time` leaves of req.time; `why` says why the direct way was given up.
-PlanResult& plan_via_flat(const PlanRequest& req, const PlanSetup& setup, PlanResult& result, const std::string& why);
+// Start → flat → goal as two plans from flat (PlanOptions::fallback in the driving space), in the
+// time `result.seconds` leaves of options.time; `why` says why the direct way was given up.
+PlanResult& plan_via_flat(const PlanSetup& setup, const PlanOptions& options, PlanResult& result, const std::string& why);
 
 }  // namespace foldkit::planners::detail

@@ -79,10 +79,10 @@ Fallback PlanSpace::fallback() const { return Fallback::None; }
 
 namespace spaces {
 
-void use_space(PlanSetup& setup, const PlanRequest& req) {
+void use_space(PlanSetup& setup, const PlanOptions& options) {
   setup.si = std::make_shared<ob::SpaceInformation>(setup.space);
   setup.si->setMotionValidator(std::make_shared<statespaces::FoldMotionValidator>(setup.si, setup.validity, setup.reader,
-                                                                                   req.resolution, 2.5 * req.resolution));
+                                                                                   options.resolution, 2.5 * options.resolution));
 }
 
 std::vector<FoldState> states_along(const PlanSetup& setup, const og::PathGeometric& path, double step, const Motion& motion) {

@@ -25,7 +25,15 @@ void bind_result(py::module_& m) {
       .def_property_readonly("solved", [](const PlanResult& r) { return r.status.ok(); }, "Whether a valid plan was found.")
       .def_readonly("planner", &PlanResult::planner, "The planner's name.")
       .def_readonly("space", &PlanResult::space, ("The space searched: " + quoted_spaces(1) + ".").c_str())
-      .def_readonly("time", &PlanResult::time, "Seconds the planner ran (the fallback included).")
+      .def_readonly("seconds", &PlanResult::seconds, "Wall-clock seconds the search ran (the fallback included).")
+      .def_property_readonly(
+          "time",
+          [](const PlanResult& r) {
+            if (PyErr_WarnEx(PyExc_DeprecationWarning, "PlanResult.time is deprecated: use seconds", 1) != 0)
+              throw py::error_already_set();
+            return r.seconds;
+          },
+          "Deprecated name of `seconds`.")
       .def_readonly("fallback", &PlanResult::fallback,
                     "Whether the path came from a fallback: Carpenter's rule on the sphere (single vertex) or via flat.")
       .def_readonly("via_flat", &PlanResult::via_flat,
@@ -49,51 +57,65 @@ void bind_plan(py::module_& m) {
   bind_result(m);
   m.def(
       "plan",
-      [](const geometry::CreasePattern& p, const Eigen::VectorXd& goal, const py::object& start, const std::string& space,
+      [](const geometry::CreasePattern& p, const py::object& goal, const py::object& start, const std::string& space,
          const std::string& planner, double time, unsigned seed, bool collisions, bool use_assignment, bool simplify,
-         double search_margin, double waypoint_step, double velocity, bool replay,
-         const std::map<std::string, std::string>& params, bool fallback) {
+         double search_margin, double waypoint_step, double speed, bool replay, const std::map<std::string, std::string>& params,
+         bool fallback, const py::object& velocity) {
+        if (!velocity.is_none()) {
+          // The old name of `speed` (issue 37: `velocity` is the desired velocity of fold()).
+          if (PyErr_WarnEx(PyExc_DeprecationWarning, "plan(velocity=...) is deprecated: use speed=", 1) != 0)
+            throw py::error_already_set();
+          speed = velocity.cast<double>();
+        }
         require_positive(time, "time");
         require_positive(waypoint_step, "waypoint_step");
-        require_positive(velocity, "velocity");
+        require_positive(speed, "speed");
         require(std::isfinite(search_margin), "search_margin", "finite (negative: automatic)", search_margin);
-        planners::PlanRequest req;
-        req.pattern = &p;
-        req.goal = to_state(p, goal, "goal");
+        planners::PlanOptions options;
         if (!start.is_none()) {
           if (py::isinstance<geometry::FoldSequence>(start)) {
-            req.start_sequence = start.cast<geometry::FoldSequence>();
-            require_valid(p, req.start_sequence, source_of(start));
-            req.start = geometry::end_state(p, req.start_sequence);
+            options.start_sequence = start.cast<geometry::FoldSequence>();
+            require_valid(p, options.start_sequence, source_of(start));
+            options.start = geometry::end_state(p, options.start_sequence);
           } else {
-            req.start = state_or_flat(p, start, "start");
+            options.start = state_or_flat(p, start, "start");
           }
         }
-        req.space = planners::parse_space(space);
-        req.planner = planners::canonical_planner(planner);
-        req.time = time;
-        req.seed = seed;
-        req.collisions = collisions;
-        req.use_assignment = use_assignment;
-        req.simplify = simplify;
-        req.search_margin = search_margin;
-        req.waypoint_step = waypoint_step;
-        req.velocity = velocity;
-        req.replay = replay;
-        req.params.assign(params.begin(), params.end());
-        req.fallback = fallback;
+        geometry::FoldState goal_state;
+        if (py::isinstance<geometry::FoldSequence>(goal)) {  // its end state, as the CLI's --goal CMML
+          const auto seq = goal.cast<geometry::FoldSequence>();
+          require_valid(p, seq, source_of(goal));
+          goal_state = geometry::end_state(p, seq);
+        } else {
+          goal_state = to_state(p, goal.cast<Eigen::VectorXd>(), "goal");
+        }
+        options.space = planners::parse_space(space);
+        options.planner = planners::canonical_planner(planner);
+        options.time = time;
+        options.seed = seed;
+        options.collisions = collisions;
+        options.use_assignment = use_assignment;
+        options.simplify = simplify;
+        options.search_margin = search_margin;
+        options.waypoint_step = waypoint_step;
+        options.speed = speed;
+        options.replay = replay;
+        options.params.assign(params.begin(), params.end());
+        options.fallback = fallback;
         py::gil_scoped_release release;
-        return planners::plan(req);
+        return planners::plan(p, goal_state, options);
       },
-      // The defaults are PlanRequest's.
-      py::arg("pattern"), py::arg("goal"), py::arg("start") = py::none(), py::arg("space") = std::string(planners::to_string(planners::PlanRequest{}.space)),
-      py::arg("planner") = planners::PlanRequest{}.planner, py::arg("time") = planners::PlanRequest{}.time,
-      py::arg("seed") = planners::PlanRequest{}.seed, py::arg("collisions") = planners::PlanRequest{}.collisions,
-      py::arg("use_assignment") = planners::PlanRequest{}.use_assignment, py::arg("simplify") = planners::PlanRequest{}.simplify,
-      py::arg("search_margin") = planners::PlanRequest{}.search_margin, py::arg("waypoint_step") = planners::PlanRequest{}.waypoint_step,
-      py::arg("velocity") = planners::PlanRequest{}.velocity, py::arg("replay") = planners::PlanRequest{}.replay,
-      py::arg("params") = std::map<std::string, std::string>{}, py::arg("fallback") = planners::PlanRequest{}.fallback,
-      ("Plans from `start` to the closed state `goal`. `start` is None (flat), a FoldSequence (its end state is the start; "
+      // The defaults are PlanOptions'.
+      py::arg("pattern"), py::arg("goal"), py::arg("start") = py::none(), py::arg("space") = std::string(planners::to_string(planners::PlanOptions{}.space)),
+      py::arg("planner") = planners::PlanOptions{}.planner, py::arg("time") = planners::PlanOptions{}.time,
+      py::arg("seed") = planners::PlanOptions{}.seed, py::arg("collisions") = planners::PlanOptions{}.collisions,
+      py::arg("use_assignment") = planners::PlanOptions{}.use_assignment, py::arg("simplify") = planners::PlanOptions{}.simplify,
+      py::arg("search_margin") = planners::PlanOptions{}.search_margin, py::arg("waypoint_step") = planners::PlanOptions{}.waypoint_step,
+      py::arg("speed") = planners::PlanOptions{}.speed, py::arg("replay") = planners::PlanOptions{}.replay,
+      py::arg("params") = std::map<std::string, std::string>{}, py::arg("fallback") = planners::PlanOptions{}.fallback,
+      py::arg("velocity") = py::none(),
+      ("Plans from `start` to the closed state `goal`: an array of angles (radians) or a FoldSequence (its end state, as "
+       "the CLI's --goal CMML). `start` is None (flat), a FoldSequence (its end state is the start; "
       "the plan's sequence begins with it, as the CLI's --start CMML), or a closed state: then the plan's sequence reaches "
       "it from flat in one straight event, which the replay accepts only where that line stays closed (pass the "
       "FoldSequence otherwise). Planning runs "
@@ -102,7 +124,8 @@ void bind_plan(py::module_& m) {
       "none in a quarter of `time`, `fallback` goes through flat: on a single vertex the path of Carpenter's rule on the "
       "sphere (start, flat, goal); in the driving space from a folded start, a plan from flat to the start, reversed, then "
       "one from flat to the goal (at once for a goal known to lie on another branch). The result's `fallback` and "
-      "`via_flat` say so. Returns a PlanResult (check `solved`).")
+      "`via_flat` say so. `speed` is the fastest crease's speed in each CMML event, rad/s (`velocity`: its deprecated "
+      "name). Returns a PlanResult (check `status`).")
           .c_str());
   m.def("planners", &planners::planner_names, "The planner names plan() accepts.");
   m.def("spaces", &planners::space_names, "The space names plan() accepts ('auto' first).");

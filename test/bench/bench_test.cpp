@@ -41,17 +41,17 @@ TEST(BenchSuite, EveryScenesGoalIsClosedValidAndDrawnFromTheSeed) {
   for (const std::string& name : fp::bench_scene_names()) {
     SCOPED_TRACE(name);
     const fp::BenchScene a = fp::make_bench_scene(name, 5), b = fp::make_bench_scene(name, 5);
-    ASSERT_EQ(a.request.goal.angles.size(), static_cast<Eigen::Index>(a.pattern->joints().size()));
-    EXPECT_EQ(a.request.goal.angles, b.request.goal.angles);  // same seed, same goal, bit for bit
-    EXPECT_LT(ClosureSystem(*a.pattern).max_error(a.request.goal), 1e-9);
-    EXPECT_GT(a.request.goal.angles.cwiseAbs().maxCoeff(), 0.1);  // folded, not flat
+    ASSERT_EQ(a.goal.angles.size(), static_cast<Eigen::Index>(a.pattern->joints().size()));
+    EXPECT_EQ(a.goal.angles, b.goal.angles);  // same seed, same goal, bit for bit
+    EXPECT_LT(ClosureSystem(*a.pattern).max_error(a.goal), 1e-9);
+    EXPECT_GT(a.goal.angles.cwiseAbs().maxCoeff(), 0.1);  // folded, not flat
     foldkit::simulation::CollisionWorld world(*a.pattern);
-    EXPECT_TRUE(world.check(foldkit::geometry::facet_poses(*a.pattern, foldkit::geometry::make_tree(*a.pattern), a.request.goal),
-                            a.request.goal)
+    EXPECT_TRUE(world.check(foldkit::geometry::facet_poses(*a.pattern, foldkit::geometry::make_tree(*a.pattern), a.goal),
+                            a.goal)
                     .empty());
     if (name != "corner-cube" && name.find("-80") == std::string::npos) {
       const fp::BenchScene c = fp::make_bench_scene(name, 6);
-      EXPECT_NE(a.request.goal.angles, c.request.goal.angles);  // another seed, another goal
+      EXPECT_NE(a.goal.angles, c.goal.angles);  // another seed, another goal
     }
   }
   EXPECT_THROW(fp::make_bench_scene("vertex5-random", 1), std::invalid_argument);
@@ -65,8 +65,8 @@ TEST(BenchSuite, MiuraScaleGoalsFollowTheClosedForm) {
   const std::size_t n_straight = 10 * 9;
   ASSERT_EQ(s.pattern->joints().size(), 180u);
   for (std::size_t j = 0; j < s.pattern->joints().size(); ++j)
-    EXPECT_NEAR(std::abs(s.request.goal.angles[static_cast<Eigen::Index>(j)]), j < n_straight ? straight : zigzag, 1e-9) << j;
-  EXPECT_LT(ClosureSystem(*s.pattern).max_error(s.request.goal), 1e-12);
+    EXPECT_NEAR(std::abs(s.goal.angles[static_cast<Eigen::Index>(j)]), j < n_straight ? straight : zigzag, 1e-9) << j;
+  EXPECT_LT(ClosureSystem(*s.pattern).max_error(s.goal), 1e-12);
 }
 
 TEST(BenchSuite, SuitesNameKnownScenesAndPlanners) {
@@ -266,9 +266,9 @@ TEST(BenchSuite, SeveralDofScenesPlanAndReplay) {
   for (const char* name : {"bird-base", "resch", "waterbomb4x4"}) {
     SCOPED_TRACE(name);
     fp::BenchScene s = fp::make_bench_scene(name, 1);
-    s.request.replay = true;
-    s.request.time = 20.0;
-    const auto r = foldkit::planners::plan(s.request);
+    s.options.replay = true;
+    s.options.time = 20.0;
+    const auto r = foldkit::planners::plan(*s.pattern, s.goal, s.options);
     ASSERT_TRUE(r.status.ok()) << r.status.message;
     EXPECT_EQ(r.space, "driving");
     ASSERT_TRUE(r.replay.has_value());
@@ -284,9 +284,9 @@ TEST(BenchSuite, SeveralDofScenesPlanAndReplay) {
 TEST(BenchSuite, CarpenterFlattensTheDegree32GoalOfSeed11) {
   const fp::BenchScene s = fp::make_bench_scene("vertex32-any", 11);
   std::string why;
-  const auto way = foldkit::planners::carpenter_path(*s.pattern, FoldState::flat(*s.pattern), s.request.goal, 0.02, &why);
+  const auto way = foldkit::planners::carpenter_path(*s.pattern, FoldState::flat(*s.pattern), s.goal, 0.02, &why);
   ASSERT_FALSE(way.empty()) << why;
-  EXPECT_LT((way.back().angles - s.request.goal.angles).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((way.back().angles - s.goal.angles).cwiseAbs().maxCoeff(), 1e-12);
 }
 
 TEST(BenchSuite, ErrorVersusTimeRecordsEveryLimit) {

@@ -24,7 +24,7 @@ using foldkit::geometry::ClosureSystem;
 using foldkit::geometry::CreasePattern;
 using foldkit::geometry::FoldState;
 using foldkit::planners::plan;
-using foldkit::planners::PlanRequest;
+using foldkit::planners::PlanOptions;
 using foldkit::planners::PlanResult;
 using foldkit::test::random_vertex_state;
 
@@ -33,10 +33,8 @@ CreasePattern random_vertex(int degree, unsigned seed) {
   return build_or_throw(gen::single_vertex(foldkit::test::random_sectors(degree, rng, 0.2)));
 }
 
-PlanRequest request_for(const CreasePattern& p, const FoldState& goal) {
-  PlanRequest req;
-  req.pattern = &p;
-  req.goal = goal;
+PlanOptions fallback_options() {
+  PlanOptions req;
   req.use_assignment = false;
   req.time = foldkit::test::scaled_seconds(1.0);
   return req;
@@ -44,7 +42,7 @@ PlanRequest request_for(const CreasePattern& p, const FoldState& goal) {
 
 // A valid plan: solved, replayed without a collision or a closure violation, every waypoint
 // closed to 1e-10 rad, ending at the goal.
-void expect_valid(const CreasePattern& p, const PlanRequest& req, const PlanResult& r) {
+void expect_valid(const CreasePattern& p, const FoldState& goal, const PlanResult& r) {
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_TRUE(r.replay.has_value());
   EXPECT_TRUE(r.replay->status.ok()) << r.replay->status.message;
@@ -53,7 +51,7 @@ void expect_valid(const CreasePattern& p, const PlanRequest& req, const PlanResu
   double worst = 0.0;
   for (const FoldState& w : r.waypoints) worst = std::max(worst, sys.max_error(w));
   EXPECT_LT(worst, 1e-10);
-  EXPECT_LT((r.waypoints.back().angles - req.goal.angles).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((r.waypoints.back().angles - goal.angles).cwiseAbs().maxCoeff(), 1e-9);
 }
 
 TEST(CarpenterFallback, PathGoesFromStartThroughFlatToGoal) {
@@ -97,11 +95,12 @@ TEST(CarpenterFallback, UnfilteredRandomGoalsAreAllPlanned) {
   for (int degree : {6, 8, 12}) {
     for (unsigned k = 0; k < 4; ++k) {
       const CreasePattern p = random_vertex(degree, 100u * static_cast<unsigned>(degree) + k);
-      PlanRequest req = request_for(p, random_vertex_state(p, 7u + k, degree <= 8 ? 2.5 : 1.5, 0.5));
+      const FoldState goal = random_vertex_state(p, 7u + k, degree <= 8 ? 2.5 : 1.5, 0.5);
+      PlanOptions req = fallback_options();
       req.seed = k + 1;
       SCOPED_TRACE("degree " + std::to_string(degree) + " goal " + std::to_string(k));
-      const PlanResult r = plan(req);
-      expect_valid(p, req, r);
+      const PlanResult r = plan(p, goal, req);
+      expect_valid(p, goal, r);
       fallbacks += r.fallback;
     }
   }
@@ -114,7 +113,7 @@ TEST(CarpenterFallback, UnfilteredRandomGoalsAreAllPlanned) {
 TEST(CarpenterFallback, TakesOverWhenThePlannerCannot) {
   const CreasePattern p = random_vertex(8, 77);
   const FoldState start = random_vertex_state(p, 11), goal = random_vertex_state(p, 12);
-  PlanRequest req = request_for(p, goal);
+  PlanOptions req = fallback_options();
   req.start = start;
   // The replay starts from flat: the start's own CMML (flat → start, Carpenter's frames) comes first.
   req.start_sequence = foldkit::geometry::path_sequence(
@@ -122,8 +121,8 @@ TEST(CarpenterFallback, TakesOverWhenThePlannerCannot) {
   req.time = foldkit::test::scaled_seconds(0.4);
   req.planner = "RRT";
   req.params = {{"range", "1e-7"}};
-  const PlanResult r = plan(req);
-  expect_valid(p, req, r);
+  const PlanResult r = plan(p, goal, req);
+  expect_valid(p, goal, r);
   EXPECT_TRUE(r.fallback);
   EXPECT_NE(r.status.message.find("Carpenter"), std::string::npos) << r.status.message;
   bool through_flat = false;
@@ -131,7 +130,7 @@ TEST(CarpenterFallback, TakesOverWhenThePlannerCannot) {
   EXPECT_TRUE(through_flat);
 
   req.fallback = false;
-  const PlanResult none = plan(req);
+  const PlanResult none = plan(p, goal, req);
   EXPECT_FALSE(none.status.ok());
   EXPECT_FALSE(none.fallback);
   EXPECT_EQ(none.status.code, foldkit::geometry::StatusCode::LimitReached);
@@ -139,29 +138,30 @@ TEST(CarpenterFallback, TakesOverWhenThePlannerCannot) {
 
 // Issue 32: `time` bounds the whole search, the Carpenter fallback included. At degree 32 the
 // fallback needs far more than 0.05 s (≈ 0.6 s of LPs and checks), so with a planner that cannot
-// get anywhere the search ends at the limit, out of time; with time enough the same request is
+// get anywhere the search ends at the limit, out of time; with time enough the same problem is
 // planned by the fallback.
 TEST(CarpenterFallback, TimeBoundsTheFallbackToo) {
   std::mt19937 rng(3232);
   const CreasePattern p = build_or_throw(gen::single_vertex(foldkit::test::random_sectors(32, rng, 0.1)));
-  PlanRequest req = request_for(p, random_vertex_state(p, 5, 0.8, 0.4));
+  const FoldState goal = random_vertex_state(p, 5, 0.8, 0.4);
+  PlanOptions req = fallback_options();
   req.planner = "RRT";
   req.params = {{"range", "1e-7"}};
   req.time = 0.05;
-  const PlanResult r = plan(req);
+  const PlanResult r = plan(p, goal, req);
   EXPECT_EQ(r.status.code, foldkit::geometry::StatusCode::LimitReached) << r.status.message;
   EXPECT_NE(r.status.message.find("time ran out"), std::string::npos) << r.status.message;
   // One Carpenter step or one state check past the limit at most.
-  EXPECT_LT(r.time, req.time + foldkit::test::scaled_seconds(0.1));
+  EXPECT_LT(r.seconds, req.time + foldkit::test::scaled_seconds(0.1));
   EXPECT_FALSE(r.fallback);
 
   // With time enough (the planner spins for a quarter of it; the fallback needs ≈ 0.6 s of the
-  // rest in Release) the same request is planned, by the fallback.
+  // rest in Release) the same problem is planned, by the fallback.
   req.time = foldkit::test::scaled_seconds(3.0);
-  const PlanResult slow = plan(req);
-  expect_valid(p, req, slow);
+  const PlanResult slow = plan(p, goal, req);
+  expect_valid(p, goal, slow);
   EXPECT_TRUE(slow.fallback);
-  RecordProperty("fallback_seconds", std::to_string(slow.time));
+  RecordProperty("fallback_seconds", std::to_string(slow.seconds));
 }
 
 TEST(CarpenterFallback, RefusesBadSettings) {

@@ -32,7 +32,7 @@ using foldkit::geometry::ClosureSystem;
 using foldkit::geometry::CreasePattern;
 using foldkit::geometry::FoldState;
 using foldkit::planners::plan;
-using foldkit::planners::PlanRequest;
+using foldkit::planners::PlanOptions;
 using foldkit::planners::PlanResult;
 using foldkit::planners::SpaceKind;
 using foldkit::test::folded_along_assignment;
@@ -65,7 +65,7 @@ FoldState random_goal(const CreasePattern& p, unsigned seed, bool collision_free
   throw std::runtime_error("no goal");
 }
 
-void expect_valid_plan(const CreasePattern& p, const PlanRequest& req, const PlanResult& r) {
+void expect_valid_plan(const CreasePattern& p, const FoldState& goal, const PlanResult& r) {
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_TRUE(r.replay.has_value());
   EXPECT_TRUE(r.replay->status.ok());
@@ -73,7 +73,7 @@ void expect_valid_plan(const CreasePattern& p, const PlanRequest& req, const Pla
   EXPECT_TRUE(r.replay->collisions.empty());
   const ClosureSystem sys(p);
   for (const FoldState& w : r.waypoints) EXPECT_LT(sys.max_error(w), 1e-6);
-  EXPECT_LT((r.waypoints.back().angles - req.goal.angles).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT((r.waypoints.back().angles - goal.angles).cwiseAbs().maxCoeff(), 1e-6);
   EXPECT_LT(r.waypoints.front().angles.cwiseAbs().maxCoeff(), 1e-12);  // flat start
 }
 
@@ -82,16 +82,15 @@ TEST(Plan, SingleVerticesOfDegree4To12FromFlatWithAndWithoutCollision) {
   for (int n = 4; n <= 12; ++n) {
     const CreasePattern p = build_or_throw(gen::single_vertex(foldkit::test::random_sectors(n, rng, 0.2)));
     for (bool collisions : {false, true}) {
-      PlanRequest req;
-      req.pattern = &p;
-      req.goal = random_goal(p, static_cast<unsigned>(100 + n), collisions);
+      PlanOptions req;
+      FoldState goal = random_goal(p, static_cast<unsigned>(100 + n), collisions);
       req.space = SpaceKind::SingleVertex;
       req.time = 2.0;
       req.seed = static_cast<unsigned>(n);
       req.collisions = collisions;
-      const PlanResult r = plan(req);
+      const PlanResult r = plan(p, goal, req);
       SCOPED_TRACE("degree " + std::to_string(n) + (collisions ? " with collision" : ""));
-      expect_valid_plan(p, req, r);
+      expect_valid_plan(p, goal, r);
     }
   }
 }
@@ -103,17 +102,16 @@ TEST(Plan, ThreadedPlannersWithCollisions) {
   std::mt19937 rng(7);
   const CreasePattern p = build_or_throw(gen::single_vertex(foldkit::test::random_sectors(6, rng, 0.2)));
   for (const char* planner : {"PRM", "PRMstar"}) {
-    PlanRequest req;
-    req.pattern = &p;
-    req.goal = random_goal(p, 11, true);
+    PlanOptions req;
+    FoldState goal = random_goal(p, 11, true);
     req.space = SpaceKind::SingleVertex;
     req.planner = planner;
     req.time = 1.0;
     req.seed = 5;
     req.collisions = true;
-    const PlanResult r = plan(req);
+    const PlanResult r = plan(p, goal, req);
     SCOPED_TRACE(planner);
-    expect_valid_plan(p, req, r);
+    expect_valid_plan(p, goal, r);
   }
 }
 
@@ -138,17 +136,15 @@ FoldState boat_goal(const CreasePattern& p) {
 
 void plan_and_check(const CreasePattern& p, const FoldState& goal, SpaceKind kind, bool collisions, double time = 2.0,
                       unsigned int seed = 3) {
-  PlanRequest req;
-  req.pattern = &p;
-  req.goal = goal;
+  PlanOptions req;
   req.space = kind;
   req.time = time;
   req.seed = seed;
   req.collisions = collisions;
   req.use_assignment = false;
-  const PlanResult r = plan(req);
+  const PlanResult r = plan(p, goal, req);
   SCOPED_TRACE(std::string("space ") + foldkit::planners::to_string(kind));
-  expect_valid_plan(p, req, r);
+  expect_valid_plan(p, goal, r);
 }
 
 TEST(Plan, BoatThroughTheConstrainedSpaces) {
@@ -161,7 +157,7 @@ TEST(Plan, BoatThroughTheConstrainedSpaces) {
 // 1 DOF in 24 creases: uniform samples of the whole [0, π] / [−π, 0] box project onto the many
 // other branches of the closure variety through flat, and RRTConnect on the Projected space then
 // never heads for the goal (no plan in 5 s); sampling the box around start and goal widened by
-// 0.2 rad (PlanRequest::search_margin) solves in well under a second. Atlas samples near its
+// 0.2 rad (PlanOptions::search_margin) solves in well under a second. Atlas samples near its
 // charts and solves either way; TangentBundle fails now and then without the margin. The goal is on the rigid-folding mode: the
 // assignment's direction projected onto closure.
 TEST(Plan, Miura4x4ThroughTheConstrainedSpaces) {
@@ -172,18 +168,16 @@ TEST(Plan, Miura4x4ThroughTheConstrainedSpaces) {
   const FoldState goal = projected_goal(p, g);
   ASSERT_LT(ClosureSystem(p).max_error(goal), 1e-10);
   for (SpaceKind kind : {SpaceKind::Projected, SpaceKind::Atlas, SpaceKind::TangentBundle}) {
-    PlanRequest req;
-    req.pattern = &p;
-    req.goal = goal;
+    PlanOptions req;
     req.space = kind;
     req.time = 10.0;  // generous for sanitizer builds; a plan takes well under a second in Release
     req.seed = 3;
     req.collisions = true;
     req.use_assignment = true;  // the generator's M/V become bounds
     req.search_margin = 0.2;
-    const PlanResult r = plan(req);
+    const PlanResult r = plan(p, goal, req);
     SCOPED_TRACE(std::string("space ") + foldkit::planners::to_string(kind));
-    expect_valid_plan(p, req, r);
+    expect_valid_plan(p, goal, r);
     // Every waypoint keeps the assignment (the bounds), as the oracle reads it off the pattern.
     for (const FoldState& w : r.waypoints)
       for (std::size_t j = 0; j < p.joints().size(); ++j) {
@@ -238,14 +232,13 @@ TEST(Plan, MiuraSheetsInTheDrivingSpaceWithDefaultOptions) {
   for (int n : {4, 6, 10}) {
     SCOPED_TRACE("Miura " + std::to_string(n));
     const CreasePattern p = build_or_throw(gen::miura(n, n));
-    PlanRequest req;
-    req.pattern = &p;
-    req.goal = folded_along_assignment(p, 1.2);
+    PlanOptions req;
+    FoldState goal = folded_along_assignment(p, 1.2);
     req.time = 20.0;  // generous for sanitizer builds; well under a second in Release
     req.seed = 3;
-    const PlanResult r = plan(req);
+    const PlanResult r = plan(p, goal, req);
     EXPECT_EQ(r.space, "driving");
-    expect_valid_plan(p, req, r);
+    expect_valid_plan(p, goal, r);
     const ClosureSystem sys(p);
     for (const FoldState& w : r.waypoints) EXPECT_LE(sys.max_error(w), 1e-10);
     const auto bounds = foldkit::statespaces::AngleBounds::of(p, true);
@@ -257,18 +250,17 @@ TEST(Plan, MiuraSheetsInTheDrivingSpaceWithDefaultOptions) {
 // and an unknown one refused with the names the planner has.
 TEST(Plan, PlannerParametersByName) {
   const CreasePattern p = build_or_throw(gen::miura(4, 4));
-  PlanRequest req;
-  req.pattern = &p;
-  req.goal = folded_along_assignment(p, 1.0);
+  PlanOptions req;
+  FoldState goal = folded_along_assignment(p, 1.0);
   req.time = 20.0;
   req.replay = false;
   req.simplify = false;
   req.params = {{"range", "0.01"}};
-  const PlanResult small = plan(req);
+  const PlanResult small = plan(p, goal, req);
   ASSERT_TRUE(small.status.ok()) << small.status.message;
   req.params = {{"nonsense", "1"}};
   try {
-    plan(req);
+    plan(p, goal, req);
     ADD_FAILURE() << "an unknown parameter was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("range"), std::string::npos) << e.what();
@@ -290,12 +282,11 @@ namespace {
 TEST(Plan, DrivingSpaceFromOneFoldedStateToAnother) {
   const CreasePattern p = build_or_throw(gen::miura(6, 6));
   const ClosureSystem sys(p);
-  PlanRequest req;
-  req.pattern = &p;
+  PlanOptions req;
   req.time = 20.0;
   req.seed = 2;
-  req.goal = folded_along_assignment(p, 0.6);
-  const PlanResult first = plan(req);
+  FoldState goal = folded_along_assignment(p, 0.6);
+  const PlanResult first = plan(p, goal, req);
   ASSERT_TRUE(first.status.ok()) << first.status.message;
   foldkit::geometry::FoldSequence so_far = first.sequence;
   FoldState at = first.waypoints.back();
@@ -303,17 +294,17 @@ TEST(Plan, DrivingSpaceFromOneFoldedStateToAnother) {
     SCOPED_TRACE(next);
     req.start = at;
     req.start_sequence = so_far;
-    req.goal = folded_along_assignment(p, next);
+    goal = folded_along_assignment(p, next);
     // Along the start's own branch: a direct path exists, so the planner keeps all of its time
     // (no way through flat after a quarter of it).
-    EXPECT_TRUE(foldkit::planners::make_plan_setup(req).continues_to_goal);
-    const PlanResult r = plan(req);
+    EXPECT_TRUE(foldkit::planners::make_plan_setup(p, goal, req).continues_to_goal);
+    const PlanResult r = plan(p, goal, req);
     ASSERT_TRUE(r.status.ok()) << r.status.message;
     EXPECT_FALSE(r.via_flat);
     EXPECT_EQ(r.space, "driving");
     ASSERT_TRUE(r.replay && r.replay->status.ok());
     EXPECT_LT((r.waypoints.front().angles - at.angles).cwiseAbs().maxCoeff(), 1e-9);
-    EXPECT_LT((r.waypoints.back().angles - req.goal.angles).cwiseAbs().maxCoeff(), 1e-6);
+    EXPECT_LT((r.waypoints.back().angles - goal.angles).cwiseAbs().maxCoeff(), 1e-6);
     for (const FoldState& w : r.waypoints) EXPECT_LE(sys.max_error(w), 1e-10);
     so_far = r.sequence;
     at = r.waypoints.back();
@@ -362,27 +353,26 @@ TEST(Plan, GoalOnAnotherBranchIsNamedNotSearched) {
     b = r.state;
   }
   ASSERT_TRUE(b.has_value()) << "no closed state on another branch found";
-  PlanRequest req;
-  req.pattern = &p;
+  PlanOptions req;
   req.start = a;
-  req.goal = *b;
+  FoldState goal = *b;
   req.use_assignment = false;
   req.time = 30.0;
   req.fallback = false;
-  const PlanResult r = plan(req);
+  const PlanResult r = plan(p, goal, req);
   EXPECT_EQ(r.status.code, foldkit::geometry::StatusCode::NoProgress) << r.status.message;
   EXPECT_NE(r.status.message.find("another branch"), std::string::npos) << r.status.message;
-  EXPECT_EQ(r.time, 0.0);  // decided before the planner ran, not at the 30 s limit
+  EXPECT_EQ(r.seconds, 0.0);  // decided before the planner ran, not at the 30 s limit
   RecordProperty("message", r.status.message);
   // With the fallback the plan goes start → flat → goal at once: two plans from flat, well
   // within the time, every waypoint closed, through the flat sheet.
   req.fallback = true;
   req.replay = false;  // the start has no sequence from flat here; the waypoints are checked instead
-  const PlanResult via = plan(req);
+  const PlanResult via = plan(p, goal, req);
   ASSERT_TRUE(via.status.ok()) << via.status.message;
   EXPECT_TRUE(via.via_flat);
   EXPECT_NE(via.status.message.find("another branch"), std::string::npos) << via.status.message;
-  EXPECT_LT(via.time, 0.5 * req.time);
+  EXPECT_LT(via.seconds, 0.5 * req.time);
   double nearest_flat = 1.0;
   for (const FoldState& w : via.waypoints) {
     EXPECT_LE(sys.max_error(w), 1e-10);
@@ -392,8 +382,8 @@ TEST(Plan, GoalOnAnotherBranchIsNamedNotSearched) {
   EXPECT_LT((via.waypoints.front().angles - a.angles).cwiseAbs().maxCoeff(), 1e-9);
   EXPECT_LT((via.waypoints.back().angles - b->angles).cwiseAbs().maxCoeff(), 1e-6);
   // The same start to a goal on its own branch is planned as before.
-  req.goal = folded_along_assignment(p, 1.0);
-  const PlanResult same = plan(req);
+  goal = folded_along_assignment(p, 1.0);
+  const PlanResult same = plan(p, goal, req);
   for (const FoldState& w : same.waypoints) EXPECT_LE(sys.max_error(w), 1e-10);
   EXPECT_TRUE(same.status.ok()) << same.status.message;
   EXPECT_FALSE(same.via_flat);
@@ -411,18 +401,17 @@ TEST(Plan, RandomMiuraSheetsAndGoalsInTheDrivingSpace) {
     const double a = angle(rng), f = fold(rng);
     SCOPED_TRACE(std::to_string(rows) + "x" + std::to_string(cols) + " angle " + std::to_string(a) + " fold " + std::to_string(f));
     const CreasePattern p = build_or_throw(gen::miura(rows, cols, 1.0, 1.0, a));
-    PlanRequest req;
-    req.pattern = &p;
-    req.goal = folded_along_assignment(p, f);
+    PlanOptions req;
+    FoldState goal = folded_along_assignment(p, f);
     req.seed = static_cast<unsigned>(k + 1);
     req.time = 20.0;
-    const PlanResult r = plan(req);
+    const PlanResult r = plan(p, goal, req);
     ASSERT_TRUE(r.status.ok()) << r.status.message;
     EXPECT_EQ(r.space, "driving");
     ASSERT_TRUE(r.replay && r.replay->status.ok() && r.replay->collisions.empty());
     const ClosureSystem sys(p);
     for (const FoldState& w : r.waypoints) EXPECT_LE(sys.max_error(w), 1e-10);
-    EXPECT_LT((r.waypoints.back().angles - req.goal.angles).cwiseAbs().maxCoeff(), 1e-6);
+    EXPECT_LT((r.waypoints.back().angles - goal.angles).cwiseAbs().maxCoeff(), 1e-6);
   }
 }
 
@@ -431,16 +420,15 @@ TEST(Plan, RandomMiuraSheetsAndGoalsInTheDrivingSpace) {
 TEST(Plan, ThreadedPlannersInTheDrivingSpace) {
   const CreasePattern p = build_or_throw(gen::miura(4, 4));
   for (const char* planner : {"PRM", "PRMstar"}) {
-    PlanRequest req;
-    req.pattern = &p;
-    req.goal = folded_along_assignment(p, 1.0);
+    PlanOptions req;
+    FoldState goal = folded_along_assignment(p, 1.0);
     req.space = SpaceKind::Driving;
     req.planner = planner;
     req.time = 2.0;
     req.seed = 5;
-    const PlanResult r = plan(req);
+    const PlanResult r = plan(p, goal, req);
     SCOPED_TRACE(planner);
-    expect_valid_plan(p, req, r);
+    expect_valid_plan(p, goal, r);
   }
 }
 

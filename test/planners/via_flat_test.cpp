@@ -23,7 +23,7 @@ using foldkit::geometry::ClosureSystem;
 using foldkit::geometry::CreasePattern;
 using foldkit::geometry::FoldState;
 using foldkit::planners::plan;
-using foldkit::planners::PlanRequest;
+using foldkit::planners::PlanOptions;
 using foldkit::planners::PlanResult;
 
 using foldkit::test::kReschVelocityA;
@@ -48,23 +48,21 @@ foldkit::folding::ProjectedFoldingResult folded(const CreasePattern& p, const st
   return foldkit::folding::fold_projected(p, o);
 }
 
-PlanRequest between(const CreasePattern& p, const foldkit::folding::ProjectedFoldingResult& from,
-                    const foldkit::folding::ProjectedFoldingResult& to) {
-  PlanRequest req;
-  req.pattern = &p;
+// Options for a plan from `from`'s end (its sequence first), within 4 s.
+PlanOptions starting_at(const CreasePattern& p, const foldkit::folding::ProjectedFoldingResult& from) {
+  PlanOptions req;
   req.start = foldkit::geometry::end_state(p, from.sequence);
   req.start_sequence = from.sequence;
-  req.goal = foldkit::geometry::end_state(p, to.sequence);
   req.time = 4.0;
   return req;
 }
 
-void expect_valid_plan(const ClosureSystem& sys, const PlanRequest& req, const PlanResult& r) {
+void expect_valid_plan(const ClosureSystem& sys, const PlanOptions& req, const FoldState& goal, const PlanResult& r) {
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_TRUE(r.replay && r.replay->status.ok());
   for (const FoldState& w : r.waypoints) EXPECT_LE(sys.max_error(w), 1e-10);
   EXPECT_LT((r.waypoints.front().angles - req.start->angles).cwiseAbs().maxCoeff(), 1e-9);
-  EXPECT_LT((r.waypoints.back().angles - req.goal.angles).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT((r.waypoints.back().angles - goal.angles).cwiseAbs().maxCoeff(), 1e-6);
 }
 
 TEST(PlanViaFlat, FoldedStatesOnSheetsThatMeetOnlyAtFlat) {
@@ -72,22 +70,23 @@ TEST(PlanViaFlat, FoldedStatesOnSheetsThatMeetOnlyAtFlat) {
   const ClosureSystem sys(p);
   const auto a = folded(p, kReschVelocityA), b = folded(p, kReschVelocityB);
   ASSERT_TRUE(a.status.ok() && b.status.ok()) << a.status.message << " / " << b.status.message;
-  const PlanRequest req = between(p, a, b);
-  EXPECT_FALSE(foldkit::planners::make_plan_setup(req).continues_to_goal);
-  const PlanResult r = plan(req);
-  expect_valid_plan(sys, req, r);
+  const PlanOptions req = starting_at(p, a);
+  const FoldState goal = foldkit::geometry::end_state(p, b.sequence);
+  EXPECT_FALSE(foldkit::planners::make_plan_setup(p, goal, req).continues_to_goal);
+  const PlanResult r = plan(p, goal, req);
+  expect_valid_plan(sys, req, goal, r);
   EXPECT_TRUE(r.via_flat);
   EXPECT_TRUE(r.fallback);
   EXPECT_EQ(r.space, "driving");
-  EXPECT_LE(r.time, req.time + 0.5);
+  EXPECT_LE(r.seconds, req.time + 0.5);
   double nearest_flat = 1.0;
   for (const FoldState& w : r.waypoints) nearest_flat = std::min(nearest_flat, w.angles.cwiseAbs().maxCoeff());
   EXPECT_EQ(nearest_flat, 0.0);
   RecordProperty("message", r.status.message);
   // Out of time on the way through flat: a status that names the leg, not an exception.
-  PlanRequest hurried = req;
+  PlanOptions hurried = req;
   hurried.time = 1e-3;
-  const PlanResult late = plan(hurried);
+  const PlanResult late = plan(p, goal, hurried);
   EXPECT_EQ(late.status.code, foldkit::geometry::StatusCode::LimitReached) << late.status.message;
   EXPECT_NE(late.status.message.find("via flat: no plan from flat to the start"), std::string::npos) << late.status.message;
   EXPECT_FALSE(late.via_flat);
@@ -102,10 +101,11 @@ TEST(PlanViaFlat, NearAFoldOfTheChartTheDirectPlanIsDensifiedAlongTheSpace) {
   const ClosureSystem sys(p);
   const auto c = folded(p, kReschVelocityC), d = folded(p, kReschVelocityD);
   ASSERT_TRUE(c.status.ok() && d.status.ok()) << c.status.message << " / " << d.status.message;
-  PlanRequest req = between(p, c, d);
+  PlanOptions req = starting_at(p, c);
+  const FoldState goal = foldkit::geometry::end_state(p, d.sequence);
   req.fallback = false;
-  const PlanResult r = plan(req);
-  expect_valid_plan(sys, req, r);
+  const PlanResult r = plan(p, goal, req);
+  expect_valid_plan(sys, req, goal, r);
   EXPECT_FALSE(r.via_flat);
   for (std::size_t i = 1; i < r.waypoints.size(); ++i)
     EXPECT_LE((r.waypoints[i].angles - r.waypoints[i - 1].angles).cwiseAbs().maxCoeff(), 2.0 * req.waypoint_step + 1e-12);

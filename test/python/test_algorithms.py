@@ -118,6 +118,9 @@ def test_plan_miura_in_the_driving_space_matches_cli(cli, tmp_path):
     assert r.replay.valid
     with pytest.raises(ValueError, match="range"):
         foldkit.plan(p, goal, params={"nonsense": "1"})
+    # The goal as the CLI takes it, a sequence (its end state): the same plan.
+    s = foldkit.plan(p, foldkit.read_cmml(str(goal_cmml)), time=10, seed=3, params={"range": "0.3"})
+    assert s.solved and np.array_equal(s.waypoints, r.waypoints)
 
 
 def test_plan_is_seeded_and_starts_anywhere():
@@ -125,6 +128,14 @@ def test_plan_is_seeded_and_starts_anywhere():
     a = foldkit.plan(p, goal, seed=7, time=5)
     b = foldkit.plan(p, goal, seed=7, time=5)
     assert a.solved and np.array_equal(a.waypoints, b.waypoints)
+    assert 0 < a.seconds < 5
+    # The old names of speed and seconds still work for one release, with a DeprecationWarning.
+    with pytest.warns(DeprecationWarning, match="speed"):
+        old = foldkit.plan(p, goal, seed=7, time=5, velocity=0.5)
+    assert np.array_equal(old.waypoints, a.waypoints)
+    assert old.sequence.events[-1].folds[0].velocity != a.sequence.events[-1].folds[0].velocity
+    with pytest.warns(DeprecationWarning, match="seconds"):
+        assert old.time == old.seconds
     # From a state part-way, reached from flat along the first plan's own closed waypoints.
     half = a.waypoints[: len(a.waypoints) // 2 + 1]
     c = foldkit.plan(p, goal, start=foldkit.path_sequence(p, half), seed=7, time=5)

@@ -27,19 +27,19 @@ class ConstrainedPlanSpace : public PlanSpace {
   // cannot be anchored and projections may flip branches, so the plan starts from a nearby
   // regular state instead. With PlanRequest::search_margin the ambient box the sampler draws
   // from is that of start and goal, widened.
-  Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) override {
+  Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanOptions& options, const statespaces::AngleBounds& bounds) override {
     const FoldState& start = setup.start;
     statespaces::AngleBounds box = bounds;
-    if (req.search_margin >= 0.0) {
-      box.lower = box.lower.array().max(start.angles.cwiseMin(req.goal.angles).array() - req.search_margin).matrix();
-      box.upper = box.upper.array().min(start.angles.cwiseMax(req.goal.angles).array() + req.search_margin).matrix();
+    if (options.search_margin >= 0.0) {
+      box.lower = box.lower.array().max(start.angles.cwiseMin(setup.goal.angles).array() - options.search_margin).matrix();
+      box.upper = box.upper.array().min(start.angles.cwiseMax(setup.goal.angles).array() + options.search_margin).matrix();
     }
-    constrained_ = statespaces::make_constrained(*req.pattern, req.goal, kind_, box, req.numerical_jacobian, 2.5 * req.resolution);
+    constrained_ = statespaces::make_constrained(*setup.pattern, setup.goal, kind_, box, options.numerical_jacobian, 2.5 * options.resolution);
     const auto rank = static_cast<Eigen::Index>(constrained_.constraint->getCoDimension());
     return geometry::mobility(*setup.system, start).rank < rank ? rank : 0;
   }
 
-  void build(PlanSetup& setup, const PlanRequest&, const statespaces::AngleBounds&) override {
+  void build(PlanSetup& setup, const PlanOptions&, const statespaces::AngleBounds&) override {
     setup.space = constrained_.space;
     setup.si = constrained_.si;
     setup.reader = statespaces::constrained_reader();

@@ -54,8 +54,8 @@ class DrivingPlanSpace : public PlanSpace {
   const char* name() const override { return "driving"; }
 
   // The larger of the ranks at start and goal: a start below it (flat) is left first.
-  Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds&) override {
-    goal_rank_ = geometry::mobility(*setup.system, req.goal).rank;
+  Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanOptions& options, const statespaces::AngleBounds&) override {
+    goal_rank_ = geometry::mobility(*setup.system, setup.goal).rank;
     const Eigen::Index start_rank = geometry::mobility(*setup.system, setup.start).rank;
     rank_ = std::max(goal_rank_, start_rank);
     return start_rank < rank_ ? rank_ : 0;
@@ -63,13 +63,13 @@ class DrivingPlanSpace : public PlanSpace {
 
   // The chart is chosen at the goal (or, when the goal is singular, at the end of the way out of
   // the start).
-  void build(PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) override {
+  void build(PlanSetup& setup, const PlanOptions& options, const statespaces::AngleBounds& bounds) override {
     const geometry::ClosureSystem& system = *setup.system;
     const FoldState& from = setup.prefix.back();
-    const FoldState& chart_state = goal_rank_ >= rank_ ? req.goal : from;
+    const FoldState& chart_state = goal_rank_ >= rank_ ? setup.goal : from;
     const int dof = static_cast<int>(system.cols() - rank_);
     if (dof == 0) throw std::invalid_argument("plan: the pattern is rigid (0 degrees of freedom): nothing can move");
-    geometry::DrivingChart chart = geometry::choose_driving_chart(system, chart_state, dof, std::max(1u, req.seed));
+    geometry::DrivingChart chart = geometry::choose_driving_chart(system, chart_state, dof, std::max(1u, options.seed));
     // Sampling bounds of each driving crease: its angle bounds, narrowed to the side of flat that
     // both ends of the plan are on (flat is singular; the goal's signs pick the branch).
     // Most uniform samples go to the focus box, that of start and goal widened by kFocusMargin: a
@@ -81,21 +81,21 @@ class DrivingPlanSpace : public PlanSpace {
       const int j = chart.driving[static_cast<std::size_t>(i)];
       lo[i] = bounds.lower[j];
       hi[i] = bounds.upper[j];
-      if (req.goal.angles[j] > 0.0 && from.angles[j] > 0.0) lo[i] = std::max(lo[i], 0.0);
-      if (req.goal.angles[j] < 0.0 && from.angles[j] < 0.0) hi[i] = std::min(hi[i], 0.0);
-      focus_lo[i] = std::min(req.goal.angles[j], from.angles[j]) - kFocusMargin;
-      focus_hi[i] = std::max(req.goal.angles[j], from.angles[j]) + kFocusMargin;
+      if (setup.goal.angles[j] > 0.0 && from.angles[j] > 0.0) lo[i] = std::max(lo[i], 0.0);
+      if (setup.goal.angles[j] < 0.0 && from.angles[j] < 0.0) hi[i] = std::min(hi[i], 0.0);
+      focus_lo[i] = std::min(setup.goal.angles[j], from.angles[j]) - kFocusMargin;
+      focus_hi[i] = std::max(setup.goal.angles[j], from.angles[j]) + kFocusMargin;
     }
-    setup.other_branch = other_branch(system, chart, from, req.goal, setup.continues_to_goal);
+    setup.other_branch = other_branch(system, chart, from, setup.goal, setup.continues_to_goal);
     space_ = std::make_shared<statespaces::DrivingStateSpace>(setup.system, std::move(chart), bounds, lo, hi);
     space_->set_focus(focus_lo, focus_hi, kFocusShare);
     if (!space_->add_anchor(from))
       throw PlanInputError(PlanInputError::End::Start, "plan: the start is a singular state of the driving space (try --space projected)");
-    if (!space_->add_anchor(req.goal))
+    if (!space_->add_anchor(setup.goal))
       throw PlanInputError(PlanInputError::End::Goal, "plan: the goal is a singular state of the driving space (try --space projected)");
     setup.space = space_;
     setup.reader = statespaces::driving_reader(space_);
-    use_space(setup, req);
+    use_space(setup, options);
   }
 
   bool write(const FoldState& state, ob::State* out) const override { return space_->from_fold_state(state, out); }

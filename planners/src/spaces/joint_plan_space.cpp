@@ -16,10 +16,10 @@ class JointPlanSpace : public PlanSpace {
  public:
   const char* name() const override { return "joint"; }
 
-  Eigen::Index lead_in_rank(const PlanSetup&, const PlanRequest&, const statespaces::AngleBounds&) override { return 0; }
+  Eigen::Index lead_in_rank(const PlanSetup&, const PlanOptions&, const statespaces::AngleBounds&) override { return 0; }
 
-  void build(PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) override {
-    const auto n = static_cast<Eigen::Index>(req.pattern->joints().size());
+  void build(PlanSetup& setup, const PlanOptions& options, const statespaces::AngleBounds& bounds) override {
+    const auto n = static_cast<Eigen::Index>(setup.pattern->joints().size());
     auto box = std::make_shared<ob::RealVectorStateSpace>(static_cast<unsigned int>(n));
     ob::RealVectorBounds b(static_cast<unsigned int>(n));
     for (Eigen::Index j = 0; j < n; ++j) {
@@ -32,7 +32,7 @@ class JointPlanSpace : public PlanSpace {
       f.angles = Eigen::Map<const Eigen::VectorXd>(s->as<ob::RealVectorStateSpace::StateType>()->values, n);
       return true;
     };
-    spaces::use_space(setup, req);
+    spaces::use_space(setup, options);
   }
 
   bool write(const FoldState& state, ob::State* out) const override {

@@ -23,17 +23,17 @@ class SingleVertexPlanSpace : public PlanSpace {
 
   // The closed form cannot hold some singular states (a flat vertex whose passive axes line up):
   // such a start is left along a short closed segment to full rank (3) first.
-  Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds& bounds) override {
-    auto chain = std::make_shared<statespaces::SingleVertexChain>(*req.pattern);
+  Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanOptions& options, const statespaces::AngleBounds& bounds) override {
+    auto chain = std::make_shared<statespaces::SingleVertexChain>(*setup.pattern);
     space_ = std::make_shared<statespaces::SingleVertexStateSpace>(chain, bounds);
     ob::ScopedState<> probe(space_);
     return write(setup.start, probe.get()) ? 0 : 3;
   }
 
-  void build(PlanSetup& setup, const PlanRequest& req, const statespaces::AngleBounds&) override {
+  void build(PlanSetup& setup, const PlanOptions& options, const statespaces::AngleBounds&) override {
     setup.space = space_;
     setup.reader = statespaces::single_vertex_reader(space_);
-    use_space(setup, req);
+    use_space(setup, options);
   }
 
   bool write(const FoldState& state, ob::State* out) const override { return space_->from_fold_state(state, out); }

@@ -18,7 +18,7 @@ namespace foldkit::planners::spaces {
 
 // setup.si on setup.space (setup.reader set first), with the motion validator of every space but
 // the constrained ones (those bring their own).
-void use_space(PlanSetup& setup, const PlanRequest& request);
+void use_space(PlanSetup& setup, const PlanOptions& options);
 
 // The states strictly between `a` and `b` on a space's own motion from one to the other, at most
 // `step` apart per crease where the space can tell, appended to `out`; `tmp` is scratch.

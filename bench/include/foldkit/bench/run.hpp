@@ -94,7 +94,7 @@ struct PathMetrics {
   double path_length = 0.0;    ///< Σ Euclidean joint-angle distance, radians
   double goal_distance = 0.0;  ///< largest joint difference between the path's end and the goal, radians
   std::size_t replay_collisions = 0,  ///< collisions the simulator found replaying the path's CMML
-      cmml_events = 0;                ///< events of that CMML (geometry::path_sequence at the request's velocity)
+      cmml_events = 0;                ///< events of that CMML (geometry::path_sequence at the scene's PlanOptions::speed)
   bool replay_ok = false;  ///< whether the replay (motor model, collisions on) is valid
 };
 /// The PathMetrics of `waypoints` (one angle per joint each) on `scene`; all zero for an empty

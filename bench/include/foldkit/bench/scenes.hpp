@@ -14,13 +14,14 @@
 namespace foldkit::bench {
 
 /// A pattern with a closed start and a closed goal, reachable from the start, and how to plan on
-/// it (space, assignment bounds, search margin; `request.pattern` points into `pattern`).
+/// it (space, assignment bounds, search margin).
 struct BenchScene {
   std::string name,         ///< the scene's name, as bench_scene_names() lists it
       description;          ///< what the scene is, in words
-  std::shared_ptr<const geometry::CreasePattern> pattern;  ///< the pattern, shared with `request.pattern`
-  /// Pattern, goal, start (flat when empty), space, bounds, collisions (on), replay (off), …
-  planners::PlanRequest request;
+  std::shared_ptr<const geometry::CreasePattern> pattern;  ///< the pattern
+  geometry::FoldState goal;  ///< closed, one angle per joint, radians
+  /// Start (flat when empty), space, bounds, collisions (on), replay (off), …
+  planners::PlanOptions options;
 };
 
 /// A named set of scenes and planners run together.

@@ -13,7 +13,7 @@
 #include "foldkit/geometry/status.hpp"
 #include "foldkit/simulation/simulate.hpp"
 
-/// Planning with OMPL: the pipeline from a request to a checked, replayed CMML plan, and the
+/// Planning with OMPL: the pipeline from a problem to a checked, replayed CMML plan, and the
 /// planners by name.
 namespace foldkit::planners {
 
@@ -34,7 +34,7 @@ std::vector<std::string> space_names();
 /// The kind's name, as parse_space() reads it.
 const char* to_string(SpaceKind kind);
 
-/// A request plan() refuses because of its start or its goal (not closed, breaking the
+/// A problem plan() refuses because of its start or its goal (not closed, breaking the
 /// assignment, colliding, singular for the space): which one, so that a caller can point at the
 /// file it came from. Any other refusal is a plain std::invalid_argument.
 class PlanInputError : public std::invalid_argument {
@@ -50,16 +50,15 @@ class PlanInputError : public std::invalid_argument {
   End end_;
 };
 
-/// A planning problem: from a closed start (flat by default) to a closed goal.
-struct PlanRequest {
-  const geometry::CreasePattern* pattern = nullptr;  ///< the pattern (required; must outlive the call)
+/// How plan() plans: where it starts (flat by default), the space and planner, the limits and what
+/// it checks. The pattern and the goal are plan()'s own arguments.
+struct PlanOptions {
   /// Where the plan starts (closed, one angle per joint, radians); empty: the flat sheet.
   std::optional<geometry::FoldState> start;
   /// The CMML that reaches `start` from the flat sheet; empty for a flat start. When given, it
   /// comes first in the plan's sequence, in place of its first event (flat → start) when the
   /// start is not flat, and the events are renumbered from 1.
   geometry::FoldSequence start_sequence;
-  geometry::FoldState goal;  ///< closed (to 1e-6 rad), one angle per joint, radians
   SpaceKind space = SpaceKind::Auto;  ///< which space to search
   std::string planner = "RRTConnect";  ///< an OMPL planner by name (make_planner())
   /// The planner's parameters by name, set through OMPL's ParamSet (planner->params()), e.g.
@@ -97,7 +96,7 @@ struct PlanRequest {
   /// step is 2.5 × this. Positive.
   double resolution = 0.02;
   double waypoint_step = 0.02;  ///< largest joint change between two CMML waypoints, radians; positive
-  double velocity = 1.0;        ///< fastest joint's speed in the CMML, rad/s; positive
+  double speed = 1.0;           ///< the fastest joint's speed in each CMML event, rad/s (written °/s); positive
   bool replay = true;           ///< replay the plan in the simulator before accepting it
   /// Silence OMPL's console messages (sets OMPL's log level to none, for the whole process).
   bool quiet = true;
@@ -115,11 +114,11 @@ struct PlanResult {
   geometry::Status status;
   std::string planner,          ///< the planner's name, as requested
       space;                    ///< the space searched: "single-vertex", "driving", "projected", "atlas" or "tangent-bundle"
-  double time = 0.0;            ///< seconds the search ran (the fallback and the way through flat included; at most about PlanRequest::time)
-  /// Whether the path came from a fallback (PlanRequest::fallback) rather than from one run of
+  double seconds = 0.0;         ///< wall-clock seconds the search ran (the fallback and the way through flat included; at most about PlanOptions::time)
+  /// Whether the path came from a fallback (PlanOptions::fallback) rather than from one run of
   /// the planner.
   bool fallback = false;
-  /// Whether the path goes start → flat → goal as two plans from flat (PlanRequest::fallback in
+  /// Whether the path goes start → flat → goal as two plans from flat (PlanOptions::fallback in
   /// the driving space); `time` counts the direct attempt and both plans.
   bool via_flat = false;
   double path_length = 0.0;     ///< Σ Euclidean joint-angle distance between waypoints, radians
@@ -131,12 +130,14 @@ struct PlanResult {
 
 /// The pipeline: space → planner → path → simplify → densify → CMML → simulator replay. A plan
 /// that cannot be found or does not check out is a status, not an exception.
-/// @param request  the problem and the planner's settings
-/// @throws std::invalid_argument for a request that cannot be planned: no pattern, a pattern
-///         without closed loops, a start or goal of the wrong size, not closed, breaking the
-///         assignment or colliding, a time, resolution, waypoint step or velocity that is not
-///         positive, an unknown planner, a single-vertex space on a pattern that is not one
-///         vertex (or a goal singular for it), or no closed way out of a singular start
-PlanResult plan(const PlanRequest& request);
+/// @param pattern  the crease pattern (only read during the call)
+/// @param goal     where the plan ends: closed (to 1e-6 rad), one angle per joint, radians
+/// @param options  where it starts, the space, the planner and its settings
+/// @throws std::invalid_argument for a problem that cannot be planned: a pattern without closed
+///         loops, a start or goal of the wrong size, not closed, breaking the assignment or
+///         colliding, a time, resolution, waypoint step or speed that is not positive, an unknown
+///         planner, a single-vertex space on a pattern that is not one vertex (or a goal singular
+///         for it), or no closed way out of a singular start
+PlanResult plan(const geometry::CreasePattern& pattern, const geometry::FoldState& goal, const PlanOptions& options = {});
 
 }  // namespace foldkit::planners

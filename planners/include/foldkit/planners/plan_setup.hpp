@@ -21,8 +21,10 @@ namespace foldkit::planners {
 /// SpaceInformation (validity checker and motion validator set) and the way out of a singular
 /// start. Plain data; what differs between the kinds of space is in `plan_space`.
 struct PlanSetup {
+  const geometry::CreasePattern* pattern = nullptr;  ///< the pattern (make_plan_setup's; must outlive the setup)
   std::shared_ptr<PlanSpace> plan_space;   ///< the space's kind, built: its name, states, paths and fallback
-  geometry::FoldState start;               ///< the request's start (flat when it gives none)
+  geometry::FoldState start;               ///< where the plan starts (PlanOptions::start; flat when it gives none)
+  geometry::FoldState goal;                ///< where it ends
   std::vector<geometry::FoldState> prefix;  ///< start … the state the planner starts from (the lead-in)
   std::shared_ptr<const geometry::ClosureSystem> system;  ///< the pattern's closure equations
   std::shared_ptr<statespaces::FoldValidity> validity;    ///< what a valid state is
@@ -50,31 +52,34 @@ void set_start_and_goal(const PlanSetup& setup, ompl::geometric::SimpleSetup& ss
 /// connect loop): setup.validity is under a FoldValidity::TimeLimit meanwhile.
 ompl::base::PlannerStatus run_planner(const PlanSetup& setup, ompl::geometric::SimpleSetup& ss, double seconds);
 
-/// Checks the request as plan() does and builds the space: SpaceKind::Auto picks the
+/// Checks the problem as plan() does and builds the space: SpaceKind::Auto picks the
 /// single-vertex space for a pattern with one interior vertex and no hole, else the driving-crease
 /// one. A start below the rank the space needs (PlanSpace::lead_in_rank; the flat sheet) is left
 /// along geometry::lead_in, giving the prefix.
-/// @param request         the planning problem
+/// @param pattern         the pattern (must outlive the setup)
+/// @param goal            closed, one angle per joint, radians
+/// @param options         the plan's settings (PlanOptions)
 /// @param allow_no_loops  give a pattern without closed loops a joint-angle box (plan() refuses
 ///                        such patterns: nothing to plan on)
-/// @throws std::invalid_argument for a request without a pattern, a start or goal that does not
-///         hold one angle per joint, is not closed (to 1e-6 rad), breaks the assignment or
-///         collides, a resolution, waypoint step or velocity that is not positive, a pattern
-///         without loops (unless allowed), no closed way out of a singular start, or a space
-///         that cannot be built (ClosureConstraint, SingleVertexChain)
-PlanSetup make_plan_setup(const PlanRequest& request, bool allow_no_loops = false);
+/// @throws std::invalid_argument for a start or goal that does not hold one angle per joint, is
+///         not closed (to 1e-6 rad), breaks the assignment or collides, a resolution, waypoint
+///         step or speed that is not positive, a pattern without loops (unless allowed), no
+///         closed way out of a singular start, or a space that cannot be built
+///         (ClosureConstraint, SingleVertexChain)
+PlanSetup make_plan_setup(const geometry::CreasePattern& pattern, const geometry::FoldState& goal, const PlanOptions& options,
+                          bool allow_no_loops = false);
 
 /// A solution path as fold states: the prefix, then the path densified along the space's own
-/// motion (PlanSpace::path_states), then,
-/// with `to_goal`, the goal when the path ends short of it; finally densified onto the closure
-/// manifold (densify()), no joint moving more than request.waypoint_step between waypoints.
+/// motion (PlanSpace::path_states), then, with `to_goal`, the goal when the path ends short of it;
+/// finally densified onto the closure manifold (densify()), no joint moving more than
+/// options.waypoint_step between waypoints.
 /// @return the waypoints, or nothing, with `*why` set when `why` is not null, when the path jumps
 std::optional<std::vector<geometry::FoldState>> path_waypoints(const PlanSetup& setup, ompl::geometric::PathGeometric path,
-                                                               const PlanRequest& request, bool to_goal, std::string* why);
+                                                               const PlanOptions& options, bool to_goal, std::string* why);
 
-/// The CMML of `waypoints` from the flat sheet (geometry::path_sequence at request.velocity),
-/// the request's start sequence first; titled after the pattern.
-geometry::FoldSequence plan_sequence(const PlanRequest& request, const PlanSetup& setup,
+/// The CMML of `waypoints` from the flat sheet (geometry::path_sequence at options.speed), the
+/// options' start sequence first; titled after the pattern.
+geometry::FoldSequence plan_sequence(const PlanSetup& setup, const PlanOptions& options,
                                      const std::vector<geometry::FoldState>& waypoints);
 
 }  // namespace foldkit::planners

@@ -20,7 +20,7 @@ namespace foldkit::planners {
 
 struct PlanSetup;
 
-/// The way through flat a plan takes when its planner finds no path (PlanRequest::fallback).
+/// The way through flat a plan takes when its planner finds no path (PlanOptions::fallback).
 enum class Fallback {
   None,       ///< none: the planner has all of the time
   Carpenter,  ///< Carpenter's rule on the sphere, start → flat → goal (CarpenterFallbackPlanner)
@@ -43,18 +43,18 @@ class PlanSpace {
   /// The rank of the closure Jacobian the planner's first state must have; a start below it is
   /// left along geometry::lead_in to that rank first. May build what it needs to tell (the
   /// single-vertex space asks its closed form).
-  /// @param setup   the checked ends and the closure system (setup.start, setup.system)
-  /// @param request the problem (its goal and settings)
+  /// @param setup   the checked problem (setup.pattern, setup.start, setup.goal, setup.system)
+  /// @param options the plan's settings
   /// @param bounds  the per-joint angle bounds of the plan (radians)
   /// @return 0 when the start needs no way out
-  virtual Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanRequest& request,
+  virtual Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanOptions& options,
                                     const statespaces::AngleBounds& bounds) = 0;
 
   /// Builds setup.space, setup.si (motion validator set; make_plan_setup() adds the validity
-  /// checker) and setup.reader, for a plan from setup.prefix.back() to request.goal.
+  /// checker) and setup.reader, for a plan from setup.prefix.back() to setup.goal.
   /// @throws PlanInputError when an end is a singular state of the space; std::invalid_argument
   ///         when the space cannot be built on the pattern
-  virtual void build(PlanSetup& setup, const PlanRequest& request, const statespaces::AngleBounds& bounds) = 0;
+  virtual void build(PlanSetup& setup, const PlanOptions& options, const statespaces::AngleBounds& bounds) = 0;
 
   /// Writes a closed fold state into a state of the built space.
   /// @return false when the space cannot hold it (a singular state of its closed form or chart)
@@ -69,7 +69,7 @@ class PlanSpace {
   virtual std::vector<geometry::FoldState> path_states(const PlanSetup& setup, ompl::geometric::PathGeometric path,
                                                        double step) const;
 
-  /// The way through flat that applies to this space (PlanRequest::fallback); None by default.
+  /// The way through flat that applies to this space (PlanOptions::fallback); None by default.
   virtual Fallback fallback() const;
 };
 
