@@ -54,7 +54,7 @@ int run_spherical(const CarpenterArgs& opt) {
                      {"max_length_error", r.max_sector_error},
                      {"min_distance_growth", r.min_distance_growth},
                      {"max_closure_error", r.max_closure_error},
-                     {"flat", r.status.ok()}};
+                     {"flat", r.status.ok()}};  // deprecated: status
     add_status(j, r.status);
     print_json(j);
   }
@@ -100,10 +100,11 @@ int run_planar(const CarpenterArgs& opt) {
                      {"steps", r.steps},
                      {"frames", r.frames.size()},
                      {"lp_solves", r.lp_solves},
-                     {"time", r.seconds},
+                     {"seconds", r.seconds},
+                     {"time", r.seconds},  // deprecated: the name of `seconds` before issue 37
                      {"max_length_error", r.max_length_error},
                      {"min_distance_growth", r.min_distance_growth},
-                     {goal, r.status.ok()}};
+                     {goal, r.status.ok()}};  // deprecated: status
     add_status(j, r.status);
     print_json(j);
   }

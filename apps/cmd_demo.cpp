@@ -49,7 +49,7 @@ nlohmann::json simulation_stage(const geometry::CreasePattern& pattern, const ge
   std::cerr << "[demo] " << fs::path(base).filename().string() << ": simulated (" << simulation::to_string(model) << "), "
             << (report.status.ok() ? "valid" : "INVALID") << ", max closure error " << report.max_closure_error << " rad, "
             << report.collision_count << " collisions -> " << base << "{.fold,-simulation.json,-snapshots/}\n";
-  return {{"ok", report.status.ok()},
+  return {{"ok", report.status.ok()},  // deprecated: status
           {"status", geometry::to_string(report.status.code)},
           {"max_closure_error", report.max_closure_error},
           {"collisions", report.collision_count},
@@ -109,7 +109,7 @@ nlohmann::json stiffness_stage(const std::string& dir, nlohmann::json& simulatio
   std::cerr << "[demo] cube-1: folded cube, base fixed, 40 N on top: largest displacement " << r.max_displacement * 1e3
             << " mm (" << r.iterations << " Newton iterations, " << counts[0] << " hinged, " << counts[1] << " face, " << counts[2]
             << " edge connections) -> " << base << "{.pmml,-folded.cmml,-top-load.loadcase}\n";
-  return {{"converged", r.status.ok()},
+  return {{"converged", r.status.ok()},  // deprecated: status
           {"status", geometry::to_string(r.status.code)},
           {"max_displacement", r.max_displacement},
           {"iterations", r.iterations},

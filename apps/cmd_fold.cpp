@@ -117,7 +117,7 @@ folding::ProjectedFoldingResult fold(const FoldArgs& opt, const geometry::Crease
 
 void print_summary(const folding::ProjectedFoldingResult& r) {
   std::cerr << stop_name(r.status.code) << ": " << r.status.message << " (fraction " << r.fraction << ", " << r.steps << " steps, "
-            << r.newton_iterations << " Newton iterations, closure error " << r.max_closure_error << " rad, chord error " << r.max_chord_error << " rad, " << r.time << " s)\n";
+            << r.newton_iterations << " Newton iterations, closure error " << r.max_closure_error << " rad, chord error " << r.max_chord_error << " rad, " << r.seconds << " s)\n";
   if (r.rank_decisions > 0)
     std::cerr << "rank " << r.rank << " (" << r.dof << " DOF) by " << r.rank_method << ", singular-value gap " << r.rank_gap
               << " (smallest over " << r.rank_decisions << " decisions " << r.min_rank_gap << ")\n";
@@ -126,8 +126,8 @@ void print_summary(const folding::ProjectedFoldingResult& r) {
 nlohmann::json fold_json(const FoldArgs& opt, const folding::ProjectedFoldingResult& r, bool written) {
   const bool reached = r.status.code == geometry::StatusCode::Success;
   const bool replay_ok = r.replay && r.replay->status.ok();
-  nlohmann::json j{{"stop", stop_name(r.status.code)},
-                   {"reached", reached},
+  nlohmann::json j{{"stop", stop_name(r.status.code)},  // deprecated: status
+                   {"reached", reached},  // deprecated: status
                    {"fraction", r.fraction},
                    {"target", opt.fraction},
                    {"steps", r.steps},
@@ -141,8 +141,10 @@ nlohmann::json fold_json(const FoldArgs& opt, const folding::ProjectedFoldingRes
                    {"rank_decisions", r.rank_decisions},
                    {"rank_gap", r.rank_gap},
                    {"min_rank_gap", r.rank_decisions ? nlohmann::json(r.min_rank_gap) : nlohmann::json(nullptr)},
-                   {"time", r.time},
-                   {"replay_ok", r.replay ? nlohmann::json(replay_ok) : nlohmann::json(nullptr)},
+                   {"seconds", r.seconds},
+                   {"time", r.seconds},  // deprecated: the name of `seconds` before issue 37
+                   {"replay_status", r.replay ? nlohmann::json(geometry::to_string(r.replay->status.code)) : nlohmann::json(nullptr)},
+                   {"replay_ok", r.replay ? nlohmann::json(replay_ok) : nlohmann::json(nullptr)},  // deprecated: replay_status
                    {"message", r.status.message},
                    {"output", written ? nlohmann::json(opt.output) : nlohmann::json(nullptr)}};
   if (r.replay) j["replay_max_closure_error"] = r.replay->max_closure_error;

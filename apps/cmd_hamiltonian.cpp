@@ -90,8 +90,8 @@ Command add_hamiltonian(CLI::App& root) {
               std::cerr << path << ": " << (r.status.code == geometry::StatusCode::NoSolution ? "no Hamiltonian " : "undecided Hamiltonian ")
                         << (opt->cycle ? "cycle" : "path") << ": " << r.status.message << '\n';
             if (opt->json) {
-              nlohmann::json j = {{"found", found},
-                                  {"verdict", verdict_name(r.status.code)},
+              nlohmann::json j = {{"found", found},  // deprecated: status
+                                  {"verdict", verdict_name(r.status.code)},  // deprecated: status
                                   {"method", method},
                                   {"dimension", three_d ? 3 : 2},
                                   {"cells", cells},

@@ -91,7 +91,7 @@ bool set_goal(const PlanArgs& opt, const geometry::CreasePattern& pattern, geome
   if (!g) {
     std::cerr << "no plan: no closed state holds the angles of --goal-angles (" << why << ")\n";
     if (opt.json) {
-      nlohmann::json j{{"solved", false}};
+      nlohmann::json j{{"solved", false}};  // deprecated: status
       // The nearest closed state was not found; that proves no such state exists only sometimes.
       add_status(j, {geometry::StatusCode::NoProgress, "no closed goal state: " + why});
       print_json(j);
@@ -125,12 +125,13 @@ int report(const PlanArgs& opt, const planners::PlanResult& r) {
     std::cerr << "wrote " << opt.output << '\n';
   }
   if (opt.json) {
-    nlohmann::json j{{"solved", r.status.ok()},
+    nlohmann::json j{{"solved", r.status.ok()},  // deprecated: status
                      {"planner", r.planner},
                      {"space", r.space},
                      {"fallback", r.fallback},
                      {"via_flat", r.via_flat},
-                     {"time", r.seconds},
+                     {"seconds", r.seconds},
+                     {"time", r.seconds},  // deprecated: the name of `seconds` before issue 37
                      {"path_length", r.path_length},
                      {"max_closure_error", r.max_closure_error},
                      {"waypoints", r.waypoints.size()}};

@@ -14,7 +14,7 @@ Command add_project(CLI::App& root) {
     std::string pattern, state, output;
     geometry::ProjectionOptions projection;
     bool free_signs = false;
-    double velocity = 30.0;
+    double speed = 30.0;  // degrees per second
     bool json = false;
   };
   auto opt = std::make_shared<Options>();
@@ -25,7 +25,9 @@ Command add_project(CLI::App& root) {
   positive(app->add_option("--tolerance", opt->projection.tolerance, "Largest loop error accepted, radians"));
   positive(app->add_option("--max-iterations", opt->projection.max_iterations, "Iteration limit"));
   app->add_flag("--free-signs", opt->free_signs, "Let creases change between mountain and valley");
-  positive(app->add_option("--velocity", opt->velocity, "Velocity written into the CMML, degrees per second"));
+  // --velocity: its name before issue 37 (velocity is fold's desired direction), kept one more release.
+  positive(app->add_option("--speed,--velocity", opt->speed,
+                           "Speed written into the CMML (its <Velocity>), degrees per second; --velocity is its deprecated name"));
   add_json(app, opt->json);
   return {app, [opt] {
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
@@ -34,7 +36,7 @@ Command add_project(CLI::App& root) {
             geometry::ProjectionOptions po = opt->projection;
             po.keep_signs = !opt->free_signs;
             const geometry::ProjectionResult r = geometry::project(system, start, po);
-            nlohmann::json out = {{"converged", r.status.ok()},
+            nlohmann::json out = {{"converged", r.status.ok()},  // deprecated: status
                                   {"iterations", r.iterations},
                                   {"closure_error", r.error},
                                   {"initial_error", system.max_error(start)},
@@ -45,7 +47,7 @@ Command add_project(CLI::App& root) {
             if (r.status.ok()) {
               const std::string title = pattern.title().empty() ? "projected" : pattern.title() + " (projected)";
               io::write_file_atomic(opt->output,
-                                    io::write_cmml(geometry::sequence_to(pattern, r.state, opt->velocity * M_PI / 180.0, title)));
+                                    io::write_cmml(geometry::sequence_to(pattern, r.state, opt->speed * M_PI / 180.0, title)));
             }
             if (opt->json) print_json(out);
             return r.status.ok() ? kOk : kNoPlan;

@@ -53,7 +53,7 @@ Command add_stiffness(CLI::App& root) {
             for (const auto& m : r.modules)
               modules.push_back({{"id", m.id}, {"fixed", m.fixed}, {"displacement", vec(m.displacement)}, {"rotation", vec(m.rotation)}});
             nlohmann::json out = {{"title", lc.title},
-                                        {"converged", r.status.ok()},
+                                        {"converged", r.status.ok()},  // deprecated: status
                                         {"linear", opt->linear},
                                         {"iterations", r.iterations},
                                         {"load_steps", r.load_steps},

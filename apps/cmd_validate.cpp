@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli_common.hpp"
+#include "foldkit/geometry/status.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/fold_format.hpp"
@@ -72,7 +73,8 @@ int run_validate(const ValidateArgs& opt) {
       std::cerr << e.what() << '\n';
       all_ok = false;
       files.push_back({{"file", opt.pattern},
-                       {"ok", false},
+                       {"status", geometry::to_string(geometry::StatusCode::InvalidInput)},
+                       {"ok", false},  // deprecated: status
                        {"errors", {{{"line", e.line()}, {"message", e.message()}}}},
                        {"warnings", nlohmann::json::array()}});
     }
@@ -88,9 +90,18 @@ int run_validate(const ValidateArgs& opt) {
       (d.severity == Severity::Error ? errors : warnings).push_back({{"line", d.line}, {"message", d.message}});
     }
     if (ok) std::cerr << path << ": ok" << (summary.empty() ? "" : " (" + summary + ")") << '\n';
-    files.push_back({{"file", path}, {"ok", ok}, {"errors", errors}, {"warnings", warnings}});
+    files.push_back({{"file", path},
+                     {"status", geometry::to_string(ok ? geometry::StatusCode::Success : geometry::StatusCode::InvalidInput)},
+                     {"ok", ok},  // deprecated: status
+                     {"errors", errors},
+                     {"warnings", warnings}});
   }
-  if (opt.json) print_json({{"ok", all_ok}, {"files", files}});
+  if (opt.json) {
+    nlohmann::json j{{"ok", all_ok}, {"files", files}};  // "ok": deprecated, status
+    add_status(j, all_ok ? geometry::Status{geometry::StatusCode::Success, "every file is valid"}
+                         : geometry::Status{geometry::StatusCode::InvalidInput, "a file has errors"});
+    print_json(j);
+  }
   return all_ok ? kOk : kInvalidInput;
 }
 

@@ -36,7 +36,7 @@ nlohmann::json report_json(const geometry::CreasePattern& pattern, const simulat
   for (std::size_t j = 0; j < pattern.joints().size(); ++j)
     angles.push_back({{"joint", pattern.joints()[j].id},
                       {"angle", r.final_state.angles[static_cast<Eigen::Index>(j)] * 180.0 / M_PI}});
-  return {{"ok", r.status.ok()},
+  return {{"ok", r.status.ok()},  // deprecated: status
           {"status", geometry::to_string(r.status.code)},
           {"message", r.status.message},
           {"model", simulation::to_string(r.model)},

@@ -54,7 +54,7 @@ void BM_ProjectedFoldingMiura(benchmark::State& state) {
   state.counters["max_closure_error"] = r.max_closure_error;
   state.counters["max_chord_error"] = r.max_chord_error;
   state.counters["fraction"] = r.fraction;
-  state.counters["time_s"] = r.time;
+  state.counters["time_s"] = r.seconds;
 }
 BENCHMARK(BM_ProjectedFoldingMiura)
     ->ArgNames({"n", "chord", "collisions", "adaptive"})

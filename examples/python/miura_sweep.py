@@ -7,7 +7,7 @@ measures
 
   * DOF: foldkit.dof at the last folded state (a Miura-ori has 1 DOF at every size, except at the
     singular flat and fully folded states);
-  * fold time: the folder's own time (FoldResult.time, no replay) and the wall-clock time of the
+  * fold time: the folder's own time (FoldResult.seconds, no replay) and the wall-clock time of the
     whole foldkit.fold call (which also replays the sequence in the simulator, with collision
     checks unless --no-collision);
   * closure error: the largest loop error over the folded states. FoldResult.max_closure_error is
@@ -89,7 +89,7 @@ def measure(n, fraction, collisions):
         "n": n,
         "creases": mobility.creases,
         "steps": result.steps,
-        "fold_s": result.time,
+        "fold_s": result.seconds,
         "wall_s": wall,
         "dof": mobility.dof,
         "rank_gap": mobility.rank_gap,
@@ -114,7 +114,7 @@ def plot(rows, fraction, collisions, path):
     fig.suptitle(f"n × n Miura-ori folded to {fraction:g}π (projected velocity, "
                  f"collisions {'on' if collisions else 'off'})")
 
-    ax_time.loglog(creases, [r["fold_s"] for r in rows], "o-", label="folding (FoldResult.time)")
+    ax_time.loglog(creases, [r["fold_s"] for r in rows], "o-", label="folding (FoldResult.seconds)")
     ax_time.loglog(creases, [r["wall_s"] for r in rows], "s--", label="fold() call, with replay")
     ax_time.set(ylabel="seconds", title="Fold time")
 

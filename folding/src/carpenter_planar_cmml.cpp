@@ -29,7 +29,7 @@ geometry::FoldSequence turning_angle_sequence(const std::vector<Frame2>& frames,
       c.joint_id = first_joint + static_cast<int>(j);
       c.angle = angles[j];
       const double share = largest > 0.0 ? std::abs(angles[j] - previous[j]) / largest : 1.0;
-      c.velocity = std::max(kFastest * share, kSlowest);
+      c.speed = std::max(kFastest * share, kSlowest);
       event.folds.push_back(c);
     }
     sequence.events.push_back(std::move(event));

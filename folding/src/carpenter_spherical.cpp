@@ -116,8 +116,8 @@ std::vector<Vector3d> crease_directions(const geometry::CreasePattern& pattern, 
 CarpenterSphericalResult flatten_single_vertex(const geometry::CreasePattern& pattern, const FoldState& folded,
                                     const CarpenterSphericalOptions& options) {
   if (!(options.step > 0) || !(options.frame_step > 0) || !(options.flat_tolerance > 0) ||
-      !(options.straight_tolerance > 0) || options.max_steps < 1 || !(options.velocity > 0))
-    throw std::invalid_argument("spherical Carpenter's rule: step, frame_step, tolerances, max_steps and velocity must be positive");
+      !(options.straight_tolerance > 0) || options.max_steps < 1 || !(options.speed > 0))
+    throw std::invalid_argument("spherical Carpenter's rule: step, frame_step, tolerances, max_steps and speed must be positive");
   const Vertex v = read_vertex(pattern);
   const std::size_t n = v.joints.size();
   const geometry::ClosureSystem closure(pattern);
@@ -172,7 +172,7 @@ CarpenterSphericalResult flatten_single_vertex(const geometry::CreasePattern& pa
     if (!std::isfinite(result.min_rate)) result.min_rate = 0.0;
     std::vector<FoldState> waypoints(result.frames.rbegin(), result.frames.rend());
     if (!waypoints.empty() && max_abs(waypoints.front().angles) == 0.0) waypoints.erase(waypoints.begin());
-    result.folding = geometry::path_sequence(pattern, waypoints, options.velocity,
+    result.folding = geometry::path_sequence(pattern, waypoints, options.speed,
                                              pattern.title() + " folded by spherical Carpenter's rule (unfolding reversed)");
     return result;
   };

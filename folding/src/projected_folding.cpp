@@ -428,14 +428,14 @@ ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, co
   if (options.max_steps < 1) throw std::invalid_argument("fold_projected: max_steps must be at least 1");
   if (!(options.lead_in > 0.0 && options.lead_in <= 1.0))
     throw std::invalid_argument("fold_projected: the lead-in amplitude must lie in (0, 1] rad");
-  if (!(options.rank_tolerance > 0.0) || !(options.singular_ratio >= 0.0) || !(options.cmml_velocity > 0.0) ||
-      !std::isfinite(options.cmml_velocity))
-    throw std::invalid_argument("fold_projected: rank tolerance and CMML velocity must be positive");
+  if (!(options.rank_tolerance > 0.0) || !(options.singular_ratio >= 0.0) || !(options.speed > 0.0) ||
+      !std::isfinite(options.speed))
+    throw std::invalid_argument("fold_projected: the rank tolerance and the CMML speed must be positive");
 
   ProjectedFoldingResult result;
   const auto t0 = std::chrono::steady_clock::now();
   Folder(pattern, o, result).run(desired);
-  result.time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   result.fraction = fraction_of(result.states.back());
   if (options.toward.size()) {
     // The stop is a fraction of the largest target; the targets themselves may lie on another
@@ -447,7 +447,7 @@ ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, co
         << pattern.joints()[static_cast<std::size_t>(worst)].id;
     result.status.message += out.str();
   }
-  result.sequence = geometry::path_sequence(pattern, result.states, options.cmml_velocity, pattern.title());
+  result.sequence = geometry::path_sequence(pattern, result.states, options.speed, pattern.title());
   if (options.replay && result.states.size() > 1) {
     simulation::SimulationOptions so;
     so.collisions = options.collisions;

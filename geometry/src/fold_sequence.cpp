@@ -52,33 +52,33 @@ FoldState end_state(const CreasePattern& pattern, const FoldSequence& sequence) 
   return event_states(pattern, sequence).back();
 }
 
-FoldSequence sequence_to(const CreasePattern& pattern, const FoldState& state, double velocity, std::string title) {
+FoldSequence sequence_to(const CreasePattern& pattern, const FoldState& state, double speed, std::string title) {
   FoldSequence seq{std::move(title), {}};
   FoldEvent event{1, {}};
   for (std::size_t j = 0; j < pattern.joints().size(); ++j) {
     const double angle = state.angles[static_cast<Eigen::Index>(j)];
-    if (angle != 0.0) event.folds.push_back({pattern.joints()[j].id, angle, velocity, 0});
+    if (angle != 0.0) event.folds.push_back({pattern.joints()[j].id, angle, speed, 0});
   }
   if (!event.folds.empty()) seq.events.push_back(std::move(event));
   return seq;
 }
 
-FoldSequence path_sequence(const CreasePattern& pattern, const std::vector<FoldState>& waypoints, double max_velocity,
+FoldSequence path_sequence(const CreasePattern& pattern, const std::vector<FoldState>& waypoints, double max_speed,
                            std::string title) {
-  if (!(max_velocity > 0.0) || !std::isfinite(max_velocity))
-    throw std::invalid_argument("path_sequence: velocity must be positive and finite");
+  if (!(max_speed > 0.0) || !std::isfinite(max_speed))
+    throw std::invalid_argument("path_sequence: the speed must be positive and finite");
   FoldSequence seq{std::move(title), {}};
   FoldState at = FoldState::flat(pattern);
   for (const FoldState& next : waypoints) {
     if (next.angles.size() != at.angles.size()) throw std::invalid_argument("path_sequence: a waypoint does not hold one angle per joint");
     const double longest = (next.angles - at.angles).cwiseAbs().maxCoeff();
     if (!(longest > 0.0)) continue;
-    const double duration = longest / max_velocity;
+    const double duration = longest / max_speed;
     FoldEvent event{static_cast<int>(seq.events.size()) + 1, {}};
     for (std::size_t j = 0; j < pattern.joints().size(); ++j) {
       const auto k = static_cast<Eigen::Index>(j);
       const double change = std::abs(next.angles[k] - at.angles[k]);
-      // A joint that barely moves still needs a velocity a CMML can hold (positive in degrees).
+      // A joint that barely moves still needs a speed a CMML can hold (positive in degrees).
       if (change > 0.0) event.folds.push_back({pattern.joints()[j].id, next.angles[k], std::max(change / duration, 1e-9), 0});
     }
     seq.events.push_back(std::move(event));

@@ -43,9 +43,9 @@ std::pair<int, geometry::FoldCommand> read_fold(const detail::XmlInput& in, cons
   const XMLElement& vel = in.only_child(e, "Velocity");
   const double speed = in.number(vel);
   if (!(speed > 0.0)) in.fail(vel, "<Velocity> must be positive (degrees per second), found " + format_number(speed));
-  fold.velocity = degrees_to_radians(speed);
+  fold.speed = degrees_to_radians(speed);
   // A subnormal speed such as 5e-324 degrees/s is 0 rad/s once converted.
-  if (!(fold.velocity > 0.0))
+  if (!(fold.speed > 0.0))
     in.fail(vel, "<Velocity> must be positive (degrees per second), found " + format_number(speed) + " (too small)");
   return {event, fold};
 }
@@ -65,16 +65,16 @@ std::string angle_text(const geometry::FoldCommand& f) {
   return text;
 }
 
-// Positive degrees per second that read back to a positive, finite velocity.
-std::string velocity_text(const geometry::FoldCommand& f) {
-  if (!std::isfinite(f.velocity)) invalid(f, "velocity: not a finite number");
-  if (!(f.velocity > 0.0)) invalid(f, "velocity must be positive, found " + format_number(f.velocity));
-  if (!std::isfinite(f.velocity * (180.0 / M_PI)))
-    invalid(f, "velocity " + format_number(f.velocity) + " rad/s in degrees: not a finite number");
-  const std::string text = format_degrees(f.velocity);
+// The <Velocity> text: positive degrees per second that read back to a positive, finite speed.
+std::string speed_text(const geometry::FoldCommand& f) {
+  if (!std::isfinite(f.speed)) invalid(f, "speed: not a finite number");
+  if (!(f.speed > 0.0)) invalid(f, "speed must be positive, found " + format_number(f.speed));
+  if (!std::isfinite(f.speed * (180.0 / M_PI)))
+    invalid(f, "speed " + format_number(f.speed) + " rad/s in degrees: not a finite number");
+  const std::string text = format_degrees(f.speed);
   const NumberList back = parse_numbers(text);
   if (!back.error.empty() || !(degrees_to_radians(back.values.at(0)) > 0.0))
-    invalid(f, "velocity " + format_number(f.velocity) + " rad/s cannot be written: " + (back.error.empty() ? "too small" : back.error));
+    invalid(f, "speed " + format_number(f.speed) + " rad/s cannot be written: " + (back.error.empty() ? "too small" : back.error));
   return text;
 }
 
@@ -179,7 +179,7 @@ std::string write_cmml(const geometry::FoldSequence& sequence) {
   for (const auto& event : sequence.events)
     for (const auto& f : event.folds)
       out << "  <Fold>\n    <EventNumber>" << event.number << "</EventNumber>\n    <ID>" << f.joint_id
-          << "</ID>\n    <FoldAngle>" << angle_text(f) << "</FoldAngle>\n    <Velocity>" << velocity_text(f)
+          << "</ID>\n    <FoldAngle>" << angle_text(f) << "</FoldAngle>\n    <Velocity>" << speed_text(f)
           << "</Velocity>\n  </Fold>\n";
   out << "</CMML>\n";
   return out.str();

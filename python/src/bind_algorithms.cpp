@@ -40,7 +40,14 @@ void bind_fold(py::module_& m) {
           "min_rank_gap", [](const R& r) { return r.rank_decisions ? py::object(py::float_(r.min_rank_gap)) : py::object(py::none()); },
           "Smallest singular-value gap over the rank decisions, or None when none was made.")
       .def_readonly("min_pivot_ratio", &R::min_pivot_ratio, "Smallest pivot ratio the rank screen saw.")
-      .def_readonly("time", &R::time, "Seconds spent folding (no replay).")
+      .def_readonly("seconds", &R::seconds, "Wall-clock seconds spent folding (not the replay).")
+      .def_property_readonly(
+          "time",
+          [](const R& r) {
+            deprecated("FoldResult.time is deprecated: use seconds");
+            return r.seconds;
+          },
+          "Deprecated name of `seconds`.")
       .def_readonly("sequence", &R::sequence, "The CMML of the states (FoldSequence).")
       .def_readonly("replay", &R::replay,
                     "The simulator's SimulationReport of the sequence, or None. `status` stays 'success' when the target "
@@ -164,7 +171,7 @@ void bind_carpenter(py::module_& m) {
       .def_readonly("steps", &R::steps, "Steps taken.")
       .def_readonly("lp_solves", &R::lp_solves, "LPs solved.")
       .def_readonly("max_struts", &R::max_struts, "Most strut rows any LP held.")
-      .def_readonly("seconds", &R::seconds, "Wall-clock time of the run.")
+      .def_readonly("seconds", &R::seconds, "Wall-clock seconds of the run.")
       .def_readonly("max_length_error", &R::max_length_error, "Largest bar-length change over the frames.")
       .def_readonly("min_distance_growth", &R::min_distance_growth,
                     "Smallest change of any non-bar distance between frames (≥ 0: expansive).");
@@ -281,13 +288,16 @@ void bind_hamiltonian(py::module_& m) {
       "`foldkit hamiltonian`: exact search within `budget` nodes, or with refine=True a cycle of the 2× refined shape in "
       "linear time. Returns a HamiltonianResult.");
   m.def(
-      "fold_cube_chain", [](const geometry::CreasePattern& sheet, int cubes, double velocity) {
+      "fold_cube_chain",
+      [](const geometry::CreasePattern& sheet, int cubes, double speed, const py::object& velocity) {
+        speed = renamed(speed, velocity, "velocity", "speed");
         require(cubes >= 1, "cubes", "at least 1", cubes);
-        require_positive(velocity, "velocity");
-        return folding::fold_cube_chain(sheet, cubes, velocity);
+        require_positive(speed, "speed");
+        return folding::fold_cube_chain(sheet, cubes, speed);
       },
-      py::arg("sheet"), py::arg("cubes"), py::arg("velocity") = 1.0,
-      "The FoldSequence that folds generators.cube_sheet(cubes) into a chain of cubes.");
+      py::arg("sheet"), py::arg("cubes"), py::arg("speed") = 1.0, py::arg("velocity") = py::none(),
+      "The FoldSequence that folds generators.cube_sheet(cubes) into a chain of cubes, the hinges within a net at `speed` "
+      "rad/s (`velocity`: its deprecated name).");
 }
 
 }  // namespace

@@ -58,21 +58,30 @@ FoldFile fold_file(io::FoldImport f, const std::string& name) {
 }
 
 void bind_sequence(py::module_& m) {
-  py::class_<geometry::FoldCommand>(m, "FoldCommand", "One joint's fold in an event: towards `angle` at `velocity`.")
-      .def(py::init([](int joint_id, double angle, double velocity) {
+  py::class_<geometry::FoldCommand>(m, "FoldCommand", "One joint's fold in an event: towards `angle` at `speed`.")
+      .def(py::init([](int joint_id, double angle, double speed, const py::object& velocity) {
+             speed = renamed(speed, velocity, "velocity", "speed");
              require(std::isfinite(angle), "angle", "finite", angle);
-             require_positive(velocity, "velocity");
-             return geometry::FoldCommand{joint_id, angle, velocity, 0};
+             require_positive(speed, "speed");
+             return geometry::FoldCommand{joint_id, angle, speed, 0};
            }),
-           py::arg("joint_id"), py::arg("angle"), py::arg("velocity") = 1.0,
-           "A fold of the joint with ID `joint_id` to `angle` radians at `velocity` radians per second.")
+           py::arg("joint_id"), py::arg("angle"), py::arg("speed") = 1.0, py::arg("velocity") = py::none(),
+           "A fold of the joint with ID `joint_id` to `angle` radians at `speed` radians per second (the CMML's "
+           "<Velocity>; `velocity` is the deprecated name of `speed`).")
       .def_readonly("joint_id", &geometry::FoldCommand::joint_id, "The joint's ID (not its index).")
       .def_readonly("angle", &geometry::FoldCommand::angle, "Target fold angle, radians.")
-      .def_readonly("velocity", &geometry::FoldCommand::velocity, "Speed towards it, radians per second.")
+      .def_readonly("speed", &geometry::FoldCommand::speed, "How fast it turns towards it, radians per second (the CMML's <Velocity>).")
+      .def_property_readonly(
+          "velocity",
+          [](const geometry::FoldCommand& c) {
+            deprecated("FoldCommand.velocity is deprecated: use speed");
+            return c.speed;
+          },
+          "Deprecated name of `speed`.")
       .def_readonly("line", &geometry::FoldCommand::line, "Source line in the CMML; 0 when not read from a file.")
       .def("__repr__", [](const geometry::FoldCommand& c) {
         return "FoldCommand(joint_id=" + std::to_string(c.joint_id) + ", angle=" + py::repr(py::float_(c.angle)).cast<std::string>() +
-               ", velocity=" + py::repr(py::float_(c.velocity)).cast<std::string>() + ")";
+               ", speed=" + py::repr(py::float_(c.speed)).cast<std::string>() + ")";
       });
   py::class_<geometry::FoldEvent>(m, "FoldEvent", "A CMML event: folds that run at the same time.")
       .def(py::init([](int number, std::vector<geometry::FoldCommand> folds) { return geometry::FoldEvent{number, std::move(folds)}; }),
@@ -111,19 +120,25 @@ void bind_sequence(py::module_& m) {
       });
 
   m.def(
-      "sequence_to", [](const geometry::CreasePattern& p, const Eigen::VectorXd& state, double velocity, const std::string& title) {
-        require_positive(velocity, "velocity");
-        return geometry::sequence_to(p, to_state(p, state, "state"), velocity, title);
+      "sequence_to",
+      [](const geometry::CreasePattern& p, const Eigen::VectorXd& state, double speed, const std::string& title, const py::object& velocity) {
+        speed = renamed(speed, velocity, "velocity", "speed");
+        require_positive(speed, "speed");
+        return geometry::sequence_to(p, to_state(p, state, "state"), speed, title);
       },
-      py::arg("pattern"), py::arg("state"), py::arg("velocity") = M_PI / 6, py::arg("title") = "",
-      "One event from flat to `state`, every joint arriving together (fastest at `velocity` rad/s).");
+      py::arg("pattern"), py::arg("state"), py::arg("speed") = M_PI / 6, py::arg("title") = "", py::arg("velocity") = py::none(),
+      "One event from flat to `state`, every joint at `speed` rad/s (`velocity`: its deprecated name).");
   m.def(
-      "path_sequence", [](const geometry::CreasePattern& p, const py::object& waypoints, double max_velocity, const std::string& title) {
-        require_positive(max_velocity, "max_velocity");
-        return geometry::path_sequence(p, states_from_array(p, waypoints, "waypoints"), max_velocity, title);
+      "path_sequence",
+      [](const geometry::CreasePattern& p, const py::object& waypoints, double max_speed, const std::string& title,
+         const py::object& max_velocity) {
+        max_speed = renamed(max_speed, max_velocity, "max_velocity", "max_speed");
+        require_positive(max_speed, "max_speed");
+        return geometry::path_sequence(p, states_from_array(p, waypoints, "waypoints"), max_speed, title);
       },
-      py::arg("pattern"), py::arg("waypoints"), py::arg("max_velocity") = 1.0, py::arg("title") = "",
-      "One event per waypoint (rows of a (waypoints, joints) array, the first being where the sequence starts).");
+      py::arg("pattern"), py::arg("waypoints"), py::arg("max_speed") = 1.0, py::arg("title") = "", py::arg("max_velocity") = py::none(),
+      "One event per waypoint (rows of a (waypoints, joints) array, the first being where the sequence starts), the "
+      "fastest joint of each at `max_speed` rad/s (`max_velocity`: its deprecated name).");
 }
 
 void bind_pattern_files(py::module_& m) {

@@ -29,8 +29,7 @@ void bind_result(py::module_& m) {
       .def_property_readonly(
           "time",
           [](const PlanResult& r) {
-            if (PyErr_WarnEx(PyExc_DeprecationWarning, "PlanResult.time is deprecated: use seconds", 1) != 0)
-              throw py::error_already_set();
+            deprecated("PlanResult.time is deprecated: use seconds");
             return r.seconds;
           },
           "Deprecated name of `seconds`.")
@@ -61,12 +60,7 @@ void bind_plan(py::module_& m) {
          const std::string& planner, double time, unsigned seed, bool collisions, bool use_assignment, bool simplify,
          double search_margin, double waypoint_step, double speed, bool replay, const std::map<std::string, std::string>& params,
          bool fallback, const py::object& velocity) {
-        if (!velocity.is_none()) {
-          // The old name of `speed` (issue 37: `velocity` is the desired velocity of fold()).
-          if (PyErr_WarnEx(PyExc_DeprecationWarning, "plan(velocity=...) is deprecated: use speed=", 1) != 0)
-            throw py::error_already_set();
-          speed = velocity.cast<double>();
-        }
+        speed = renamed(speed, velocity, "velocity", "speed");  // `velocity` is fold()'s desired velocity
         require_positive(time, "time");
         require_positive(waypoint_step, "waypoint_step");
         require_positive(speed, "speed");

@@ -51,6 +51,13 @@ void require(bool ok, const char* name, const char* what, double value);
 /// require() that `x` is positive and finite.
 void require_positive(double x, const char* name);
 
+/// Issues a DeprecationWarning saying `what` (an error when warnings are errors).
+void deprecated(const std::string& what);
+
+/// A keyword renamed by issue 37 (one word, one meaning): `value`, the new keyword's, unless the
+/// caller gave the old one (`old` not None): then that, with a DeprecationWarning.
+double renamed(double value, const py::object& old, const char* old_name, const char* new_name);
+
 /// The file a FoldSequence object was read from (its `source`), or "<sequence>".
 std::string source_of(const py::object& sequence);
 

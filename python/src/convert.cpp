@@ -88,6 +88,16 @@ void require(bool ok, const char* name, const char* what, double value) {
 
 void require_positive(double x, const char* name) { require(std::isfinite(x) && x > 0.0, name, "positive and finite", x); }
 
+void deprecated(const std::string& what) {
+  if (PyErr_WarnEx(PyExc_DeprecationWarning, what.c_str(), 2) != 0) throw py::error_already_set();
+}
+
+double renamed(double value, const py::object& old, const char* old_name, const char* new_name) {
+  if (old.is_none()) return value;
+  deprecated(std::string(old_name) + "= is deprecated: use " + new_name + "=");
+  return old.cast<double>();
+}
+
 std::string source_of(const py::object& sequence) {
   return py::hasattr(sequence, "source") ? py::str(sequence.attr("source")).cast<std::string>() : std::string("<sequence>");
 }

@@ -13,7 +13,7 @@ EventMotion::EventMotion(const geometry::CreasePattern& pattern, const geometry:
     if (!j) throw std::invalid_argument("event " + std::to_string(event.number) + ": no joint " + std::to_string(fold.joint_id));
     const auto& joint = pattern.joints()[*j];
     const Eigen::Index index = *j;
-    Drive d{index, start.angles[index], fold.angle, fold.velocity, joint.spring, joint.damping};
+    Drive d{index, start.angles[index], fold.angle, fold.speed, joint.spring, joint.damping};
     if (d.start == d.target) continue;
     if (model_ == Actuation::Spring) {
       if (!(d.spring > 0.0)) {

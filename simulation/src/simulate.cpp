@@ -132,8 +132,8 @@ class Replay {
  private:
   void guard_length(const geometry::FoldEvent& event, const detail::EventMotion& motion) const {
     for (const auto& fold : event.folds)
-      if (options_.model != Actuation::Spring && (!(fold.velocity > 0.0) || !std::isfinite(fold.velocity)))
-        throw SequenceError(fold.line, "joint " + std::to_string(fold.joint_id) + ": velocity must be positive and finite");
+      if (options_.model != Actuation::Spring && (!(fold.speed > 0.0) || !std::isfinite(fold.speed)))
+        throw SequenceError(fold.line, "joint " + std::to_string(fold.joint_id) + ": speed (<Velocity>) must be positive and finite");
     const double steps = motion.planned_duration() / options_.time_step;
     if (steps > static_cast<double>(options_.max_steps)) {
       const int line = event.folds.empty() ? 0 : event.folds.front().line;

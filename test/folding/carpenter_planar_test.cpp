@@ -366,7 +366,7 @@ TEST(CarpenterPlanar, OutputsCarryEveryFrame) {
   EXPECT_EQ(seq.events[0].folds[0].joint_id, 1);
   EXPECT_NEAR(seq.events[0].folds[0].angle, M_PI / 2, 1e-12);  // left turn of 90°
   EXPECT_NEAR(seq.events[1].folds[0].angle, M_PI / 3, 1e-9);
-  EXPECT_GT(seq.events[1].folds[0].velocity, 0.0);
+  EXPECT_GT(seq.events[1].folds[0].speed, 0.0);
 }
 
 }  // namespace

@@ -40,7 +40,7 @@ void expect_same(const geometry::FoldSequence& a, const geometry::FoldSequence& 
       const auto &x = a.events[e].folds[f], &y = b.events[e].folds[f];
       EXPECT_EQ(x.joint_id, y.joint_id);
       EXPECT_EQ(x.angle, y.angle);
-      EXPECT_EQ(x.velocity, y.velocity);
+      EXPECT_EQ(x.speed, y.speed);
       EXPECT_EQ(x.line, y.line) << "fold " << f << " of event " << e;
     }
   }

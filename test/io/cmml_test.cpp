@@ -63,7 +63,7 @@ TEST(Cmml, GroupsFoldsByEventNumber) {
   EXPECT_EQ(seq.events[0].folds[1].joint_id, 2);
   EXPECT_DOUBLE_EQ(seq.events[0].folds[0].angle, M_PI / 2);
   EXPECT_DOUBLE_EQ(seq.events[0].folds[1].angle, -M_PI / 2);
-  EXPECT_DOUBLE_EQ(seq.events[0].folds[0].velocity, M_PI / 6);
+  EXPECT_DOUBLE_EQ(seq.events[0].folds[0].speed, M_PI / 6);
   EXPECT_EQ(seq.events[1].number, 2);
   EXPECT_EQ(seq.events[1].folds[0].line, 3);
 }
@@ -132,7 +132,7 @@ TEST(CmmlErrors, SubnormalVelocityIsTooSmall) {
   expect_error(with("<Velocity>10</Velocity>", "<Velocity>1e-322</Velocity>"), 7, "(too small)");
   // The smallest that survives is accepted.
   const auto seq = io::parse_cmml(with("<Velocity>10</Velocity>", "<Velocity>1e-320</Velocity>"), "s.cmml");
-  EXPECT_GT(seq.events[1].folds[0].velocity, 0.0);
+  EXPECT_GT(seq.events[1].folds[0].speed, 0.0);
 }
 
 TEST(CmmlErrors, NotUtf8) {
@@ -161,13 +161,13 @@ TEST(Cmml, WriterRejectsWhatCannotBeReadBack) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   const geometry::FoldSequence good = io::parse_cmml(kSequence, "s.cmml");
-  auto expect_throw = [&](double angle, double velocity, const std::string& fragment) {
+  auto expect_throw = [&](double angle, double speed, const std::string& fragment) {
     geometry::FoldSequence seq = good;
     seq.events[1].folds[0].angle = angle;
-    seq.events[1].folds[0].velocity = velocity;
+    seq.events[1].folds[0].speed = speed;
     try {
       io::write_cmml(seq);
-      FAIL() << "wrote angle " << angle << " velocity " << velocity;
+      FAIL() << "wrote angle " << angle << " speed " << speed;
     } catch (const std::invalid_argument& e) {
       EXPECT_NE(std::string(e.what()).find("joint 3"), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
@@ -176,16 +176,16 @@ TEST(Cmml, WriterRejectsWhatCannotBeReadBack) {
   expect_throw(nan, 1.0, "fold angle: not a finite number");
   expect_throw(inf, 1.0, "fold angle: not a finite number");
   expect_throw(-inf, 1.0, "fold angle: not a finite number");
-  expect_throw(0.5, nan, "velocity: not a finite number");
-  expect_throw(0.5, inf, "velocity: not a finite number");
+  expect_throw(0.5, nan, "speed: not a finite number");
+  expect_throw(0.5, inf, "speed: not a finite number");
   expect_throw(0.5, 1e308, "not a finite number");  // 5.7e309 degrees/s
-  expect_throw(0.5, 0.0, "velocity must be positive");
-  expect_throw(0.5, -1.0, "velocity must be positive");
-  // The smallest positive velocity is written and reads back positive.
+  expect_throw(0.5, 0.0, "speed must be positive");
+  expect_throw(0.5, -1.0, "speed must be positive");
+  // The smallest positive speed is written and reads back positive.
   geometry::FoldSequence seq = good;
-  seq.events[1].folds[0].velocity = 5e-324;
+  seq.events[1].folds[0].speed = 5e-324;
   const auto back = io::parse_cmml(io::write_cmml(seq), "t.cmml");
-  EXPECT_GT(back.events[1].folds[0].velocity, 0.0);
+  EXPECT_GT(back.events[1].folds[0].speed, 0.0);
 }
 
 TEST(Cmml, TitleRoundTripsAndForbiddenCharactersAreReplaced) {

@@ -133,7 +133,7 @@ def test_plan_is_seeded_and_starts_anywhere():
     with pytest.warns(DeprecationWarning, match="speed"):
         old = foldkit.plan(p, goal, seed=7, time=5, velocity=0.5)
     assert np.array_equal(old.waypoints, a.waypoints)
-    assert old.sequence.events[-1].folds[0].velocity != a.sequence.events[-1].folds[0].velocity
+    assert old.sequence.events[-1].folds[0].speed != a.sequence.events[-1].folds[0].speed
     with pytest.warns(DeprecationWarning, match="seconds"):
         assert old.time == old.seconds
     # From a state part-way, reached from flat along the first plan's own closed waypoints.

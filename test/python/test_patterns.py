@@ -130,7 +130,7 @@ def test_fold_frames_round_trip(tmp_path):
 def test_cmml_round_trip(tmp_path):
     p = foldkit.generators.miura(3, 3)
     state = foldkit.fold(p, fraction=0.4, collisions=False, replay=False).states[-1]
-    seq = foldkit.sequence_to(p, state, velocity=0.5, title="to 0.4")
+    seq = foldkit.sequence_to(p, state, speed=0.5, title="to 0.4")
     path = tmp_path / "s.cmml"
     foldkit.write_cmml(str(path), seq)
     back = foldkit.read_cmml(str(path))
@@ -151,7 +151,7 @@ def test_sequences_built_in_python():
     with pytest.raises(ValueError):
         foldkit.FoldSequence([foldkit.FoldEvent(2, []), foldkit.FoldEvent(1, [])])
     with pytest.raises(ValueError):
-        foldkit.FoldCommand(a, 0.5, velocity=0.0)
+        foldkit.FoldCommand(a, 0.5, speed=0.0)
     bad = foldkit.FoldSequence([foldkit.FoldEvent(1, [foldkit.FoldCommand(99, 0.5)])])
     assert len(bad.check(p)) == 1 and "99" in bad.check(p)[0]
 
@@ -159,8 +159,28 @@ def test_sequences_built_in_python():
 def test_path_sequence_passes_every_waypoint():
     p = foldkit.generators.miura(2, 3)
     states = foldkit.fold(p, fraction=0.3, collisions=False, replay=False).states[::10]
-    seq = foldkit.path_sequence(p, states, max_velocity=0.7)
+    seq = foldkit.path_sequence(p, states, max_speed=0.7)
     np.testing.assert_allclose(seq.event_states(p)[1:], states[1:], atol=1e-12)
+
+
+def test_speed_keywords_renamed_by_issue_37_still_work_with_a_warning():
+    """speed (the CMML's <Velocity>, rad/s) replaced velocity; the old names work for one release."""
+    p = foldkit.generators.miura(2, 3)
+    states = foldkit.fold(p, fraction=0.3, collisions=False, replay=False).states[::10]
+    new = foldkit.path_sequence(p, states, max_speed=0.7)
+    with pytest.warns(DeprecationWarning, match="max_speed"):
+        old = foldkit.path_sequence(p, states, max_velocity=0.7)
+    assert [f.speed for e in old.events for f in e.folds] == [f.speed for e in new.events for f in e.folds]
+    with pytest.warns(DeprecationWarning, match="speed"):
+        assert foldkit.sequence_to(p, states[-1], velocity=0.25).events[0].folds[0].speed == 0.25
+    with pytest.warns(DeprecationWarning, match="speed"):
+        command = foldkit.FoldCommand(1, 0.5, velocity=2.0)
+    assert command.speed == 2.0 and "speed=2.0" in repr(command)
+    with pytest.warns(DeprecationWarning, match="speed"):
+        assert command.velocity == 2.0
+    result = foldkit.fold(p, fraction=0.3, collisions=False, replay=False)
+    with pytest.warns(DeprecationWarning, match="seconds"):
+        assert result.time == result.seconds > 0
 
 
 def test_svg_is_written(tmp_path):

@@ -31,7 +31,7 @@ def test_valid_fold_matches_cli(cli, tmp_path):
 def test_collision_matches_cli(cli, tmp_path):
     # Three panels, both creases folded 170° the same way: the outer panels cross over the middle.
     p = foldkit.generators.strip(3)
-    seq = foldkit.sequence_to(p, np.full(2, math.radians(170)), velocity=1.0)
+    seq = foldkit.sequence_to(p, np.full(2, math.radians(170)), speed=1.0)
     pmml, cmml = files(tmp_path, p, seq)
     rc, expected, err = cli("simulate", pmml, cmml)
     assert rc == 3, err
@@ -61,7 +61,7 @@ def test_frames_and_poses():
 
 def test_models():
     p = foldkit.generators.strip(2)
-    seq = foldkit.sequence_to(p, np.array([0.5]), velocity=0.5)
+    seq = foldkit.sequence_to(p, np.array([0.5]), speed=0.5)
     for model in ["motor", "spring", "sync"]:
         r = foldkit.simulate(p, seq, model=model)
         assert r.valid and r.model in {"motor", "spring", "sync", "synchronised"}

@@ -182,7 +182,7 @@ function selectionChanged(selection) {
     const fold = event && event.folds.find((f) => f.joint === joints[0].id);
     if (fold) {
       $('fold-angle').value = fold.angle;
-      $('fold-velocity').value = fold.velocity;
+      $('fold-speed').value = fold.speed;
     }
   }
   if (selection.actors && selection.actors.length && !$('load-actor').value) $('load-actor').value = selection.actors[selection.actors.length - 1];
@@ -204,11 +204,11 @@ function setSelectedFolds() {
   const ids = editor.selection.joints || [];
   if (!ids.length) return log('select one or more joints first (Select tool, click a crease)');
   const angle = Number($('fold-angle').value);
-  const velocity = Number($('fold-velocity').value);
+  const speed = Number($('fold-speed').value);
   if (!(angle >= -180 && angle <= 180)) return log('the fold angle must be in [-180, 180] degrees');
-  if (!(velocity > 0)) return log('the velocity must be positive (degrees per second)');
+  if (!(speed > 0)) return log('the speed must be positive (degrees per second)');
   app.currentEvent = Number($('event-number').value) || 0;
-  for (const joint of ids) setFold(app.sequence, app.currentEvent, { joint, angle, velocity });
+  for (const joint of ids) setFold(app.sequence, app.currentEvent, { joint, angle, speed });
   sequenceEdited();
   showSequence();
   previewEnd();
@@ -305,7 +305,7 @@ async function simulateNow() {
   const r = sim.result;
   setNumber('closure-max', r.max_closure_error);
   setNumber('n-collisions', r.collision_count);
-  $('verdict').textContent = r.ok ? 'valid' : `invalid: ${r.status}`;
+  $('verdict').textContent = r.status === 'success' ? 'valid' : `invalid: ${r.status}`;
   log(sim.log);
   timeline.setTrajectory(sim.frames.length, r.duration, r.collisions, sim.times);
   // Framed on the first state (the flat sheet, as a rule the widest), so no frame leaves the view.

@@ -3,7 +3,7 @@
 // reader here only needs to read back what foldkit and the page wrote.
 
 /** A sequence: events in increasing number, each a list of folds {joint, angle (degrees,
- * positive = mountain), velocity (degrees per second)}. A joint an event does not name keeps
+ * positive = mountain), speed (degrees per second: the file's <Velocity>)}. A joint an event does not name keeps
  * its angle, as CMML defines. */
 export function emptySequence() {
   return { title: '', events: [] };
@@ -20,7 +20,7 @@ export function writeCMML(sequence) {
   for (const event of sequence.events) {
     for (const fold of event.folds) {
       lines.push('  <Fold>', `    <EventNumber>${event.number}</EventNumber>`, `    <ID>${fold.joint}</ID>`,
-        `    <FoldAngle>${String(fold.angle)}</FoldAngle>`, `    <Velocity>${String(fold.velocity)}</Velocity>`, '  </Fold>');
+        `    <FoldAngle>${String(fold.angle)}</FoldAngle>`, `    <Velocity>${String(fold.speed)}</Velocity>`, '  </Fold>');
     }
   }
   lines.push('</CMML>', '');
@@ -46,8 +46,8 @@ export function readCMML(text) {
   for (const match of body.matchAll(/<Fold>([\s\S]*?)<\/Fold>/g)) {
     const number = Number(field(match[1], 'EventNumber'));
     const fold = { joint: Number(field(match[1], 'ID')), angle: Number(field(match[1], 'FoldAngle')),
-      velocity: Number(field(match[1], 'Velocity')) };
-    if (![number, fold.joint, fold.angle, fold.velocity].every(Number.isFinite)) throw new Error('a <Fold> holds a value that is not a number');
+      speed: Number(field(match[1], 'Velocity')) };
+    if (![number, fold.joint, fold.angle, fold.speed].every(Number.isFinite)) throw new Error('a <Fold> holds a value that is not a number');
     if (!byNumber.has(number)) byNumber.set(number, []);
     byNumber.get(number).push(fold);
   }

@@ -58,7 +58,7 @@ export async function checkPattern(model, files) {
 export async function stateDof(files, jointIds, degrees) {
   // Within rounding of ±180° a trajectory's angle may lie just outside CMML's [-180, 180].
   const angle = (d) => Math.max(-180, Math.min(180, d));
-  const sequence = { title: 'state', events: [{ number: 0, folds: jointIds.map((joint, k) => ({ joint, angle: angle(degrees[k]), velocity: 1 })) }] };
+  const sequence = { title: 'state', events: [{ number: 0, folds: jointIds.map((joint, k) => ({ joint, angle: angle(degrees[k]), speed: 1 })) }] };
   await api.writeFile(files.state, writeCMML(sequence));
   return (await api.verb('dof', { pattern: files.pattern, state: files.state })).result;
 }

@@ -35,7 +35,7 @@ export class Timeline {
       const block = document.createElement('button');
       block.className = 'event' + (event.number === current ? ' current' : '');
       block.textContent = `${event.number}: ${event.folds.length} fold${event.folds.length === 1 ? '' : 's'}`;
-      block.title = event.folds.map((f) => `joint ${f.joint} → ${f.angle}° at ${f.velocity}°/s`).join('\n');
+      block.title = event.folds.map((f) => `joint ${f.joint} → ${f.angle}° at ${f.speed}°/s`).join('\n');
       block.dataset.number = event.number;
       block.addEventListener('click', () => this.onEvent(event.number));
       this.events.append(block);

@@ -186,7 +186,7 @@ test('a pattern drawn with the mouse, grouped, folded and simulated matches the 
   });
   assert.deepEqual(crease.ends, [[2, 0], [2, 1]], 'the click picked the triangle\'s crease');
   await page.$eval('#fold-angle', (e) => { e.value = '-60'; });
-  await page.$eval('#fold-velocity', (e) => { e.value = '30'; });
+  await page.$eval('#fold-speed', (e) => { e.value = '30'; });
   await page.$eval('#event-number', (e) => { e.value = '1'; });
   await page.click('#set-fold');
   // Deleting the triangle takes its crease, undo brings both back, and the fold with them.

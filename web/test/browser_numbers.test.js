@@ -20,7 +20,7 @@ async function cliAtFrame(page, k) {
     radians: Array.from(window.foldkit.simulation.frames[frame]),
   }), k);
   const path = join(root, `frame-${k}.cmml`);
-  writeFileSync(path, writeCMML({ title: 'frame', events: [{ number: 1, folds: ids.map((joint, i) => ({ joint, angle: (radians[i] * 180) / Math.PI, velocity: 1 })) }] }));
+  writeFileSync(path, writeCMML({ title: 'frame', events: [{ number: 1, folds: ids.map((joint, i) => ({ joint, angle: (radians[i] * 180) / Math.PI, speed: 1 })) }] }));
   return foldkit(['dof', join(root, 'miura.pmml'), '--state', path, '--json']).json;
 }
 
@@ -47,7 +47,7 @@ test('a sequence that jumps from flat to a fold: the numbers follow the frame on
     rmSync(join(root, 'folded.cmml'));
     const end = new Map();
     for (const e of folded.events) for (const f of e.folds) end.set(f.joint, f.angle);
-    writeFileSync(join(root, 'jump.cmml'), writeCMML({ title: 'jump', events: [{ number: 1, folds: [...end].map(([joint, angle]) => ({ joint, angle, velocity: 30 })) }] }));
+    writeFileSync(join(root, 'jump.cmml'), writeCMML({ title: 'jump', events: [{ number: 1, folds: [...end].map(([joint, angle]) => ({ joint, angle, speed: 30 })) }] }));
   });
   const sim = foldkit(['simulate', join(root, 'miura.pmml'), join(root, 'jump.cmml'), '--json'], { expect: [3] }).json;
   const flat = foldkit(['dof', join(root, 'miura.pmml'), '--json']).json;

@@ -18,19 +18,19 @@ const run = (args) => {
 
 test('setFold keeps one fold per joint and event, events in order', () => {
   const s = { title: 't', events: [] };
-  setFold(s, 2, { joint: 1, angle: 30, velocity: 10 });
-  setFold(s, 1, { joint: 1, angle: 10, velocity: 10 });
-  setFold(s, 2, { joint: 1, angle: -45, velocity: 5 });
-  setFold(s, 2, { joint: 3, angle: 90, velocity: 5 });
+  setFold(s, 2, { joint: 1, angle: 30, speed: 10 });
+  setFold(s, 1, { joint: 1, angle: 10, speed: 10 });
+  setFold(s, 2, { joint: 1, angle: -45, speed: 5 });
+  setFold(s, 2, { joint: 3, angle: 90, speed: 5 });
   assert.deepEqual(s.events.map((e) => e.number), [1, 2]);
-  assert.deepEqual(s.events[1].folds, [{ joint: 1, angle: -45, velocity: 5 }, { joint: 3, angle: 90, velocity: 5 }]);
+  assert.deepEqual(s.events[1].folds, [{ joint: 1, angle: -45, speed: 5 }, { joint: 3, angle: 90, speed: 5 }]);
   // Unchanged angles carry through: joint 3 keeps 0 after event 1, joint 1 keeps -45.
   assert.deepEqual(anglesAfterEvents(s, [1, 3]), [[10, 0], [-45, 90]]);
 });
 
 test('writeCMML and readCMML round-trip exactly, numbers included', () => {
-  const s = { title: 'a & <b>', events: [{ number: 0, folds: [{ joint: 7, angle: 0.1 + 0.2, velocity: 1e-3 }] },
-    { number: 5, folds: [{ joint: 2, angle: -180, velocity: 90 }, { joint: 3, angle: 179.99999999999997, velocity: 30 }] }] };
+  const s = { title: 'a & <b>', events: [{ number: 0, folds: [{ joint: 7, angle: 0.1 + 0.2, speed: 1e-3 }] },
+    { number: 5, folds: [{ joint: 2, angle: -180, speed: 90 }, { joint: 3, angle: 179.99999999999997, speed: 30 }] }] };
   assert.deepEqual(readCMML(writeCMML(s)), s);
   assert.throws(() => readCMML('<PMML/>'), /not a CMML/);
   assert.throws(() => readCMML('<CMML><Fold><EventNumber>1</EventNumber><ID>x</ID><FoldAngle>1</FoldAngle><Velocity>1</Velocity></Fold></CMML>'), /not a number/);
@@ -39,8 +39,8 @@ test('writeCMML and readCMML round-trip exactly, numbers included', () => {
 test('foldkit reads the CMML the page writes as the same sequence', { skip: !cli && 'FOLDKIT_CLI is not set' }, () => {
   const dir = mkdtempSync(join(tmpdir(), 'foldkit-cmml-'));
   run(['generate', 'miura', '--rows', '2', '--cols', '2', '-o', join(dir, 'm.pmml')]);
-  const s = { title: 'page', events: [{ number: 1, folds: [{ joint: 1, angle: -30.5, velocity: 45 }, { joint: 2, angle: 12.25, velocity: 45 }] },
-    { number: 2, folds: [{ joint: 1, angle: -40, velocity: 20 }] }] };
+  const s = { title: 'page', events: [{ number: 1, folds: [{ joint: 1, angle: -30.5, speed: 45 }, { joint: 2, angle: 12.25, speed: 45 }] },
+    { number: 2, folds: [{ joint: 1, angle: -40, speed: 20 }] }] };
   writeFileSync(join(dir, 's.cmml'), writeCMML(s));
   run(['validate', join(dir, 's.cmml'), '--pattern', join(dir, 'm.pmml')]);
   run(['convert', join(dir, 's.cmml'), join(dir, 'again.cmml'), '--pattern', join(dir, 'm.pmml')]);

@@ -25,7 +25,7 @@ class ConstrainedPlanSpace : public PlanSpace {
 
   // The constraint's codimension: at a singular start (flat) the Jacobian loses rank, charts
   // cannot be anchored and projections may flip branches, so the plan starts from a nearby
-  // regular state instead. With PlanRequest::search_margin the ambient box the sampler draws
+  // regular state instead. With PlanOptions::search_margin the ambient box the sampler draws
   // from is that of start and goal, widened.
   Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanOptions& options, const statespaces::AngleBounds& bounds) override {
     const FoldState& start = setup.start;

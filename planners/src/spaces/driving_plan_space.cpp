@@ -54,7 +54,7 @@ class DrivingPlanSpace : public PlanSpace {
   const char* name() const override { return "driving"; }
 
   // The larger of the ranks at start and goal: a start below it (flat) is left first.
-  Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanOptions& options, const statespaces::AngleBounds&) override {
+  Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanOptions&, const statespaces::AngleBounds&) override {
     goal_rank_ = geometry::mobility(*setup.system, setup.goal).rank;
     const Eigen::Index start_rank = geometry::mobility(*setup.system, setup.start).rank;
     rank_ = std::max(goal_rank_, start_rank);

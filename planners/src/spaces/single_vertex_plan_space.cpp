@@ -23,7 +23,7 @@ class SingleVertexPlanSpace : public PlanSpace {
 
   // The closed form cannot hold some singular states (a flat vertex whose passive axes line up):
   // such a start is left along a short closed segment to full rank (3) first.
-  Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanOptions& options, const statespaces::AngleBounds& bounds) override {
+  Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanOptions&, const statespaces::AngleBounds& bounds) override {
     auto chain = std::make_shared<statespaces::SingleVertexChain>(*setup.pattern);
     space_ = std::make_shared<statespaces::SingleVertexStateSpace>(chain, bounds);
     ob::ScopedState<> probe(space_);

@@ -18,7 +18,7 @@
 namespace foldkit::folding {
 
 /// Options of flatten_single_vertex(). step, frame_step, the flat and straight tolerances and
-/// velocity must be positive, max_steps at least 1.
+/// speed must be positive, max_steps at least 1.
 struct CarpenterSphericalOptions {
   /// Largest move of any crease direction in one step (radians of arc, before restoring).
   double step = 0.02;
@@ -38,7 +38,7 @@ struct CarpenterSphericalOptions {
   /// this counts as no strictly expansive motion.
   double min_rate = 1e-12;
   /// Speed of the fastest crease in the folding CMML (radians per second).
-  double velocity = 0.5;
+  double speed = 0.5;
   /// Asked before every step (may be empty): when it answers true the method stops with
   /// StatusCode::LimitReached and the frames so far. A caller with a time limit (a planner's
   /// termination condition) passes it here, so that the whole search keeps to the limit.
@@ -62,7 +62,7 @@ struct CarpenterSphericalResult {
   double min_rate = 0.0;                    ///< smallest LP optimum t over the steps (docs/CARPENTER.md); 0 when none
   double max_closure_error = 0.0;           ///< largest closure residual of the input and the states reached (radians)
   std::vector<int> joints;                  ///< the vertex's joints (indices), counter-clockwise
-  /// CMML: the frames reversed, flat → folded (geometry::path_sequence at `velocity`).
+  /// CMML: the frames reversed, flat → folded (geometry::path_sequence at `speed`).
   geometry::FoldSequence folding;
 };
 
@@ -72,7 +72,7 @@ struct CarpenterSphericalResult {
 ///                 straight through it, every sector below π
 /// @param folded   the start: one angle per joint (radians, each within ±π), closed to
 ///                 options.closure_tolerance, its sectors not crossing
-/// @param options  step sizes, tolerances, limits and the CMML velocity
+/// @param options  step sizes, tolerances, limits and the CMML speed
 /// @throws std::invalid_argument when an option is out of range, the pattern is not as above,
 ///         or `folded` has the wrong size, does not close, folds a crease past 180 degrees or
 ///         crosses itself

@@ -16,11 +16,11 @@ namespace foldkit::folding {
 /// of it.
 /// @param sheet     cube_sheet(cubes), with its actor and joint IDs (docs/GENERATORS.md)
 /// @param cubes     number of cubes (≥ 1)
-/// @param velocity  speed of the hinges within a net, radians per second (the hinge to the next
+/// @param speed     speed of the hinges within a net, radians per second (the hinge to the next
 ///                  net turns at twice this)
 /// @return the sequence, 3 events per cube, titled after the sheet
 /// @throws std::invalid_argument when `sheet` is not cube_sheet(cubes) (its actor and joint
-///         counts, or a missing hinge), or cubes < 1, or velocity is not positive and finite
-geometry::FoldSequence fold_cube_chain(const geometry::CreasePattern& sheet, int cubes, double velocity = 1.0);
+///         counts, or a missing hinge), or cubes < 1, or speed is not positive and finite
+geometry::FoldSequence fold_cube_chain(const geometry::CreasePattern& sheet, int cubes, double speed = 1.0);
 
 }  // namespace foldkit::folding

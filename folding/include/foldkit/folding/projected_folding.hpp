@@ -77,7 +77,7 @@ struct ProjectedFoldingOptions {
   /// Replay the CMML in the simulator (default simulation options, collisions as above) when the
   /// path has more than the flat state.
   bool replay = true;
-  double cmml_velocity = 1.0;        ///< fastest joint's speed in the CMML, rad/s, positive and finite
+  double speed = 1.0;                ///< the fastest joint's speed in each CMML event, rad/s, positive and finite
   /// Called at every accepted state (steps so far, unit "steps", its loop error), then by the
   /// replay (simulation::SimulationOptions::progress).
   geometry::ProgressFn progress;
@@ -119,8 +119,8 @@ struct ProjectedFoldingResult {
   /// The last decision's method: "dense-svd", "inverse-subspace" or "none" (empty when no
   /// decision was made).
   std::string rank_method;
-  double time = 0.0;                 ///< seconds of wall-clock time, folding only (no replay)
-  geometry::FoldSequence sequence;   ///< CMML: flat → states (geometry::path_sequence, at cmml_velocity)
+  double seconds = 0.0;              ///< wall-clock seconds of the folding (not the replay)
+  geometry::FoldSequence sequence;   ///< CMML: flat → states (geometry::path_sequence, at `speed`)
   /// The simulator's report on `sequence`; empty when not replayed (replay off, or no step).
   std::optional<simulation::SimulationReport> replay;
 };

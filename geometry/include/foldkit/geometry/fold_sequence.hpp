@@ -10,12 +10,12 @@
 
 namespace foldkit::geometry {
 
-/// A CMML fold (Table 2): drive joint `joint_id` to `angle` at `velocity`. CMML files hold
-/// degrees; here both are radians.
+/// A CMML fold (Table 2): drive joint `joint_id` to `angle` at `speed` (the file's
+/// `<Velocity>`). CMML files hold degrees; here both are radians.
 struct FoldCommand {
   int joint_id = 0;       ///< the joint's ID (not its index)
   double angle = 0.0;     ///< target fold angle, radians
-  double velocity = 0.0;  ///< speed towards it, radians per second (> 0)
+  double speed = 0.0;     ///< how fast it turns towards it, radians per second (> 0); the CMML's Velocity
   int line = 0;           ///< source line; 0 when not read from a file
 };
 
@@ -49,27 +49,27 @@ std::vector<FoldState> event_states(const CreasePattern& pattern, const FoldSequ
 FoldState end_state(const CreasePattern& pattern, const FoldSequence& sequence);
 
 /// A one-event sequence (event 1) that takes the flat sheet to `state`, every fold at
-/// `velocity` (radians per second); joints at 0 are left out, so a flat state gives no event.
+/// `speed` (radians per second); joints at 0 are left out, so a flat state gives no event.
 /// @param pattern   the pattern `state` belongs to
 /// @param state     one angle per joint, radians
-/// @param velocity  speed of every fold, radians per second
+/// @param speed     speed of every fold, radians per second
 /// @param title     the sequence's title
-FoldSequence sequence_to(const CreasePattern& pattern, const FoldState& state, double velocity,
+FoldSequence sequence_to(const CreasePattern& pattern, const FoldState& state, double speed,
                          std::string title = {});
 
 /// One event per waypoint (flat → waypoints[0] → waypoints[1] → …, events numbered from 1),
 /// naming the joints that move; a waypoint equal to the one before adds no event. Within an
-/// event the fastest joint turns at `max_velocity` and every other one at the speed that makes
+/// event the fastest joint turns at `max_speed` and every other one at the speed that makes
 /// it arrive at the same moment (at least 1e-9 rad/s), so motor replay follows the straight line
 /// between waypoints in angle space: close waypoints on the closure manifold then keep loops
 /// closed.
 /// @param pattern       the pattern the waypoints belong to
 /// @param waypoints     states with one angle per joint, radians
-/// @param max_velocity  speed of the fastest joint in each event, radians per second
+/// @param max_speed     speed of the fastest joint in each event, radians per second
 /// @param title         the sequence's title
-/// @throws std::invalid_argument when `max_velocity` is not positive and finite, or a waypoint
+/// @throws std::invalid_argument when `max_speed` is not positive and finite, or a waypoint
 ///         does not hold one angle per joint
-FoldSequence path_sequence(const CreasePattern& pattern, const std::vector<FoldState>& waypoints, double max_velocity,
+FoldSequence path_sequence(const CreasePattern& pattern, const std::vector<FoldState>& waypoints, double max_speed,
                            std::string title = {});
 
 }  // namespace foldkit::geometry

@@ -25,7 +25,7 @@ geometry::FoldSequence read_cmml(const std::string& path);
 /// within rounding of ±180° are written as ±180, so every written angle reads back. Velocities
 /// are written in degrees per second. The title is written with escape rules that keep the file
 /// valid XML (characters XML forbids become U+FFFD).
-/// @throws std::invalid_argument for a non-finite angle or velocity, a velocity ≤ 0, or one
+/// @throws std::invalid_argument for a non-finite angle or speed, a speed ≤ 0, or one
 ///         whose degrees overflow or are too small to read back as positive
 std::string write_cmml(const geometry::FoldSequence& sequence);
 

@@ -24,13 +24,13 @@ namespace foldkit::simulation {
 /// How the joints of an event move (docs/SIMULATION.md). Joints an event does not name keep
 /// their angles.
 enum class Actuation {
-  Motor,         ///< each joint at its CMML velocity until it reaches its angle (the default)
+  Motor,         ///< each joint at its CMML speed until it reaches its angle (the default)
   /// Torsion spring (PMML SpringConst, DampConst, unit inertia) pulling toward the angle; the CMML
-  /// velocity is not used. A joint with spring constant 0 cannot move: an event that must move
+  /// speed is not used. A joint with spring constant 0 cannot move: an event that must move
   /// it fails.
   Spring,
   /// All joints of an event arrive together, each moving linearly in time: the event lasts as
-  /// long as the joint that needs longest at its own velocity.
+  /// long as the joint that needs longest at its own speed.
   Synchronised,
 };
 /// The model's name: "motor", "spring" or "sync".
@@ -131,7 +131,7 @@ struct SimulationReport {
   geometry::FoldState final_state;          ///< the state after the last event
 };
 
-/// A fold the simulator cannot replay as given (motor and synchronised models: a velocity that is
+/// A fold the simulator cannot replay as given (motor and synchronised models: a speed that is
 /// not positive and finite, or an event that would take more than max_steps).
 struct SequenceError : std::invalid_argument {
   /// An error at CMML line `line_` (0 when unknown), with message `what`.
