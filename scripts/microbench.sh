@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs every Google Benchmark program (benchmarks/bench_*) with JSON output, then pairs each of
+# Runs every Google Benchmark program (microbench/bench_*) with JSON output, then pairs each of
 # our entries with its baseline and prints the ratios (scripts/bench_ratios.py).
 #
 #   bash scripts/microbench.sh [--long] [--build-dir DIR] [--out DIR] [--only NAME] [-- ARGS...]
@@ -60,7 +60,7 @@ quick_filter() {
 mkdir -p "$out"
 start=$(date +%s)
 for name in "${programs[@]}"; do
-  exe="$build/benchmarks/$name"
+  exe="$build/microbench/$name"
   [ -x "$exe" ] || { echo "microbench.sh: $exe was not built" >&2; exit 1; }
   args=(--benchmark_min_time="$min_time" --benchmark_format=json --benchmark_out_format=json
         --benchmark_out="$out/$name.json")

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Draws the error-versus-cost measurements of benchmarks/measure_error_cost as SVG.
+"""Draws the error-versus-cost measurements of microbench/measure_error_cost as SVG.
 
     plot_error_cost.py [CSV_DIR] [--out DIR]
 

@@ -1,7 +1,7 @@
 // The built-in scenes and suites of `foldkit bench`. Goals come from std::mt19937 seeded by the
 // scene and the seed (never from OMPL's generator, which seeds once per process), and a goal is
 // kept only when it is reachable: the straight way from the start to it (in the active angles of a
-// single vertex, as benchmarks/measure_planning.cpp does; projected onto the closure manifold
+// single vertex, as microbench/measure_planning.cpp does; projected onto the closure manifold
 // for the other patterns) is closed, within the bounds and free of crossing facets.
 #include <cmath>
 #include <optional>

@@ -1,5 +1,5 @@
 // The stiffness problem's equilibrium equations (analysis::EquilibriumSystem) for scripts that
-// solve or study them with tools of their own, e.g. SciPy (benchmarks/stiffness_scipy.py):
+// solve or study them with tools of their own, e.g. SciPy (microbench/stiffness_scipy.py):
 // residual, tangent, retraction, in the solver's scaled units.
 #include "bindings.hpp"
 #include "foldkit/analysis/load_case.hpp"

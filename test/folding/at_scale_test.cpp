@@ -262,13 +262,13 @@ TEST(AtScale, Waterbomb20CurlsIntoATubeWhoseEndsMeet) {
 // all 60 cubes in a line and replays valid with collisions on. Folding every crease at once along
 // the assignment instead bends the 180-tile row until tiles far apart along it meet, at a few
 // degrees: genuine, by the SAT oracle.
-// The star-shaped 400-gon of benchmarks/bench_carpenter.cpp's Convexify/400 (carpenter_inputs.hpp)
+// The star-shaped 400-gon of microbench/bench_carpenter.cpp's Convexify/400 (carpenter_inputs.hpp)
 // convexifies. It used to stall in one LP: Clp's warm-started primal simplex ran for over ten
 // minutes on a degenerate basis; past twice the LP's size in iterations it now gives way to a
 // fresh dual simplex (about a minute in all here).
 TEST(AtScale, StarPolygonOfFourHundredVerticesConvexifies) {
   const int n = 400;
-  const folding::Frame2 polygon = foldkit::benchmarks::random_star(n, 1);
+  const folding::Frame2 polygon = foldkit::microbench::random_star(n, 1);
   folding::CarpenterPlanarOptions options;
   options.frame_stride = 50;
   const auto r = folding::carpenter_planar({polygon, true}, options);
@@ -290,7 +290,7 @@ TEST(AtScale, StarPolygonOfFourHundredVerticesConvexifies) {
 // bar lengths kept, no distance between any two vertices shrinking between recorded frames
 // (check_motion recomputes both from the frames alone), straight at the end (about half a minute).
 TEST(AtScale, ThousandLinkChainStraightensExpansively) {
-  const folding::PlanarChain chain{foldkit::benchmarks::random_chain(1000, 1), false};
+  const folding::PlanarChain chain{foldkit::microbench::random_chain(1000, 1), false};
   folding::CarpenterPlanarOptions options;
   options.frame_stride = 50;
   const auto r = folding::carpenter_planar(chain, options);

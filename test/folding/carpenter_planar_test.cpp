@@ -158,18 +158,18 @@ TEST(CarpenterPlanar, TwoHundredLinkChainStraightens) {
   EXPECT_NEAR((r.frames.back().back() - r.frames.back().front()).norm(), length, 1e-9);
 }
 
-// Issue 20's input (benchmarks/carpenter_inputs.hpp): a pivot-algorithm walk on the square lattice,
+// Issue 20's input (microbench/carpenter_inputs.hpp): a pivot-algorithm walk on the square lattice,
 // jittered by 0.1. It is a simple chain (check_simple_chain, an independent O(n²) test) of bars
 // within 0.1·2√2 of unit length, the same for the same seed, and it straightens expansively.
 TEST(CarpenterPlanar, JitteredLatticeWalkIsSimpleAndStraightens) {
-  const Frame2 walk = foldkit::benchmarks::random_lattice_walk(2000, 3);
+  const Frame2 walk = foldkit::microbench::random_lattice_walk(2000, 3);
   ASSERT_EQ(walk.size(), 2001u);
   EXPECT_NO_THROW(check_simple_chain({walk, false}));
   for (std::size_t i = 0; i + 1 < walk.size(); ++i) EXPECT_NEAR((walk[i + 1] - walk[i]).norm(), 1.0, 0.2 * std::sqrt(2.0) + 1e-12);
-  EXPECT_EQ(walk, foldkit::benchmarks::random_lattice_walk(2000, 3));
+  EXPECT_EQ(walk, foldkit::microbench::random_lattice_walk(2000, 3));
   // Far from straight: a self-avoiding walk's end-to-end distance grows like n^(3/4), not n.
   EXPECT_LT((walk.back() - walk.front()).norm(), 0.5 * 2000);
-  const Frame2 small = foldkit::benchmarks::random_lattice_walk(150, 3);
+  const Frame2 small = foldkit::microbench::random_lattice_walk(150, 3);
   CarpenterPlanarOptions options;
   options.frame_stride = 4;
   const CarpenterPlanarResult r = carpenter_planar({small, false}, options);

@@ -66,13 +66,13 @@ struct ProjectedFoldingOptions {
   /// One factorisation per step: J factored at the predicted point gives one Newton step, the
   /// chord steps after it and the next step's tangent (refactored at every iterate only when the
   /// chord steps stall). false: refactor at every Newton iterate and for every tangent (the
-  /// method before, kept for comparison in benchmarks/bench_projected_folding.cpp). Both stop at
+  /// method before, kept for comparison in microbench/bench_projected_folding.cpp). Both stop at
   /// the same closure tolerance.
   bool chord_corrector = true;
   /// Predict each step to second order, x + h·v + ½h²·a, with a the change of the unit tangent
   /// over the step before (O(h³) off the manifold instead of O(h²): one Newton step usually
   /// corrects it). false: x + h·v (the predictor before, kept for comparison in
-  /// benchmarks/bench_projected_folding.cpp).
+  /// microbench/bench_projected_folding.cpp).
   bool second_order_predictor = true;
   /// Replay the CMML in the simulator (default simulation options, collisions as above) when the
   /// path has more than the flat state.

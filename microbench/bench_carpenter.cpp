@@ -33,18 +33,18 @@ void run(benchmark::State& state, const PlanarChain& input, bool all_struts) {
 }
 
 void run(benchmark::State& state, bool all_struts) {
-  run(state, {foldkit::benchmarks::random_chain(static_cast<int>(state.range(0)), 1), false}, all_struts);
+  run(state, {foldkit::microbench::random_chain(static_cast<int>(state.range(0)), 1), false}, all_struts);
 }
 
 void BM_Carpenter_Straighten(benchmark::State& state) { run(state, false); }
 
 // Issue 20's own input: self-avoiding lattice walks by the pivot algorithm, jittered by 0.1.
 void BM_Carpenter_StraightenLatticeWalk(benchmark::State& state) {
-  run(state, {foldkit::benchmarks::random_lattice_walk(static_cast<int>(state.range(0)), 1), false}, false);
+  run(state, {foldkit::microbench::random_lattice_walk(static_cast<int>(state.range(0)), 1), false}, false);
 }
 
 void BM_Carpenter_Convexify(benchmark::State& state) {
-  run(state, {foldkit::benchmarks::random_star(static_cast<int>(state.range(0)), 1), true}, false);
+  run(state, {foldkit::microbench::random_star(static_cast<int>(state.range(0)), 1), true}, false);
 }
 // Issue 20's polygon to convexify, 100–1,000 vertices (carpenter_inputs.hpp).
 BENCHMARK(BM_Carpenter_Convexify)->Arg(100)->Arg(200)->Arg(400)->Arg(1000)->Iterations(1)->Unit(benchmark::kSecond);

@@ -10,7 +10,7 @@ system; SciPy stops at its tolerances (1e-15) or max_nfev, and the table shows t
 residual each reached. Needs the built module on PYTHONPATH (build/python) and SciPy. At 300
 modules SciPy runs out its 2,000 evaluations (minutes), so larger beams are not in the default.
 
-    PYTHONPATH=build/python python3 benchmarks/stiffness_scipy.py [--modules 48 300] [--max-nfev 2000]
+    PYTHONPATH=build/python python3 microbench/stiffness_scipy.py [--modules 48 300] [--max-nfev 2000]
 """
 import argparse
 import time
@@ -28,7 +28,7 @@ def load_case(ids, fixed, tip, force):
 
 
 def beam(modules, rotation=0.1):
-    """The cube beam of benchmarks/stiffness_problems.hpp: the first cube clamped, a load across the
+    """The cube beam of microbench/stiffness_problems.hpp: the first cube clamped, a load across the
     beam on its last tile that turns some module by `rotation` (linear solution)."""
     cubes = max(2, modules // 6)
     sheet = foldkit.generators.cube_sheet(cubes, tile=0.01)

@@ -1,5 +1,5 @@
 #pragma once
-// Inputs of Carpenter's rule at the sizes issue 20 names, shared by benchmarks/bench_carpenter.cpp
+// Inputs of Carpenter's rule at the sizes issue 20 names, shared by microbench/bench_carpenter.cpp
 // and the AtScale tests, so that a test runs the very chain or polygon a benchmark measured.
 #include <algorithm>
 #include <array>
@@ -13,7 +13,7 @@
 
 #include "foldkit/folding/carpenter.hpp"
 
-namespace foldkit::benchmarks {
+namespace foldkit::microbench {
 
 // Distance between segments ab and cd (0 when they cross).
 inline double segment_gap(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c, const Eigen::Vector2d& d) {
@@ -132,4 +132,4 @@ inline folding::Frame2 random_lattice_walk(int links, unsigned seed, double jitt
   return p;
 }
 
-}  // namespace foldkit::benchmarks
+}  // namespace foldkit::microbench
