@@ -7,6 +7,7 @@ import { PatternModel, History } from './model.js';
 import { TOOLS, HINTS, EditorTools } from './editor_tools.js';
 import { EditorSelection } from './editor_selection.js';
 import { EditorDraw } from './editor_draw.js';
+import { copyTriangles, deleteTriangles, group, paste, transformVertices, ungroup } from './model_edits.js';
 
 export { TOOLS } from './editor_tools.js';
 
@@ -246,7 +247,7 @@ export class Editor2D {
   groupSelection() {
     const tris = this._selectedTriangles();
     if (!tris.length) return this.onStatus('Group: select triangles first');
-    const id = this._model.group(tris);
+    const id = group(this._model, tris);
     this._edited();
     this.onStatus(`Grouped ${tris.length} triangle${tris.length === 1 ? '' : 's'} into actor ${id}`);
   }
@@ -256,7 +257,7 @@ export class Editor2D {
     const actors = this.selection.actors;
     if (!actors.length) return this.onStatus('Ungroup: select triangles of an actor first');
     let n = 0;
-    for (const a of actors) n += this._model.ungroup(a).length;
+    for (const a of actors) n += ungroup(this._model, a).length;
     this._edited();
     this.onStatus(`Ungrouped ${actors.length} actor${actors.length === 1 ? '' : 's'} into ${n}`);
   }
@@ -265,7 +266,7 @@ export class Editor2D {
   copySelection() {
     const tris = this._selectedTriangles();
     if (!tris.length) return this.onStatus('Copy: select triangles first');
-    this._clipboard = this._model.copyTriangles(tris);
+    this._clipboard = copyTriangles(this._model, tris);
     this.onStatus(`Copied ${tris.length} triangle${tris.length === 1 ? '' : 's'}`);
   }
 
@@ -281,7 +282,7 @@ export class Editor2D {
       // Land on the snap grid when the copy's corners were on it.
       if (this._snap.grid > 0) dx = Math.ceil(dx / this._snap.grid) * this._snap.grid;
     }
-    const tris = this._model.paste(clip, dx, dy);
+    const tris = paste(this._model, clip, dx, dy);
     this._setSelection({ triangles: tris });
     this._edited();
     this.onStatus(`Pasted ${tris.length} triangle${tris.length === 1 ? '' : 's'}`);
@@ -295,7 +296,7 @@ export class Editor2D {
         if (t.v.some((i) => this._sel.vertices.has(i))) tris.add(k);
       });
     if (!tris.size) return this.onStatus('Delete: select triangles or vertices first');
-    this._model.deleteTriangles([...tris]);
+    deleteTriangles(this._model, [...tris]);
     this._setSelection({});
     this._edited();
     this.onStatus(`Deleted ${tris.size} triangle${tris.size === 1 ? '' : 's'}`);
@@ -318,7 +319,7 @@ export class Editor2D {
     const verts = this._selectedVertices();
     if (!verts.length) return this.onStatus('Transform: select something first');
     const about = this._centreOf(verts);
-    this._applyVertexEdit(verts, () => this._model.transformVertices(verts, { rotate, scale, mirror, about }));
+    this._applyVertexEdit(verts, () => transformVertices(this._model, verts, { rotate, scale, mirror, about }));
   }
 
   /** Select every triangle. */

@@ -4,6 +4,7 @@
 // written as a class only to hold them: editor2d.js copies them onto Editor2D.prototype, so
 // `this` is always the Editor2D.
 import { PICK_VERTEX_PX, PICK_EDGE_PX, SNAP_PX } from './editor_selection.js';
+import { addCircular, addGrid, addPolygon, addTriangle, mergeVertices, moveVertices, splitEdge, transformVertices } from './model_edits.js';
 
 /** The tools setTool() accepts. */
 export const TOOLS = ['select', 'triangle', 'polygon', 'grid', 'circular', 'move', 'rotate', 'scale', 'mirror', 'merge', 'split', 'measure'];
@@ -77,7 +78,7 @@ export class EditorTools {
     if (this._points.length < 3) return this._requestDraw();
     const [a, b, c] = this._points;
     this._points = [];
-    this._tryEdit('Triangle', () => this._model.addTriangle(a, b, c), (tris) => this._setSelection({ triangles: tris }));
+    this._tryEdit('Triangle', () => addTriangle(this._model, a, b, c), (tris) => this._setSelection({ triangles: tris }));
   }
 
   _down_polygon(s) {
@@ -98,7 +99,7 @@ export class EditorTools {
       this._requestDraw();
       return this.onStatus('Polygon: place at least three corners');
     }
-    this._tryEdit('Polygon', () => this._model.addPolygon(pts), (tris) => this._setSelection({ triangles: tris }));
+    this._tryEdit('Polygon', () => addPolygon(this._model, pts), (tris) => this._setSelection({ triangles: tris }));
   }
 
   _down_grid(s) {
@@ -125,7 +126,7 @@ export class EditorTools {
     const o = this.options;
     const spec = { x: Math.min(from.x, to.x), y: Math.min(from.y, to.y), w: Math.abs(w), h: Math.abs(h),
       cols: Math.max(1, Math.round(o.cols)), rows: Math.max(1, Math.round(o.rows)), diagonals: o.diagonals || 'none' };
-    this._tryEdit('Grid', () => this._model.addGrid(spec), (tris) => this._setSelection({ triangles: tris }));
+    this._tryEdit('Grid', () => addGrid(this._model, spec), (tris) => this._setSelection({ triangles: tris }));
   }
 
   _down_circular(s) {
@@ -151,7 +152,7 @@ export class EditorTools {
     }
     const o = this.options;
     const spec = { x: centre.x, y: centre.y, radius, rings: Math.max(1, Math.round(o.rings)), spokes: Math.max(3, Math.round(o.spokes)) };
-    this._tryEdit('Circular lattice', () => this._model.addCircular(spec), (tris) => this._setSelection({ triangles: tris }));
+    this._tryEdit('Circular lattice', () => addCircular(this._model, spec), (tris) => this._setSelection({ triangles: tris }));
   }
 
   // Runs a model edit; a refused one (bad polygon…) is reported, not thrown.
@@ -239,7 +240,7 @@ export class EditorTools {
     this._action = null;
     this._restorePositions(a);
     if (a.dx === 0 && a.dy === 0) return this._requestDraw();
-    this._applyVertexEdit(a.verts, () => this._model.moveVertices(a.verts, a.dx, a.dy));
+    this._applyVertexEdit(a.verts, () => moveVertices(this._model, a.verts, a.dx, a.dy));
   }
 
   _down_rotate(s, e) {
@@ -263,7 +264,7 @@ export class EditorTools {
     this._action = null;
     this._restorePositions(a);
     if (!a.angle) return this._requestDraw();
-    this._applyVertexEdit(a.verts, () => this._model.transformVertices(a.verts, { rotate: a.angle, about: a.centre }));
+    this._applyVertexEdit(a.verts, () => transformVertices(this._model, a.verts, { rotate: a.angle, about: a.centre }));
   }
 
   _down_scale(s, e) {
@@ -289,7 +290,7 @@ export class EditorTools {
     this._action = null;
     this._restorePositions(a);
     if (a.factor === 1) return this._requestDraw();
-    this._applyVertexEdit(a.verts, () => this._model.transformVertices(a.verts, { scale: a.factor, about: a.centre }));
+    this._applyVertexEdit(a.verts, () => transformVertices(this._model, a.verts, { scale: a.factor, about: a.centre }));
   }
 
   _previewTransform(a, { rotate, scale }) {
@@ -324,7 +325,7 @@ export class EditorTools {
     const [from] = this._picked;
     this._picked = [];
     if (from === v) return this._requestDraw();
-    const kept = this._model.mergeVertices(v, from);
+    const kept = mergeVertices(this._model, v, from);
     this._setSelection({ vertices: [kept] });
     this._edited();
     this.onStatus('Merged two vertices');
@@ -342,7 +343,7 @@ export class EditorTools {
     const off = Math.abs((q.x - a.x) * dy - (q.y - a.y) * dx) / Math.hypot(dx, dy);
     if (!(t > 0 && t < 1) || off * this.view.scale > PICK_EDGE_PX + 3) t = e.t;
     if (!(t > 0 && t < 1)) return this.onStatus('Split: click inside an edge, not at its end');
-    const mid = m.splitEdge(e.i, e.j, t);
+    const mid = splitEdge(m, e.i, e.j, t);
     this._setSelection({ vertices: [mid] });
     this._edited();
     this.onStatus(`Split the edge at ${fmt(t)}`);

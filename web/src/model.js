@@ -1,12 +1,11 @@
 // The crease-pattern model of the web editor: triangles grouped into actors, with joints on
 // the edges that two different actors share. Pure: no DOM, no three.js, so node tests run it.
-// This module holds PatternModel's state, reading and writing, and queries; the methods that add
-// and edit geometry live in model_edits.js and are installed on PatternModel below. It also
-// re-exports the helpers, History and snapPoint, so imports from './model.js' keep working.
+// This module holds PatternModel's state, reading and writing, and queries; the edits that add
+// and change geometry are plain functions of the model in model_edits.js (addPolygon(model, …)).
+// It also re-exports the helpers, History and snapPoint, so imports from './model.js' keep working.
 import { dist, boxOf, toleranceOf, cross3, Welder } from './polygon.js';
 import { edgeKey, keyEnds } from './edge_key.js';
 import { ASSIGNMENTS, INT_MAX, readPMML, formatNumber, escapeXml } from './pmml.js';
-import { PatternEdits } from './model_edits.js';
 import { actorsOf, runEnds, continuedCrease, splitRuns } from './joint_runs.js';
 
 export { MERGE_TOLERANCE, earClip, signedArea } from './polygon.js';
@@ -494,7 +493,3 @@ export class PatternModel {
     return chain;
   }
 }
-
-// The adding and editing methods (model_edits.js) become PatternModel's own, as if written above.
-for (const [name, method] of Object.entries(Object.getOwnPropertyDescriptors(PatternEdits.prototype)))
-  if (name !== 'constructor') Object.defineProperty(PatternModel.prototype, name, method);

@@ -11,6 +11,7 @@ import path from 'node:path';
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { PatternModel, History, snapPoint, earClip, signedArea, parseXml } from '../src/model.js';
+import { addCircular, addGrid, addPolygon, addTriangle, copyTriangles, deleteTriangles, group, mergeVertices, moveVertices, paste, splitEdge, transformVertices, ungroup } from '../src/model_edits.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const fixture = (name) => fs.readFileSync(path.join(here, 'fixtures', name), 'utf8');
@@ -151,7 +152,7 @@ test('a run of edges splits where an edit breaks it; the part with the smallest 
   // The upper triangle of actor 2 on the crease becomes an actor of its own: the upper edge now
   // lies between actors 1 and 3, another crease.
   const upper = m.trianglesOf(2).find((t) => m.triangles[t].v.some((v) => m.vertices[v].y === 2 && m.vertices[v].x === 1));
-  m.group([upper]);
+  group(m, [upper]);
   const joints = m.joints();
   assert.equal(joints.length, 3, 'the lower half, the upper half, and the new crease inside actor 2');
   const lower = joints.find((j) => j.a.x === 1 && j.b.x === 1 && j.a.y === 0);
@@ -163,26 +164,26 @@ test('a run of edges splits where an edit breaks it; the part with the smallest 
   // Undone by a snapshot: one joint again.
   const again = PatternModel.fromPMML(fixture('collinear-joint.pmml'));
   const snap = again.snapshot();
-  again.group([upper]);
+  group(again, [upper]);
   again.restore(snap);
   assert.deepEqual(again.joints().map((j) => [j.id, j.keys.length]), [[7, 2]]);
 });
 
 test('an edge that continues a crease between the same two actors joins it; paste copies runs whole', () => {
   const m = new PatternModel();
-  m.addPolygon([{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 1, y: 1 }, { x: 0, y: 1 }], 1);
-  m.addPolygon([{ x: 1, y: 0 }, { x: 2, y: 0 }, { x: 2, y: 1 }, { x: 1, y: 1 }], 2);
+  addPolygon(m, [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 1, y: 1 }, { x: 0, y: 1 }], 1);
+  addPolygon(m, [{ x: 1, y: 0 }, { x: 2, y: 0 }, { x: 2, y: 1 }, { x: 1, y: 1 }], 2);
   assert.equal(m.joints().length, 1);
   const id = m.joints()[0].id;
-  m.addTriangle({ x: 0, y: 1 }, { x: 1, y: 1 }, { x: 1, y: 2 }, 1);
-  m.addTriangle({ x: 1, y: 1 }, { x: 2, y: 1 }, { x: 1, y: 2 }, 2);
+  addTriangle(m, { x: 0, y: 1 }, { x: 1, y: 1 }, { x: 1, y: 2 }, 1);
+  addTriangle(m, { x: 1, y: 1 }, { x: 2, y: 1 }, { x: 1, y: 2 }, 2);
   const [j] = m.joints();
   assert.deepEqual([m.joints().length, j.id, j.keys.length, j.a, j.b], [1, id, 2, { x: 1, y: 0 }, { x: 1, y: 2 }]);
   // A crease at a corner, not straight through it, is another joint.
-  m.addTriangle({ x: 2, y: 0 }, { x: 3, y: 0 }, { x: 2, y: 1 }, 3);
+  addTriangle(m, { x: 2, y: 0 }, { x: 3, y: 0 }, { x: 2, y: 1 }, 3);
   assert.equal(m.joints().length, 2);
   const c = PatternModel.fromPMML(fixture('collinear-joint.pmml'));
-  c.paste(c.copyTriangles(c.triangles.map((_, t) => t)), 3, 0);
+  paste(c, copyTriangles(c, c.triangles.map((_, t) => t)), 3, 0);
   assert.deepEqual(c.joints().map((x) => x.keys.length), [2, 2]);
   assert.deepEqual(c.joints().map((x) => x.assignment), ['M', 'M']);
 });
@@ -269,14 +270,14 @@ test('edited joint properties are written and read back', () => {
 
 test('snapshot → JSON → fromSnapshot gives the same model', () => {
   const m = PatternModel.fromPMML(fixture('miura-3x3.pmml'));
-  m.addPolygon([{ x: 10, y: 0 }, { x: 11, y: 0 }, { x: 11, y: 1 }]);
+  addPolygon(m, [{ x: 10, y: 0 }, { x: 11, y: 0 }, { x: 11, y: 1 }]);
   const s = JSON.parse(JSON.stringify(m.snapshot()));
   const back = PatternModel.fromSnapshot(s);
   assert.equal(back.toPMML(), m.toPMML());
   assert.deepEqual(back.vertices, m.vertices);
   // The next joint ID travels with the snapshot.
-  const a = m.addTriangle({ x: 11, y: 0 }, { x: 12, y: 0 }, { x: 11, y: 1 });
-  const b = back.addTriangle({ x: 11, y: 0 }, { x: 12, y: 0 }, { x: 11, y: 1 });
+  const a = addTriangle(m, { x: 11, y: 0 }, { x: 12, y: 0 }, { x: 11, y: 1 });
+  const b = addTriangle(back, { x: 11, y: 0 }, { x: 12, y: 0 }, { x: 11, y: 1 });
   assert.deepEqual(a, b);
   assert.deepEqual(jointRecords(back), jointRecords(m));
 });
@@ -288,15 +289,15 @@ test('joint IDs stay stable across moveVertices and an unrelated addPolygon', ()
   const before = new Map(m.joints().map((j) => [j.id, [j.va, j.vb].sort().join()]));
   const interior = m.vertices.findIndex((p) => p.x === 1 && p.y === 1.577350269189626);
   assert.ok(interior >= 0);
-  m.moveVertices([interior], 0.05, -0.02);
+  moveVertices(m, [interior], 0.05, -0.02);
   const moved = m.joints().filter((j) => j.va === interior || j.vb === interior);
   assert.equal(moved.length, 4, 'a degree-4 Miura vertex has four creases');
   for (const j of moved) assert.ok(j.a.x === 1.05 || j.b.x === 1.05);
-  m.addPolygon([{ x: 20, y: 20 }, { x: 21, y: 20 }, { x: 21, y: 21 }, { x: 20, y: 21 }]);
+  addPolygon(m, [{ x: 20, y: 20 }, { x: 21, y: 20 }, { x: 21, y: 21 }, { x: 20, y: 21 }]);
   const after = new Map(m.joints().map((j) => [j.id, [j.va, j.vb].sort().join()]));
   assert.deepEqual(after, before, 'same IDs on the same edges');
   // A polygon that does share an edge adds one joint, with the next ID (12 was the highest).
-  m.addPolygon([{ x: 3, y: 0.577350269189626 }, { x: 4, y: 0.577350269189626 }, { x: 3, y: 1.577350269189626 }]);
+  addPolygon(m, [{ x: 3, y: 0.577350269189626 }, { x: 4, y: 0.577350269189626 }, { x: 3, y: 1.577350269189626 }]);
   assert.equal(m.joints().length, 13);
   assert.equal(m.joints().at(-1).id, 13);
 });
@@ -304,15 +305,15 @@ test('joint IDs stay stable across moveVertices and an unrelated addPolygon', ()
 test('a joint keeps its ID when merges renumber vertices', () => {
   const m = PatternModel.fromPMML(fixture('boat.pmml'));
   // Two triangles far away, then merge a corner of one into the other's: vertices renumber.
-  m.addTriangle({ x: 10, y: 0 }, { x: 11, y: 0 }, { x: 10, y: 1 });
-  m.addTriangle({ x: 12, y: 0 }, { x: 13, y: 0 }, { x: 12, y: 1 });
+  addTriangle(m, { x: 10, y: 0 }, { x: 11, y: 0 }, { x: 10, y: 1 });
+  addTriangle(m, { x: 12, y: 0 }, { x: 13, y: 0 }, { x: 12, y: 1 });
   const ids = (mm) => jointRecords(mm).map((j) => `${j.id}:${j.a.x},${j.a.y}-${j.b.x},${j.b.y}`);
   const before = ids(m);
   const first = m.nearestVertex({ x: 0, y: 1 }, 1e-9);
   const other = m.nearestVertex({ x: 0, y: 0 }, 1e-9);
   assert.ok(first >= 0 && other >= 0);
   const keep = m.nearestVertex({ x: 11, y: 0 }, 1e-9), gone = m.nearestVertex({ x: 12, y: 0 }, 1e-9);
-  const kept = m.mergeVertices(keep, gone);
+  const kept = mergeVertices(m, keep, gone);
   assert.equal(m.vertices.length, 11 + 6 - 1);
   assert.deepEqual(m.vertices[kept], { x: 11, y: 0 });
   assert.deepEqual(ids(m), before);
@@ -322,7 +323,7 @@ test('a joint keeps its ID when merges renumber vertices', () => {
 
 test('addGrid 2×2 without diagonals matches foldkit generate grid: 4 actors, 4 joints', () => {
   const m = new PatternModel();
-  m.addGrid({ x: 0, y: 0, cols: 2, rows: 2, w: 2, h: 2 });
+  addGrid(m, { x: 0, y: 0, cols: 2, rows: 2, w: 2, h: 2 });
   const g = PatternModel.fromPMML(fixture('grid-2x2.pmml'));
   // Euler for a disc: E = V + T − 1 = 9 + 8 − 1 = 16 edges, 8 on the boundary, 8 inside; the
   // 4 cell diagonals lie inside an actor, so 4 joints remain.
@@ -336,7 +337,7 @@ test('addGrid with diagonals makes each triangle an actor', () => {
   const cases = { '/': [12, 13, 12, 12], '\\': [12, 13, 12, 12], x: [24, 31, 24, 18], none: [6, 7, 12, 12] };
   for (const [diagonals, [actors, joints, triangles, vertices]] of Object.entries(cases)) {
     const m = new PatternModel();
-    m.addGrid({ x: 1, y: 1, cols: 3, rows: 2, w: 3, h: 2, diagonals });
+    addGrid(m, { x: 1, y: 1, cols: 3, rows: 2, w: 3, h: 2, diagonals });
     // V − E + T = 1 and every interior edge between two actors is a joint.
     assert.deepEqual(counts(m), { actors, joints, triangles, vertices }, diagonals);
     assert.equal(m.vertices.length - m.edges().length + m.triangles.length, 1);
@@ -346,7 +347,7 @@ test('addGrid with diagonals makes each triangle an actor', () => {
 
 test('addCircular matches foldkit generate circular triangle for triangle', () => {
   const m = new PatternModel();
-  m.addCircular({ x: 0, y: 0, rings: 3, spokes: 8, radius: 3 });
+  addCircular(m, { x: 0, y: 0, rings: 3, spokes: 8, radius: 3 });
   const c = PatternModel.fromPMML(fixture('circular-3x8.pmml'));
   assert.deepEqual(counts(m), EXPECTED['circular-3x8.pmml']);
   assert.deepEqual(triangleSet(m, false), triangleSet(c, false));
@@ -357,22 +358,22 @@ test('addCircular matches foldkit generate circular triangle for triangle', () =
 
 test('group and ungroup change the joint count as the actors say', () => {
   const m = new PatternModel();
-  m.addGrid({ x: 0, y: 0, cols: 2, rows: 2, w: 2, h: 2 });
+  addGrid(m, { x: 0, y: 0, cols: 2, rows: 2, w: 2, h: 2 });
   const [a1, a2] = m.actors();
   const shared = m.joints().find((j) => j.actors[0] === a1 && j.actors[1] === a2);
   assert.ok(shared);
-  const id = m.group([...m.trianglesOf(a1), ...m.trianglesOf(a2)]);
+  const id = group(m, [...m.trianglesOf(a1), ...m.trianglesOf(a2)]);
   assert.equal(id, 5, 'the next free actor ID');
   // Three actors in an L around one cell… the A–B edge is now inside one actor.
   assert.deepEqual([m.actors().length, m.joints().length], [3, 3]);
-  const ids = m.ungroup(id);
+  const ids = ungroup(m, id);
   assert.equal(ids.length, 4);
   assert.equal(ids[0], id);
   // Four single-triangle actors plus two cells: of the 8 interior edges only the two diagonals
   // of the untouched cells stay inside an actor.
   assert.deepEqual([m.actors().length, m.joints().length], [6, 6]);
   assert.equal(m.joints().find((j) => j.va === shared.va && j.vb === shared.vb).id, shared.id, 'the A–B edge gets its old ID back');
-  m.group(m.triangles.map((_, t) => t));
+  group(m, m.triangles.map((_, t) => t));
   assert.deepEqual([m.actors().length, m.joints().length], [1, 0]);
 });
 
@@ -388,7 +389,7 @@ test('ear clipping a concave polygon gives n − 2 triangles covering the shoela
   const ell = [{ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 4, y: 0 }, { x: 4, y: 1 }, { x: 1, y: 1 }, { x: 1, y: 3 }, { x: 0, y: 3 }];
   for (const poly of [star, ell]) {
     const m = new PatternModel();
-    const tris = m.addPolygon(poly);
+    const tris = addPolygon(m, poly);
     assert.equal(tris.length, poly.length - 2);
     assert.equal(m.actors().length, 1);
     assert.ok(Math.abs(area(m) - Math.abs(signedArea(poly))) < 1e-12, 'areas add up');
@@ -405,22 +406,22 @@ test('ear clipping a concave polygon gives n − 2 triangles covering the shoela
 
 test('addPolygon refuses self-intersecting and degenerate input', () => {
   const m = new PatternModel();
-  assert.throws(() => m.addPolygon([{ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 1, y: 0 }, { x: 0, y: 1 }]), /intersects itself/);
-  assert.throws(() => m.addPolygon([{ x: 0, y: 0 }, { x: 3, y: 1 }, { x: 3, y: 0 }, { x: 0, y: 2 }]), /intersects itself/);
-  assert.throws(() => m.addPolygon([{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 2, y: 0 }]), /zero area|degenerate|doubles back/);
-  assert.throws(() => m.addPolygon([{ x: 0, y: 0 }, { x: 1, y: 0 }]), /at least 3/);
-  assert.throws(() => m.addPolygon([{ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 2, y: 2 }, { x: 1, y: 0 }, { x: 0, y: 2 }]));
-  assert.throws(() => m.addTriangle({ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 2, y: 2 }), /degenerate/);
+  assert.throws(() => addPolygon(m, [{ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 1, y: 0 }, { x: 0, y: 1 }]), /intersects itself/);
+  assert.throws(() => addPolygon(m, [{ x: 0, y: 0 }, { x: 3, y: 1 }, { x: 3, y: 0 }, { x: 0, y: 2 }]), /intersects itself/);
+  assert.throws(() => addPolygon(m, [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 2, y: 0 }]), /zero area|degenerate|doubles back/);
+  assert.throws(() => addPolygon(m, [{ x: 0, y: 0 }, { x: 1, y: 0 }]), /at least 3/);
+  assert.throws(() => addPolygon(m, [{ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 2, y: 2 }, { x: 1, y: 0 }, { x: 0, y: 2 }]));
+  assert.throws(() => addTriangle(m, { x: 0, y: 0 }, { x: 1, y: 1 }, { x: 2, y: 2 }), /degenerate/);
   assert.equal(m.triangles.length, 0, 'nothing was added');
   // A repeated closing corner is not a problem.
-  assert.equal(m.addPolygon([{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 }, { x: 0, y: 0 }]).length, 1);
+  assert.equal(addPolygon(m, [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 }, { x: 0, y: 0 }]).length, 1);
 });
 
 test('addPolygon snaps to existing corners and splits edges instead of leaving T-junctions', () => {
   const m = new PatternModel();
-  m.addGrid({ x: 0, y: 0, cols: 2, rows: 2, w: 2, h: 2 });
+  addGrid(m, { x: 0, y: 0, cols: 2, rows: 2, w: 2, h: 2 });
   // A square on the right whose left side runs past the grid's corner (2,1).
-  const tris = m.addPolygon([{ x: 2, y: 0 }, { x: 4, y: 0 }, { x: 4, y: 2 }, { x: 2 + 1e-12, y: 2 }]);
+  const tris = addPolygon(m, [{ x: 2, y: 0 }, { x: 4, y: 0 }, { x: 4, y: 2 }, { x: 2 + 1e-12, y: 2 }]);
   assert.equal(m.vertices.length, 11, 'two corners welded onto the grid');
   assertConforming(m);
   assert.ok(tris.length >= 3, 'the side through (2,1) was split');
@@ -428,8 +429,8 @@ test('addPolygon snaps to existing corners and splits edges instead of leaving T
   assert.equal(m.joints().length, 4 + 2, 'the shared side is two edges, two joints');
   // A corner placed on an existing boundary edge's midpoint splits that edge.
   const n = new PatternModel();
-  n.addTriangle({ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 0, y: 2 });
-  n.addTriangle({ x: 1, y: 1 }, { x: 2, y: 0 }, { x: 2, y: 2 });
+  addTriangle(n, { x: 0, y: 0 }, { x: 2, y: 0 }, { x: 0, y: 2 });
+  addTriangle(n, { x: 1, y: 1 }, { x: 2, y: 0 }, { x: 2, y: 2 });
   assertConforming(n);
   assert.equal(n.triangles.length, 3);
   assert.equal(n.joints().length, 1);
@@ -441,7 +442,7 @@ test('splitEdge keeps the area, leaves no T-junction and carries the crease', ()
   const m = PatternModel.fromPMML(fixture('miura-3x3.pmml'));
   const a0 = area(m);
   const j = m.joint(1); // a valley crease between actors 1 and 2
-  const mid = m.splitEdge(j.va, j.vb, 0.25);
+  const mid = splitEdge(m, j.va, j.vb, 0.25);
   assert.equal(m.triangles.length, 20);
   assert.equal(m.vertices.length, 17);
   assert.ok(Math.abs(area(m) - a0) < 1e-12);
@@ -454,20 +455,20 @@ test('splitEdge keeps the area, leaves no T-junction and carries the crease', ()
   assert.equal(m.length(j.va, mid), m.length(j.va, j.vb) * 0.25);
   // A boundary edge: one triangle is split.
   const e = m.edges().find((x) => x.kind === 'boundary');
-  m.splitEdge(e.i, e.j);
+  splitEdge(m, e.i, e.j);
   assert.equal(m.triangles.length, 21);
   assertConforming(m);
   assert.ok(Math.abs(area(m) - a0) < 1e-12);
-  assert.throws(() => m.splitEdge(0, 0), /no edge/);
+  assert.throws(() => splitEdge(m, 0, 0), /no edge/);
 });
 
 test('mergeVertices joins vertices and drops collapsed triangles', () => {
   const m = new PatternModel();
-  m.addGrid({ x: 0, y: 0, cols: 2, rows: 2, w: 2, h: 2 });
+  addGrid(m, { x: 0, y: 0, cols: 2, rows: 2, w: 2, h: 2 });
   const i = m.nearestVertex({ x: 0, y: 0 }), j = m.nearestVertex({ x: 1, y: 0 });
-  const mid = m.splitEdge(i, j);
+  const mid = splitEdge(m, i, j);
   assert.equal(m.triangles.length, 9);
-  const kept = m.mergeVertices(i, mid);
+  const kept = mergeVertices(m, i, mid);
   assert.equal(m.triangles.length, 8, 'the sliver at the merged edge collapses');
   assert.equal(m.vertices.length, 9);
   assert.deepEqual(m.vertices[kept], { x: 0, y: 0 });
@@ -475,37 +476,37 @@ test('mergeVertices joins vertices and drops collapsed triangles', () => {
   assertConforming(m);
   // Two separate triangles that nearly touch become connected: one shared corner.
   const n = new PatternModel();
-  n.addTriangle({ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 });
-  n.addTriangle({ x: 1.01, y: 0.01 }, { x: 2, y: 0 }, { x: 2, y: 1 });
+  addTriangle(n, { x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 });
+  addTriangle(n, { x: 1.01, y: 0.01 }, { x: 2, y: 0 }, { x: 2, y: 1 });
   assert.equal(n.vertices.length, 6);
-  const k = n.mergeVertices(n.nearestVertex({ x: 1, y: 0 }), n.nearestVertex({ x: 1.01, y: 0.01 }));
+  const k = mergeVertices(n, n.nearestVertex({ x: 1, y: 0 }), n.nearestVertex({ x: 1.01, y: 0.01 }));
   assert.equal(n.vertices.length, 5);
   assert.equal(n.triangles.filter((t) => t.v.includes(k)).length, 2);
 });
 
 test('moveVertices welds a moved corner onto a vertex it lands on', () => {
   const m = new PatternModel();
-  m.addTriangle({ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 });
-  m.addTriangle({ x: 1, y: 1 }, { x: 3, y: 1 }, { x: 1, y: 3 });
+  addTriangle(m, { x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 });
+  addTriangle(m, { x: 1, y: 1 }, { x: 3, y: 1 }, { x: 1, y: 3 });
   const v = [m.nearestVertex({ x: 1, y: 1 }), m.nearestVertex({ x: 1, y: 3 })];
-  const [moved] = m.moveVertices(v, 0, -1); // (1,1) → (1,0) welds; (1,3) → (1,2)
+  const [moved] = moveVertices(m, v, 0, -1); // (1,1) → (1,0) welds; (1,3) → (1,2)
   assert.equal(m.vertices.length, 5);
   assert.deepEqual(m.vertices[moved], { x: 1, y: 0 });
 });
 
 test('transformVertices rotates, scales and mirrors about a point', () => {
   const m = new PatternModel();
-  m.addTriangle({ x: 1, y: 0 }, { x: 2, y: 0 }, { x: 1, y: 1 });
+  addTriangle(m, { x: 1, y: 0 }, { x: 2, y: 0 }, { x: 1, y: 1 });
   const all = [0, 1, 2];
-  m.transformVertices(all, { rotate: Math.PI / 2, about: { x: 0, y: 0 } });
+  transformVertices(m, all, { rotate: Math.PI / 2, about: { x: 0, y: 0 } });
   const near = (p, q) => Math.abs(p.x - q.x) < 1e-12 && Math.abs(p.y - q.y) < 1e-12;
   assert.ok(near(m.vertices[0], { x: 0, y: 1 }) && near(m.vertices[1], { x: 0, y: 2 }) && near(m.vertices[2], { x: -1, y: 1 }));
-  m.transformVertices(all, { scale: 2, about: { x: 0, y: 0 } });
+  transformVertices(m, all, { scale: 2, about: { x: 0, y: 0 } });
   assert.ok(near(m.vertices[1], { x: 0, y: 4 }));
   assert.ok(Math.abs(m.triangleArea(0) - 2) < 1e-12);
   const orientation = () => signedArea(m.triangles[0].v.map((i) => m.vertices[i]));
   const before = Math.sign(orientation());
-  m.transformVertices(all, { mirror: 'x', about: { x: 0, y: 0 } });
+  transformVertices(m, all, { mirror: 'x', about: { x: 0, y: 0 } });
   assert.ok(near(m.vertices.find((p) => p.y === 4) ?? { x: NaN, y: NaN }, { x: 0, y: 4 }));
   assert.ok(m.vertices.some((p) => near(p, { x: 2, y: 2 })), 'x flipped');
   assert.equal(Math.sign(orientation()), before, 'the triangle keeps its orientation');
@@ -513,9 +514,9 @@ test('transformVertices rotates, scales and mirrors about a point', () => {
 
 test('copy and paste make new actors with the copied grouping and creases', () => {
   const m = PatternModel.fromPMML(fixture('miura-3x3.pmml'));
-  const clip = m.copyTriangles(m.triangles.map((_, t) => t));
+  const clip = copyTriangles(m, m.triangles.map((_, t) => t));
   assert.equal(clip.triangles.length, 18);
-  const pasted = m.paste(clip, 10, 0);
+  const pasted = paste(m, clip, 10, 0);
   assert.equal(pasted.length, 18);
   assert.deepEqual(counts(m), { actors: 18, joints: 24, triangles: 36, vertices: 32 });
   const newJoints = m.joints().filter((j) => j.id > 12);
@@ -524,15 +525,15 @@ test('copy and paste make new actors with the copied grouping and creases', () =
   assert.equal(kinds(newJoints), kinds(m.joints().filter((j) => j.id <= 12)), 'mountains and valleys copied');
   // Pasting a copy of one actor right beside the grid shares an edge: one new joint.
   const g = new PatternModel();
-  g.addGrid({ cols: 1, rows: 1, w: 1, h: 1 });
-  g.paste(g.copyTriangles([0, 1]), 1, 0);
+  addGrid(g, { cols: 1, rows: 1, w: 1, h: 1 });
+  paste(g, copyTriangles(g, [0, 1]), 1, 0);
   assert.deepEqual(counts(g), { actors: 2, joints: 1, triangles: 4, vertices: 6 });
 });
 
 test('deleteTriangles drops unused vertices and vanished joints', () => {
   const m = PatternModel.fromPMML(fixture('boat.pmml'));
   const del = m.trianglesOf(1).concat(m.trianglesOf(5));
-  m.deleteTriangles(del);
+  deleteTriangles(m, del);
   // Actors 1 and 5 held the corner (0,0) alone; joints 1 (1–5), 5 (1–2) and 6 (5–6) are gone.
   assert.deepEqual(counts(m), { actors: 6, joints: 7, triangles: 10, vertices: 10 });
   assert.deepEqual(m.joints().map((j) => j.id), [2, 3, 4, 7, 8, 9, 10]);
@@ -586,9 +587,9 @@ test('History with model snapshots restores earlier models in place', () => {
   const m = new PatternModel();
   const h = new History();
   h.push(m.snapshot());
-  m.addGrid({ cols: 2, rows: 2, w: 2, h: 2 });
+  addGrid(m, { cols: 2, rows: 2, w: 2, h: 2 });
   h.push(m.snapshot());
-  m.group([0, 1, 2, 3]);
+  group(m, [0, 1, 2, 3]);
   h.push(m.snapshot());
   m.restore(h.undo());
   assert.deepEqual(counts(m), { actors: 4, joints: 4, triangles: 8, vertices: 9 });
@@ -601,7 +602,7 @@ test('History with model snapshots restores earlier models in place', () => {
 
 test('snapPoint picks the nearest vertex, midpoint or grid point within the radius', () => {
   const m = new PatternModel();
-  m.addTriangle({ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 0, y: 2 });
+  addTriangle(m, { x: 0, y: 0 }, { x: 2, y: 0 }, { x: 0, y: 2 });
   const all = { grid: 0.5, vertices: true, midpoints: true };
   assert.deepEqual(snapPoint({ x: 1.9, y: 0.1 }, all, m, 0.3), { x: 2, y: 0, kind: 'vertex', index: 1 });
   const mid = snapPoint({ x: 1.05, y: 0.02 }, all, m, 0.3);
@@ -633,30 +634,30 @@ function randomEdits(seed, steps, check) {
     return null;
   };
   const ops = {
-    grid: (s) => m.addGrid({ x: s[0], y: s[1], w: 2, h: 2, cols: 1 + Math.floor(rnd() * 3), rows: 1 + Math.floor(rnd() * 3), diagonals: pick(['none', '/', '\\', 'x']) }),
-    circular: (s) => m.addCircular({ x: s[0] + 1, y: s[1] + 1, rings: 1 + Math.floor(rnd() * 2), spokes: 3 + Math.floor(rnd() * 6), radius: 0.9 }),
-    polygon: (s) => m.addPolygon([{ x: s[0], y: s[1] }, { x: s[0] + 2, y: s[1] }, { x: s[0] + 2, y: s[1] + 2 }, { x: s[0] + 1, y: s[1] + 0.5 + rnd() }, { x: s[0], y: s[1] + 2 }]),
+    grid: (s) => addGrid(m, { x: s[0], y: s[1], w: 2, h: 2, cols: 1 + Math.floor(rnd() * 3), rows: 1 + Math.floor(rnd() * 3), diagonals: pick(['none', '/', '\\', 'x']) }),
+    circular: (s) => addCircular(m, { x: s[0] + 1, y: s[1] + 1, rings: 1 + Math.floor(rnd() * 2), spokes: 3 + Math.floor(rnd() * 6), radius: 0.9 }),
+    polygon: (s) => addPolygon(m, [{ x: s[0], y: s[1] }, { x: s[0] + 2, y: s[1] }, { x: s[0] + 2, y: s[1] + 2 }, { x: s[0] + 1, y: s[1] + 0.5 + rnd() }, { x: s[0], y: s[1] + 2 }]),
     paste: (s) => {
-      const clip = m.copyTriangles(m.trianglesOf(pick(m.actors())));
+      const clip = copyTriangles(m, m.trianglesOf(pick(m.actors())));
       const b = clip.bounds;
-      if (b.maxX - b.minX <= 2 && b.maxY - b.minY <= 2) m.paste(clip, s[0] - b.minX, s[1] - b.minY);
+      if (b.maxX - b.minX <= 2 && b.maxY - b.minY <= 2) paste(m, clip, s[0] - b.minX, s[1] - b.minY);
     },
   };
   const edits = {
     group: () => {
       const j = pick(m.joints());
-      if (j) m.group([...m.trianglesOf(j.actors[0]), ...m.trianglesOf(j.actors[1])]);
+      if (j) group(m, [...m.trianglesOf(j.actors[0]), ...m.trianglesOf(j.actors[1])]);
     },
-    ungroup: () => m.ungroup(pick(m.actors())),
+    ungroup: () => ungroup(m, pick(m.actors())),
     split: () => {
       const e = pick(m.edges());
-      m.splitEdge(e.i, e.j, 0.2 + 0.6 * rnd());
+      splitEdge(m, e.i, e.j, 0.2 + 0.6 * rnd());
     },
     assign: () => {
       const j = pick(m.joints());
       if (j) m.setJoint(j.id, { assignment: pick(['M', 'V', 'F', 'U']), spring: rnd() });
     },
-    delete: () => m.deleteTriangles(m.trianglesOf(pick(m.actors()))),
+    delete: () => deleteTriangles(m, m.trianglesOf(pick(m.actors()))),
   };
   for (let step = 0; step < steps; ++step) {
     const shapes = Object.keys(ops), changes = Object.keys(edits);
@@ -712,32 +713,32 @@ test('foldkit validates what the model writes and counts the same joints', needs
   try {
     for (const diagonals of ['none', '/', '\\', 'x']) {
       const m = new PatternModel({ title: `grid ${diagonals}` });
-      m.addGrid({ x: -1, y: 0.5, cols: 4, rows: 3, w: 2, h: 1.5, diagonals });
+      addGrid(m, { x: -1, y: 0.5, cols: 4, rows: 3, w: 2, h: 1.5, diagonals });
       checkWithFoldkit(dir, `grid-${diagonals === '\\' ? 'back' : diagonals === '/' ? 'slash' : diagonals}`, m);
     }
     for (const [rings, spokes] of [[1, 3], [2, 5], [4, 12]]) {
       const m = new PatternModel();
-      m.addCircular({ x: 0.3, y: -0.7, rings, spokes, radius: 2.5 });
+      addCircular(m, { x: 0.3, y: -0.7, rings, spokes, radius: 2.5 });
       checkWithFoldkit(dir, `circular-${rings}-${spokes}`, m);
     }
     const miura = PatternModel.fromPMML(fixture('miura-3x3.pmml'));
-    miura.paste(miura.copyTriangles(miura.triangles.map((_, t) => t)), 3, 0);
+    paste(miura, copyTriangles(miura, miura.triangles.map((_, t) => t)), 3, 0);
     checkWithFoldkit(dir, 'pasted-beside', miura);
     const grouped = new PatternModel();
-    grouped.addGrid({ cols: 3, rows: 3, w: 3, h: 3, diagonals: 'x' });
-    grouped.group(grouped.trianglesOf(1).concat(grouped.trianglesOf(2), grouped.trianglesOf(3)));
-    grouped.ungroup(grouped.actors()[0]);
+    addGrid(grouped, { cols: 3, rows: 3, w: 3, h: 3, diagonals: 'x' });
+    group(grouped, grouped.trianglesOf(1).concat(grouped.trianglesOf(2), grouped.trianglesOf(3)));
+    ungroup(grouped, grouped.actors()[0]);
     checkWithFoldkit(dir, 'grouped', grouped);
     const split = PatternModel.fromPMML(fixture('waterbomb-2x3.pmml'));
     const j = split.joints()[3];
-    split.splitEdge(j.va, j.vb, 0.5);
+    splitEdge(split, j.va, j.vb, 0.5);
     const b = split.edges().find((e) => e.kind === 'boundary');
-    split.splitEdge(b.i, b.j, 0.3);
+    splitEdge(split, b.i, b.j, 0.3);
     checkWithFoldkit(dir, 'split', split);
     const poly = new PatternModel();
-    poly.addGrid({ cols: 2, rows: 2, w: 2, h: 2 });
-    poly.addPolygon([{ x: 2, y: 0 }, { x: 3, y: 0.5 }, { x: 3.5, y: 1 }, { x: 3, y: 1.5 }, { x: 2, y: 2 }]);
-    poly.addTriangle({ x: 0, y: 2 }, { x: 1, y: 2 }, { x: 0.5, y: 3 });
+    addGrid(poly, { cols: 2, rows: 2, w: 2, h: 2 });
+    addPolygon(poly, [{ x: 2, y: 0 }, { x: 3, y: 0.5 }, { x: 3.5, y: 1 }, { x: 3, y: 1.5 }, { x: 2, y: 2 }]);
+    addTriangle(poly, { x: 0, y: 2 }, { x: 1, y: 2 }, { x: 0.5, y: 3 });
     checkWithFoldkit(dir, 'polygon-beside-grid', poly);
     checkWithFoldkit(dir, 'collinear', PatternModel.fromPMML(fixture('collinear-joint.pmml')));
   } finally {
