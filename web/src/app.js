@@ -1,7 +1,6 @@
 // The page: the 2D editor, the 3D view, the numbers foldkit reports, the fold sequence and its
 // timeline. The browser draws and edits; every check and computation is a foldkit verb.
 import * as api from './api.js';
-import { PatternModel } from './model.js';
 import { Editor2D } from './editor2d.js';
 import { View3D } from './view3d.js';
 import { Timeline } from './timeline.js';
@@ -9,49 +8,9 @@ import { emptySequence, setFold, readCMML, writeCMML, anglesAfterEvents } from '
 import * as session from './session.js';
 import { format, StateNumbers } from './numbers.js';
 import { opensPattern, opensSequence, stem } from './formats.js';
-
-const $ = (id) => document.getElementById(id);
-
-// Everything the page knows; `window.foldkit` exposes it to the browser tests.
-const app = {
-  model: new PatternModel(),
-  sequence: emptySequence(),
-  sequenceEdits: 0,   // edits of `sequence` so far (a simulation remembers the count it ran on)
-  currentEvent: 1,
-  check: null,        // the last checkPattern() answer
-  simulation: null,   // the last session.simulate() answer
-  stateDof: null,     // dof of the state the scrubber rests on (its frame: stateNumbers.shown)
-  formats: [],        // the file formats foldkit reads and writes (GET /api; formats.js)
-  busy: 0,
-  errors: [],
-};
-window.foldkit = app;
-
-const files = () => session.sessionFiles($('name').value.trim() || 'untitled');
-
-function log(text) {
-  $('log').textContent = text;
-}
-
-function setNumber(id, value) {
-  $(id).textContent = format(value);
-}
-
-// Runs one request at a time from the UI; a failure is shown, never thrown at the user.
-async function task(label, work) {
-  app.busy++;
-  document.body.classList.add('busy');
-  try {
-    return await work();
-  } catch (e) {
-    app.errors.push(`${label}: ${e.message}`);
-    log(`${label}: ${e.message}`);
-    return null;
-  } finally {
-    app.busy--;
-    if (!app.busy) document.body.classList.remove('busy');
-  }
-}
+import { $, app, files, log, setNumber, task } from './page.js';
+import { showProblemList } from './problems.js';
+import { parameters, download, baseName } from './page_fields.js';
 
 // --- the pattern -----------------------------------------------------------------------------
 
@@ -126,47 +85,8 @@ function checkedValid(check) {
   return Boolean(check && check.ok);
 }
 
-// A problem's line in the PMML the page wrote names the actor or joint it concerns.
-function elementAtLine(pmml, line) {
-  const lines = pmml.split('\n').slice(0, line);
-  for (let k = lines.length - 1; k >= 0; k--) {
-    const open = lines[k].match(/<(Actor|Joint)>/);
-    if (open) {
-      const id = pmml.split('\n').slice(k).join('\n').match(/<ID>\s*([-+0-9]+)\s*<\/ID>/);
-      return id ? { kind: open[1], id: Number(id[1]) } : null;
-    }
-  }
-  return null;
-}
-
 function showProblems(problems) {
-  const list = $('problems');
-  list.replaceChildren();
-  editor.clearProblems();
-  const pmml = app.model.toPMML();
-  for (const p of problems) {
-    const item = document.createElement('li');
-    item.textContent = p.line ? `line ${p.line}: ${p.message}` : p.message;
-    const element = p.line ? elementAtLine(pmml, p.line) : null;
-    const where = problemLocation(p.message, element);
-    if (where) editor.markProblem(where);
-    item.addEventListener('click', () => {
-      if (element && element.kind === 'Joint') editor.select({ joints: [element.id] });
-      if (element && element.kind === 'Actor') editor.select({ actors: [element.id] });
-    });
-    list.append(item);
-  }
-}
-
-// foldkit's messages name points as (x, y); else the element's own place.
-function problemLocation(message, element) {
-  const point = message.match(/\(\s*([-+0-9.e]+)\s*,\s*([-+0-9.e]+)/i);
-  if (point) return { x: Number(point[1]), y: Number(point[2]) };
-  if (element && element.kind === 'Joint') {
-    const j = app.model.joints().find((x) => x.id === element.id);
-    if (j) return { x: (j.a.x + j.b.x) / 2, y: (j.a.y + j.b.y) / 2 };
-  }
-  return null;
+  showProblemList($('problems'), editor, app.model, problems);
 }
 
 // --- joints and the sequence -----------------------------------------------------------------
@@ -376,16 +296,6 @@ function setModel(model) {
   view.fit({ reset: true });
 }
 
-function parameters(text) {
-  const out = {};
-  for (const pair of text.split(/\s+/).filter(Boolean)) {
-    const [key, value] = pair.split('=');
-    if (value === undefined) continue;
-    out[key] = /^[-+]?[0-9.]+(e[-+]?[0-9]+)?$/i.test(value) ? Number(value) : value;
-  }
-  return out;
-}
-
 async function generateNow(kind) {
   if (!kind) return;
   const model = await task('generate', () => session.generate(kind, parameters($('generate-params').value), files()));
@@ -415,16 +325,6 @@ async function listOpenable() {
   select.replaceChildren(new Option('Open…', ''));
   const opens = (name) => opensPattern(app.formats, name) || opensSequence(app.formats, name);
   for (const e of listing.entries) if (e.type === 'file' && opens(e.name)) select.append(new Option(e.name, e.name));
-}
-
-// A path's last component: the file name a download takes.
-const baseName = (path) => path.split('/').pop();
-
-function download(name, text, type) {
-  const link = document.createElement('a');
-  link.href = typeof text === 'string' && text.startsWith('data:') ? text : URL.createObjectURL(new Blob([text], { type }));
-  link.download = name;
-  link.click();
 }
 
 // The simulated trajectory foldkit wrote (NAME-frames.fold: every frame, its time as

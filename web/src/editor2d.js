@@ -1,21 +1,17 @@
 // The 2D crease-pattern editor: draws a PatternModel on a <canvas> with the Canvas 2D API and
 // edits it with pointer, wheel and keyboard. Model y points up (as in PMML); the view flips it.
-// This module holds the class: its state, public API, view transform, edits and input plumbing;
-// selection and hit testing, the tools and the drawing are in editor_selection.js,
-// editor_tools.js and editor_draw.js, installed on Editor2D below.
+// This module holds the class: its state, public API, view transform and edits; the pointer,
+// wheel and keyboard handling is in editor_input.js (functions of the editor); selection and hit
+// testing, the tools and the drawing are in editor_selection.js, editor_tools.js and
+// editor_draw.js, installed on Editor2D below.
 import { PatternModel, History } from './model.js';
 import { TOOLS, HINTS, EditorTools } from './editor_tools.js';
 import { EditorSelection } from './editor_selection.js';
 import { EditorDraw } from './editor_draw.js';
 import { copyTriangles, deleteTriangles, group, paste, transformVertices, ungroup } from './model_edits.js';
+import { listen } from './editor_input.js';
 
 export { TOOLS } from './editor_tools.js';
-
-function isEditable(target) {
-  if (!target || !target.tagName) return false;
-  const tag = target.tagName.toLowerCase();
-  return tag === 'input' || tag === 'textarea' || tag === 'select' || target.isContentEditable;
-}
 
 /** The 2D editor on a canvas; see the module comment. */
 export class Editor2D {
@@ -49,7 +45,7 @@ export class Editor2D {
     this._raf = 0;
     this._size = { w: 0, h: 0, dpr: 1 };
     this.history.push(model.snapshot());
-    this._listen();
+    listen(this);
     if (!(canvas.tabIndex >= 0)) canvas.tabIndex = 0;
     canvas.style.touchAction = 'none';
     if (!canvas.style.outline) canvas.style.outline = 'none';
@@ -360,141 +356,6 @@ export class Editor2D {
     if (this._model.vertices.length !== nv || this._model.triangles.length !== nt)
       this._setSelection({ joints: [...this._sel.joints], vertices: moved.filter((i) => i >= 0) });
     this._edited();
-  }
-
-  // ------------------------------------------------------------------ input
-
-  _listen() {
-    this._listeners = [];
-    const on = (target, type, fn, opts) => {
-      target.addEventListener(type, fn, opts);
-      this._listeners.push([target, type, fn, opts]);
-    };
-    const c = this.canvas;
-    on(c, 'pointerdown', (e) => this._onDown(e));
-    on(c, 'pointermove', (e) => this._onMove(e));
-    on(c, 'pointerup', (e) => this._onUp(e));
-    on(c, 'pointercancel', () => this._cancel());
-    on(c, 'pointerleave', () => {
-      if (!this._action && this._hover) {
-        this._hover = null;
-        this._requestDraw();
-      }
-    });
-    on(c, 'wheel', (e) => this._onWheel(e), { passive: false });
-    on(c, 'dblclick', (e) => this._onDoubleClick(e));
-    on(c, 'contextmenu', (e) => e.preventDefault());
-    if (typeof window !== 'undefined') {
-      on(window, 'keydown', (e) => this._onKey(e));
-      on(window, 'keyup', (e) => {
-        if (e.key === ' ') this._space = false;
-      });
-      on(window, 'resize', () => this.resize());
-      on(window, 'blur', () => (this._space = false));
-    }
-    if (typeof ResizeObserver !== 'undefined') {
-      this._resizeObserver = new ResizeObserver(() => this.resize());
-      this._resizeObserver.observe(c);
-    }
-  }
-
-  _local(e) {
-    const r = this.canvas.getBoundingClientRect();
-    return { x: e.clientX - r.left - this.canvas.clientLeft, y: e.clientY - r.top - this.canvas.clientTop };
-  }
-
-  _onDown(e) {
-    if (this.canvas.focus) this.canvas.focus({ preventScroll: true });
-    const s = this._local(e);
-    try {
-      this.canvas.setPointerCapture(e.pointerId);
-    } catch {
-      // Synthetic events have no active pointer to capture.
-    }
-    if (e.button === 1 || e.button === 2 || (e.button === 0 && this._space)) {
-      e.preventDefault();
-      this._action = { kind: 'pan', sx: s.x, sy: s.y, ox: this.view.ox, oy: this.view.oy };
-      return;
-    }
-    if (e.button !== 0) return;
-    e.preventDefault();
-    const handler = this[`_down_${this.tool}`];
-    if (handler) handler.call(this, s, e);
-  }
-
-  _onMove(e) {
-    const s = this._local(e);
-    const a = this._action;
-    if (a && a.kind === 'pan') {
-      this.view.ox = a.ox + s.x - a.sx;
-      this.view.oy = a.oy + s.y - a.sy;
-      this._requestDraw();
-      return;
-    }
-    const handler = this[`_move_${this.tool}`];
-    if (a && handler) handler.call(this, s, e);
-    else this._hoverAt(s, e);
-  }
-
-  _onUp(e) {
-    const s = this._local(e);
-    const a = this._action;
-    try {
-      this.canvas.releasePointerCapture(e.pointerId);
-    } catch {
-      // Nothing was captured.
-    }
-    if (!a) return;
-    if (a.kind === 'pan') {
-      this._action = null;
-      return;
-    }
-    const handler = this[`_up_${this.tool}`];
-    if (handler) handler.call(this, s, e);
-  }
-
-  _onWheel(e) {
-    e.preventDefault();
-    const s = this._local(e);
-    const unit = e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? this._size.h : 1;
-    this._zoomAt(s.x, s.y, Math.exp(-e.deltaY * unit * 0.0015));
-  }
-
-  _onDoubleClick(e) {
-    const s = this._local(e);
-    if (this.tool === 'polygon') this._closePolygon();
-    else if (this.tool === 'select') {
-      const t = this._model.triangleAt(this._toModel(s.x, s.y));
-      if (t >= 0) this.select({ actors: [this._model.triangles[t].actor] });
-    }
-  }
-
-  _onKey(e) {
-    if (isEditable(e.target)) return;
-    const ctrl = e.ctrlKey || e.metaKey;
-    const key = e.key.length === 1 ? e.key.toLowerCase() : e.key;
-    const overCanvas = e.target === this.canvas || e.target === document.body || e.target === document.documentElement;
-    if (key === ' ' && overCanvas) {
-      this._space = true;
-      e.preventDefault();
-      return;
-    }
-    let handled = true;
-    if (ctrl && key === 'z') e.shiftKey ? this.redo() : this.undo();
-    else if (ctrl && key === 'y') this.redo();
-    else if (ctrl && key === 'c' && overCanvas) this.copySelection();
-    else if (ctrl && key === 'v' && overCanvas) this.paste();
-    else if (ctrl && key === 'a' && overCanvas) this.selectAll();
-    else if (key === 'Escape') {
-      if (this._action || this._points.length || this._picked.length) this._cancel();
-      else this._setSelection({});
-    } else if (key === 'Enter' && this.tool === 'polygon') this._closePolygon();
-    else if (key === 'Backspace' && this.tool === 'polygon' && this._points.length) {
-      this._points.pop();
-      this._requestDraw();
-    } else if ((key === 'Delete' || key === 'Backspace') && overCanvas && !this._action) this.deleteSelection();
-    else handled = false;
-    if (handled) e.preventDefault();
   }
 
   // Ends whatever the pointer was doing; previews of moved vertices are put back.
