@@ -17,7 +17,8 @@ using folding::Frame2;
 
 void bind_fold(py::module_& m) {
   using R = folding::ProjectedFoldingResult;
-  py::class_<R>(m, "FoldResult", "A projected-velocity fold: the closed states from flat, and how it stopped.")
+  def_seconds(py::class_<R>(m, "FoldResult", "A projected-velocity fold: the closed states from flat, and how it stopped."),
+              "Wall-clock seconds spent folding (not the replay).")
       .def_readonly("status", &R::status, "'success' when the target fraction was reached; else why it stopped.")
       .def_property_readonly("reached", [](const R& r) { return r.status.ok(); }, "Whether the target fraction was reached.")
       .def_property_readonly(
@@ -40,14 +41,6 @@ void bind_fold(py::module_& m) {
           "min_rank_gap", [](const R& r) { return r.rank_decisions ? py::object(py::float_(r.min_rank_gap)) : py::object(py::none()); },
           "Smallest singular-value gap over the rank decisions, or None when none was made.")
       .def_readonly("min_pivot_ratio", &R::min_pivot_ratio, "Smallest pivot ratio the rank screen saw.")
-      .def_readonly("seconds", &R::seconds, "Wall-clock seconds spent folding (not the replay).")
-      .def_property_readonly(
-          "time",
-          [](const R& r) {
-            deprecated("FoldResult.time is deprecated: use seconds");
-            return r.seconds;
-          },
-          "Deprecated name of `seconds`.")
       .def_readonly("sequence", &R::sequence, "The CMML of the states (FoldSequence).")
       .def_readonly("replay", &R::replay,
                     "The simulator's SimulationReport of the sequence, or None. `status` stays 'success' when the target "

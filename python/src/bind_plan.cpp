@@ -20,19 +20,12 @@ std::string quoted_spaces(std::size_t from) {
 }
 
 void bind_result(py::module_& m) {
-  py::class_<PlanResult>(m, "PlanResult", "A plan: the waypoints from start to goal, their CMML, and the simulator's replay.")
+  def_seconds(py::class_<PlanResult>(m, "PlanResult", "A plan: the waypoints from start to goal, their CMML, and the simulator's replay."),
+              "Wall-clock seconds the search ran (the fallback included).")
       .def_readonly("status", &PlanResult::status, "'success' when solved (and the replay is valid).")
       .def_property_readonly("solved", [](const PlanResult& r) { return r.status.ok(); }, "Whether a valid plan was found.")
       .def_readonly("planner", &PlanResult::planner, "The planner's name.")
       .def_readonly("space", &PlanResult::space, ("The space searched: " + quoted_spaces(1) + ".").c_str())
-      .def_readonly("seconds", &PlanResult::seconds, "Wall-clock seconds the search ran (the fallback included).")
-      .def_property_readonly(
-          "time",
-          [](const PlanResult& r) {
-            deprecated("PlanResult.time is deprecated: use seconds");
-            return r.seconds;
-          },
-          "Deprecated name of `seconds`.")
       .def_readonly("fallback", &PlanResult::fallback,
                     "Whether the path came from a fallback: Carpenter's rule on the sphere (single vertex) or via flat.")
       .def_readonly("via_flat", &PlanResult::via_flat,

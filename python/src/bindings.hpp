@@ -58,6 +58,22 @@ void deprecated(const std::string& what);
 /// caller gave the old one (`old` not None): then that, with a DeprecationWarning.
 double renamed(double value, const py::object& old, const char* old_name, const char* new_name);
 
+/// The result class `cls`'s `seconds` (wall-clock seconds it ran), and `time`, its name before
+/// issue 37, which still reads it with a DeprecationWarning.
+template <class Result>
+py::class_<Result> def_seconds(py::class_<Result> cls, const char* doc) {
+  const std::string warning = std::string(py::str(cls.attr("__name__"))) + ".time is deprecated: use seconds";
+  cls.def_readonly("seconds", &Result::seconds, doc);
+  cls.def_property_readonly(
+      "time",
+      [warning](const Result& r) {
+        deprecated(warning);
+        return r.seconds;
+      },
+      "Deprecated name of `seconds`.");
+  return cls;
+}
+
 /// The file a FoldSequence object was read from (its `source`), or "<sequence>".
 std::string source_of(const py::object& sequence);
 
