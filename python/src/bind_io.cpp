@@ -57,7 +57,7 @@ FoldFile fold_file(io::FoldImport f, const std::string& name) {
   return {std::move(f.pattern), state, states_array(f.frames, joints), std::move(warnings)};
 }
 
-void bind_sequence(py::module_& m) {
+void bind_fold_command(py::module_& m) {
   py::class_<geometry::FoldCommand>(m, "FoldCommand", "One joint's fold in an event: towards `angle` at `speed`.")
       .def(py::init([](int joint_id, double angle, double speed, const py::object& velocity) {
              speed = renamed(speed, velocity, "velocity", "speed");
@@ -83,6 +83,10 @@ void bind_sequence(py::module_& m) {
         return "FoldCommand(joint_id=" + std::to_string(c.joint_id) + ", angle=" + py::repr(py::float_(c.angle)).cast<std::string>() +
                ", speed=" + py::repr(py::float_(c.speed)).cast<std::string>() + ")";
       });
+}
+
+void bind_sequence(py::module_& m) {
+  bind_fold_command(m);
   py::class_<geometry::FoldEvent>(m, "FoldEvent", "A CMML event: folds that run at the same time.")
       .def(py::init([](int number, std::vector<geometry::FoldCommand> folds) { return geometry::FoldEvent{number, std::move(folds)}; }),
            py::arg("number"), py::arg("folds"), "An event with its EventNumber and its folds.")
