@@ -65,10 +65,6 @@ void check_ends(const PlanSetup& setup, const statespaces::AngleBounds& bounds) 
   if (!setup.validity->valid(setup.goal)) throw PlanInputError(PlanInputError::End::Goal, "plan: the goal state is not valid (facets cross)");
 }
 
-}  // namespace
-
-namespace {
-
 // The space of the options' kind (SpaceKind::Auto: single-vertex for one interior vertex and no
 // hole, else driving), or the joint box for a pattern without loops.
 std::shared_ptr<PlanSpace> space_of(const PlanSetup& setup, const PlanOptions& options) {
