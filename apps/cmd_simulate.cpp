@@ -22,7 +22,7 @@ Command add_simulate(CLI::App& root) {
   CLI::App* app = root.add_subcommand("simulate", "Replay a CMML fold sequence: closure error and self-collision at every step");
   add_pattern(app, opt->pattern);
   reads(app->add_option("sequence", opt->sequence, "Fold sequence (.cmml)"))->required();
-  app->add_option("--model", opt->model, "Actuation: motor (CMML velocities), spring (PMML constants), sync (joints arrive together)")
+  app->add_option("--model", opt->model, "Actuation: motor (CMML speeds), spring (PMML constants), sync (joints arrive together)")
       ->check(CLI::IsMember({"motor", "spring", "sync"}))
       ->capture_default_str();
   positive(app->add_option("--time-step", opt->sim.time_step, "Seconds per step"));

@@ -118,7 +118,8 @@ void add_args(const CLI::App& app, VerbSpec& spec) {
     const ArgKind kind = kind_of(*o, name);
     const auto same = std::find_if(spec.args.begin(), spec.args.end(), [&](const ArgSpec& a) { return a.name == name; });
     if (same == spec.args.end()) {
-      spec.args.push_back({name, kind, positional, o->get_required(), {}});
+      const std::vector<std::string> lnames = positional ? std::vector<std::string>{} : o->get_lnames();
+      spec.args.push_back({name, kind, positional, o->get_required(), {}, {lnames.begin() + (lnames.empty() ? 0 : 1), lnames.end()}});
     } else if (same->kind != kind) {
       // Two generators with one option name: a number takes integers too.
       if (!((same->kind == K::Number && kind == K::Integer) || (same->kind == K::Integer && kind == K::Number)))
@@ -135,7 +136,7 @@ VerbSpec served_spec(const CLI::App& app) {
   VerbSpec spec{app.get_name(), {}, false};
   const auto choices = app.get_subcommands([](const CLI::App*) { return true; });
   if (!choices.empty()) {
-    ArgSpec kind{"kind", K::Text, true, true, {}};
+    ArgSpec kind{"kind", K::Text, true, true, {}, {}};
     for (const CLI::App* c : choices) kind.choices.push_back(c->get_name());
     spec.args.push_back(kind);
   }
@@ -166,12 +167,16 @@ const VerbSpec* find_served_verb(const std::string& verb) {
 std::vector<std::string> command_line(const VerbSpec& spec, const nlohmann::json& request, const RootedPaths& paths,
                                       const WorkLimits& limits) {
   if (!request.is_object()) throw UsageError("the request body must be a JSON object of the verb's arguments");
+  nlohmann::json r = nlohmann::json::object();
   for (const auto& [key, value] : request.items()) {
-    bool known = false;
-    for (const auto& a : spec.args) known = known || a.name == key;
-    if (!known) throw UsageError("'" + key + "': " + spec.verb + " takes no such argument (see docs/SERVE.md)");
+    // An option's other long names (a deprecated one, such as project's velocity) name it too.
+    const auto arg = std::find_if(spec.args.begin(), spec.args.end(), [&](const ArgSpec& a) {
+      return a.name == key || std::find(a.aliases.begin(), a.aliases.end(), key) != a.aliases.end();
+    });
+    if (arg == spec.args.end()) throw UsageError("'" + key + "': " + spec.verb + " takes no such argument (see docs/SERVE.md)");
+    if (r.contains(arg->name)) throw UsageError("'" + key + "': " + spec.verb + " takes '" + arg->name + "' once (one name of it)");
+    r[arg->name] = value;
   }
-  nlohmann::json r = request;
   if (spec.verb == "plan") {  // the one verb whose work a request sets directly
     const double time = r.contains("time") && r["time"].is_number() ? r["time"].get<double>() : 5.0;
     if (time > limits.max_plan_time) r["time"] = limits.max_plan_time;

@@ -31,6 +31,7 @@ struct ArgSpec {
   bool positional = false;  // passed in order, before the options
   bool required = false;
   std::vector<std::string> choices;  // when not empty: the only values a Text argument may take
+  std::vector<std::string> aliases;  // the option's other long names (deprecated ones), accepted too
 };
 
 struct VerbSpec {

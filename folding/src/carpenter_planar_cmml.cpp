@@ -11,7 +11,7 @@ namespace foldkit::folding {
 
 geometry::FoldSequence turning_angle_sequence(const std::vector<Frame2>& frames, bool closed, std::string title) {
   // Within an event every joint arrives together, the fastest turning at 1 rad/s; CMML needs a
-  // positive velocity even for a joint that does not move.
+  // positive speed even for a joint that does not move.
   constexpr double kFastest = 1.0, kSlowest = 1e-6;
   geometry::FoldSequence sequence;
   sequence.title = std::move(title);

@@ -283,7 +283,7 @@ void bind_hamiltonian(py::module_& m) {
   m.def(
       "fold_cube_chain",
       [](const geometry::CreasePattern& sheet, int cubes, double speed, const py::object& velocity) {
-        speed = renamed(speed, velocity, "velocity", "speed");
+        speed = renamed(speed, 1.0, velocity, "velocity", "speed");
         require(cubes >= 1, "cubes", "at least 1", cubes);
         require_positive(speed, "speed");
         return folding::fold_cube_chain(sheet, cubes, speed);

@@ -60,7 +60,7 @@ FoldFile fold_file(io::FoldImport f, const std::string& name) {
 void bind_fold_command(py::module_& m) {
   py::class_<geometry::FoldCommand>(m, "FoldCommand", "One joint's fold in an event: towards `angle` at `speed`.")
       .def(py::init([](int joint_id, double angle, double speed, const py::object& velocity) {
-             speed = renamed(speed, velocity, "velocity", "speed");
+             speed = renamed(speed, 1.0, velocity, "velocity", "speed");
              require(std::isfinite(angle), "angle", "finite", angle);
              require_positive(speed, "speed");
              return geometry::FoldCommand{joint_id, angle, speed, 0};
@@ -126,7 +126,7 @@ void bind_sequence(py::module_& m) {
   m.def(
       "sequence_to",
       [](const geometry::CreasePattern& p, const Eigen::VectorXd& state, double speed, const std::string& title, const py::object& velocity) {
-        speed = renamed(speed, velocity, "velocity", "speed");
+        speed = renamed(speed, M_PI / 6, velocity, "velocity", "speed");
         require_positive(speed, "speed");
         return geometry::sequence_to(p, to_state(p, state, "state"), speed, title);
       },
@@ -136,7 +136,7 @@ void bind_sequence(py::module_& m) {
       "path_sequence",
       [](const geometry::CreasePattern& p, const py::object& waypoints, double max_speed, const std::string& title,
          const py::object& max_velocity) {
-        max_speed = renamed(max_speed, max_velocity, "max_velocity", "max_speed");
+        max_speed = renamed(max_speed, 1.0, max_velocity, "max_velocity", "max_speed");
         require_positive(max_speed, "max_speed");
         return geometry::path_sequence(p, states_from_array(p, waypoints, "waypoints"), max_speed, title);
       },

@@ -53,11 +53,26 @@ void bind_plan(py::module_& m) {
          const std::string& planner, double time, unsigned seed, bool collisions, bool use_assignment, bool simplify,
          double search_margin, double waypoint_step, double speed, bool replay, const std::map<std::string, std::string>& params,
          bool fallback, const py::object& velocity) {
-        speed = renamed(speed, velocity, "velocity", "speed");  // `velocity` is fold()'s desired velocity
+        speed = renamed(speed, planners::PlanOptions{}.speed, velocity, "velocity", "speed");  // `velocity`: fold()'s desired velocity
         require_positive(time, "time");
         require_positive(waypoint_step, "waypoint_step");
         require_positive(speed, "speed");
         require(std::isfinite(search_margin), "search_margin", "finite (negative: automatic)", search_margin);
+        // The goal first: its errors come before the start's, as they did.
+        geometry::FoldState goal_state;
+        if (py::isinstance<geometry::FoldSequence>(goal)) {  // its end state, as the CLI's --goal CMML
+          const auto seq = goal.cast<geometry::FoldSequence>();
+          require_valid(p, seq, source_of(goal));
+          goal_state = geometry::end_state(p, seq);
+        } else {
+          Eigen::VectorXd angles;
+          try {
+            angles = goal.cast<Eigen::VectorXd>();
+          } catch (const py::cast_error&) {
+            throw py::type_error("goal must be an array of fold angles (radians) or a FoldSequence");
+          }
+          goal_state = to_state(p, angles, "goal");
+        }
         planners::PlanOptions options;
         if (!start.is_none()) {
           if (py::isinstance<geometry::FoldSequence>(start)) {
@@ -67,14 +82,6 @@ void bind_plan(py::module_& m) {
           } else {
             options.start = state_or_flat(p, start, "start");
           }
-        }
-        geometry::FoldState goal_state;
-        if (py::isinstance<geometry::FoldSequence>(goal)) {  // its end state, as the CLI's --goal CMML
-          const auto seq = goal.cast<geometry::FoldSequence>();
-          require_valid(p, seq, source_of(goal));
-          goal_state = geometry::end_state(p, seq);
-        } else {
-          goal_state = to_state(p, goal.cast<Eigen::VectorXd>(), "goal");
         }
         options.space = planners::parse_space(space);
         options.planner = planners::canonical_planner(planner);

@@ -124,7 +124,7 @@ void bind_simulate(py::module_& m) {
       py::arg("closure_tolerance") = simulation::SimulationOptions{}.closure_tolerance,
       py::arg("collisions") = simulation::SimulationOptions{}.collisions, py::arg("record_frames") = true, py::arg("poses") = false,
       py::arg("max_event_time") = simulation::SimulationOptions{}.max_event_time,
-      "Replays `sequence` on `pattern` as `foldkit simulate`: model 'motor' (CMML velocities), 'spring' or 'sync'. "
+      "Replays `sequence` on `pattern` as `foldkit simulate`: model 'motor' (CMML speeds), 'spring' or 'sync'. "
       "Returns a SimulationReport; with poses=True its `poses` holds each actor's 4×4 pose at every frame, shape "
       "(frames, actors, 4, 4). A sequence naming joints the pattern lacks raises ParseError at its line.");
 }

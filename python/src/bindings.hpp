@@ -55,8 +55,9 @@ void require_positive(double x, const char* name);
 void deprecated(const std::string& what);
 
 /// A keyword renamed by issue 37 (one word, one meaning): `value`, the new keyword's, unless the
-/// caller gave the old one (`old` not None): then that, with a DeprecationWarning.
-double renamed(double value, const py::object& old, const char* old_name, const char* new_name);
+/// caller gave the old one (`old` not None): then that, with a DeprecationWarning. TypeError when
+/// both were given (the new one differing from its default `default_value`) or `old` is no number.
+double renamed(double value, double default_value, const py::object& old, const char* old_name, const char* new_name);
 
 /// The result class `cls`'s `seconds` (wall-clock seconds it ran), and `time`, its name before
 /// issue 37, which still reads it with a DeprecationWarning.

@@ -89,12 +89,16 @@ void require(bool ok, const char* name, const char* what, double value) {
 void require_positive(double x, const char* name) { require(std::isfinite(x) && x > 0.0, name, "positive and finite", x); }
 
 void deprecated(const std::string& what) {
-  if (PyErr_WarnEx(PyExc_DeprecationWarning, what.c_str(), 2) != 0) throw py::error_already_set();
+  // Level 1: called from C++ bound code, the frame that warns is the caller's Python line.
+  if (PyErr_WarnEx(PyExc_DeprecationWarning, what.c_str(), 1) != 0) throw py::error_already_set();
 }
 
-double renamed(double value, const py::object& old, const char* old_name, const char* new_name) {
+double renamed(double value, double default_value, const py::object& old, const char* old_name, const char* new_name) {
   if (old.is_none()) return value;
+  if (value != default_value) throw py::type_error(std::string("give ") + new_name + "= or its old name " + old_name + "=, not both");
   deprecated(std::string(old_name) + "= is deprecated: use " + new_name + "=");
+  if (!py::isinstance<py::float_>(old) && !py::isinstance<py::int_>(old))
+    throw py::type_error(std::string(old_name) + " must be a number");
   return old.cast<double>();
 }
 

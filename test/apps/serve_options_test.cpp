@@ -51,4 +51,29 @@ TEST(ServeOptions, OptionsComeFromTheCliDeclarations) {
   EXPECT_EQ(s.post("fold", {{"pattern", "m.svg"}, {"json", true}, {"output", "f.cmml"}})->status, 400) << "--json is always given";
 }
 
+// An option's deprecated long name (project --velocity, now --speed) is served too, for one
+// release: the same file as under its new name; both names at once are refused.
+TEST(ServeOptions, DeprecatedOptionNamesAreServedToo) {
+  Server s("aliases");
+  ASSERT_GT(s.port(), 0) << s.log();
+  ASSERT_EQ(foldkit({"generate", "miura", "--rows", "2", "--cols", "2", "-o", s.path("m.pmml")}).exit, 0);
+  ASSERT_EQ(foldkit({"fold", s.path("m.pmml"), "--fraction", "0.3", "-o", s.path("f.cmml")}).exit, 0);
+  const json base = {{"pattern", "m.pmml"}, {"state", "f.cmml"}};
+  json by_speed = base, by_velocity = base, both = base;
+  by_speed["speed"] = 45;
+  by_speed["output"] = "a.cmml";
+  by_velocity["velocity"] = 45;
+  by_velocity["output"] = "b.cmml";
+  both["speed"] = 45;
+  both["velocity"] = 45;
+  both["output"] = "c.cmml";
+  const auto a = s.post("project", by_speed), b = s.post("project", by_velocity), c = s.post("project", both);
+  ASSERT_TRUE(a && b && c) << s.log();
+  EXPECT_EQ(a->status, 200) << a->body;
+  EXPECT_EQ(b->status, 200) << b->body;
+  EXPECT_EQ(c->status, 400) << c->body;
+  EXPECT_EQ(foldkit::test::slurp(s.path("a.cmml")), foldkit::test::slurp(s.path("b.cmml")));
+  EXPECT_NE(foldkit::test::slurp(s.path("a.cmml")).find("<Velocity>45</Velocity>"), std::string::npos);
+}
+
 }  // namespace

@@ -136,6 +136,8 @@ def test_plan_is_seeded_and_starts_anywhere():
     assert old.sequence.events[-1].folds[0].speed != a.sequence.events[-1].folds[0].speed
     with pytest.warns(DeprecationWarning, match="seconds"):
         assert old.time == old.seconds
+    with pytest.raises(TypeError, match="goal must be"):
+        foldkit.plan(p, "not a state")
     # From a state part-way, reached from flat along the first plan's own closed waypoints.
     half = a.waypoints[: len(a.waypoints) // 2 + 1]
     c = foldkit.plan(p, goal, start=foldkit.path_sequence(p, half), seed=7, time=5)

@@ -178,6 +178,8 @@ def test_speed_keywords_renamed_by_issue_37_still_work_with_a_warning():
     assert command.speed == 2.0 and "speed=2.0" in repr(command)
     with pytest.warns(DeprecationWarning, match="speed"):
         assert command.velocity == 2.0
+    with pytest.raises(TypeError, match="not both"):
+        foldkit.FoldCommand(1, 0.5, speed=3.0, velocity=2.0)
     result = foldkit.fold(p, fraction=0.3, collisions=False, replay=False)
     with pytest.warns(DeprecationWarning, match="seconds"):
         assert result.time == result.seconds > 0

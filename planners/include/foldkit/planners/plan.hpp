@@ -119,7 +119,7 @@ struct PlanResult {
   /// the planner.
   bool fallback = false;
   /// Whether the path goes start → flat → goal as two plans from flat (PlanOptions::fallback in
-  /// the driving space); `time` counts the direct attempt and both plans.
+  /// the driving space); `seconds` counts the direct attempt and both plans.
   bool via_flat = false;
   double path_length = 0.0;     ///< Σ Euclidean joint-angle distance between waypoints, radians
   double max_closure_error = 0.0;  ///< largest loop error over the waypoints and the replay, radians
