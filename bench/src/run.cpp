@@ -189,8 +189,8 @@ class SceneRun {
       const SceneSpaces::InSpace& in = scenes_->for_entry(entry);
       objects_.push_back(entry_planner(entry, in.scene, in.setup, o_.params, o_.time));
       names_ += (names_.empty() ? "" : ",") + objects_.back()->getName();
-      if (std::find(space_names.begin(), space_names.end(), std::string(in.setup.plan_space->name())) == space_names.end())
-        space_names.push_back(std::string(in.setup.plan_space->name()));
+      const std::string name = in.setup.plan_space->name();
+      if (std::find(space_names.begin(), space_names.end(), name) == space_names.end()) space_names.push_back(name);
     }
     std::string spaces;
     for (const auto& n : space_names) spaces += (spaces.empty() ? "" : ",") + n;

@@ -22,16 +22,17 @@ namespace {
 struct SpaceEntry {
   SpaceKind kind;
   const char* name;
-  std::shared_ptr<PlanSpace> (*make)();  // null for Auto, which plan() resolves
+  std::shared_ptr<PlanSpace> (*make)(const char* name);  // null for Auto, which plan() resolves
 };
 const SpaceEntry kSpaces[] = {
     {SpaceKind::Auto, "auto", nullptr},
     {SpaceKind::SingleVertex, "single-vertex", &spaces::single_vertex_plan_space},
     {SpaceKind::Driving, "driving", &spaces::driving_plan_space},
-    {SpaceKind::Projected, "projected", [] { return spaces::constrained_plan_space(statespaces::ConstrainedKind::Projected); }},
-    {SpaceKind::Atlas, "atlas", [] { return spaces::constrained_plan_space(statespaces::ConstrainedKind::Atlas); }},
+    {SpaceKind::Projected, "projected",
+     [](const char* name) { return spaces::constrained_plan_space(name, statespaces::ConstrainedKind::Projected); }},
+    {SpaceKind::Atlas, "atlas", [](const char* name) { return spaces::constrained_plan_space(name, statespaces::ConstrainedKind::Atlas); }},
     {SpaceKind::TangentBundle, "tangent-bundle",
-     [] { return spaces::constrained_plan_space(statespaces::ConstrainedKind::TangentBundle); }},
+     [](const char* name) { return spaces::constrained_plan_space(name, statespaces::ConstrainedKind::TangentBundle); }},
 };
 
 }  // namespace
@@ -58,7 +59,7 @@ const char* to_string(SpaceKind kind) {
 
 std::shared_ptr<PlanSpace> make_plan_space(SpaceKind kind) {
   for (const SpaceEntry& e : kSpaces)
-    if (e.kind == kind && e.make) return e.make();
+    if (e.kind == kind && e.make) return e.make(e.name);
   throw std::invalid_argument(std::string("make_plan_space: no space of kind '") + to_string(kind) + "'");
 }
 

@@ -245,11 +245,8 @@ void bind_cmml(py::module_& m) {
       "write_cmml", [](const std::string& path, const FoldSequence& s) { io::write_file_atomic(path, io::write_cmml(s)); },
       py::arg("path"), py::arg("sequence"), "Writes the sequence as CMML (atomically).");
   m.def(
-      "read_state", [](const geometry::CreasePattern& p, const std::string& path) {
-        const FoldSequence s = io::read_cmml(path);
-        require_valid(p, s, path);
-        return geometry::end_state(p, s).angles;
-      },
+      "read_state",
+      [](const geometry::CreasePattern& p, const std::string& path) { return checked_end_state(p, io::read_cmml(path), path).angles; },
       py::arg("pattern"), py::arg("path"),
       "The state at the end of a CMML on `pattern` (the CLI's --state FILE); ParseError at the line of a joint the pattern lacks.");
 }

@@ -61,9 +61,7 @@ void bind_plan(py::module_& m) {
         // The goal first: its errors come before the start's, as they did.
         geometry::FoldState goal_state;
         if (py::isinstance<geometry::FoldSequence>(goal)) {  // its end state, as the CLI's --goal CMML
-          const auto seq = goal.cast<geometry::FoldSequence>();
-          require_valid(p, seq, source_of(goal));
-          goal_state = geometry::end_state(p, seq);
+          goal_state = checked_end_state(p, goal.cast<geometry::FoldSequence>(), source_of(goal));
         } else {
           Eigen::VectorXd angles;
           try {
@@ -77,8 +75,7 @@ void bind_plan(py::module_& m) {
         if (!start.is_none()) {
           if (py::isinstance<geometry::FoldSequence>(start)) {
             options.start_sequence = start.cast<geometry::FoldSequence>();
-            require_valid(p, options.start_sequence, source_of(start));
-            options.start = geometry::end_state(p, options.start_sequence);
+            options.start = checked_end_state(p, options.start_sequence, source_of(start));
           } else {
             options.start = state_or_flat(p, start, "start");
           }

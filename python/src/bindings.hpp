@@ -82,6 +82,11 @@ std::string source_of(const py::object& sequence);
 /// (a joint the pattern lacks, a joint twice in one event), as the CLI does for a CMML.
 void require_valid(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence, const std::string& source);
 
+/// The end state of `sequence` after require_valid(): what the CLI takes from a --goal, --start or
+/// --state CMML.
+geometry::FoldState checked_end_state(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence,
+                                      const std::string& source);
+
 /// A sparse matrix as COO arrays (rows, cols, values, shape); python/foldkit/__init__.py makes a
 /// scipy.sparse matrix of them.
 py::tuple sparse_coo(const Eigen::SparseMatrix<double>& m);

@@ -106,6 +106,12 @@ std::string source_of(const py::object& sequence) {
   return py::hasattr(sequence, "source") ? py::str(sequence.attr("source")).cast<std::string>() : std::string("<sequence>");
 }
 
+geometry::FoldState checked_end_state(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence,
+                                      const std::string& source) {
+  require_valid(pattern, sequence, source);
+  return geometry::end_state(pattern, sequence);
+}
+
 void require_valid(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence, const std::string& source) {
   for (const auto& d : geometry::check_sequence(pattern, sequence))
     if (d.severity == geometry::Severity::Error) throw io::ParseError(source, d.line, d.message);

@@ -15,13 +15,7 @@ using geometry::FoldState;
 
 class ConstrainedPlanSpace : public PlanSpace {
  public:
-  explicit ConstrainedPlanSpace(statespaces::ConstrainedKind kind) : kind_(kind) {}
-
-  const char* name() const override {
-    return kind_ == statespaces::ConstrainedKind::Atlas           ? "atlas"
-           : kind_ == statespaces::ConstrainedKind::TangentBundle ? "tangent-bundle"
-                                                                   : "projected";
-  }
+  ConstrainedPlanSpace(const char* name, statespaces::ConstrainedKind kind) : PlanSpace(name), kind_(kind) {}
 
   // The constraint's codimension: at a singular start (flat) the Jacobian loses rank, charts
   // cannot be anchored and projections may flip branches, so the plan starts from a nearby
@@ -64,8 +58,8 @@ class ConstrainedPlanSpace : public PlanSpace {
 
 }  // namespace
 
-std::shared_ptr<PlanSpace> constrained_plan_space(statespaces::ConstrainedKind kind) {
-  return std::make_shared<ConstrainedPlanSpace>(kind);
+std::shared_ptr<PlanSpace> constrained_plan_space(const char* name, statespaces::ConstrainedKind kind) {
+  return std::make_shared<ConstrainedPlanSpace>(name, kind);
 }
 
 }  // namespace foldkit::planners::spaces

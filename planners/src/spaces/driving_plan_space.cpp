@@ -51,7 +51,7 @@ std::string other_branch(const geometry::ClosureSystem& system, const geometry::
 
 class DrivingPlanSpace : public PlanSpace {
  public:
-  const char* name() const override { return "driving"; }
+  using PlanSpace::PlanSpace;
 
   // The larger of the ranks at start and goal: a start below it (flat) is left first.
   Eigen::Index lead_in_rank(const PlanSetup& setup, const PlanOptions&, const statespaces::AngleBounds&) override {
@@ -133,6 +133,6 @@ class DrivingPlanSpace : public PlanSpace {
 
 }  // namespace
 
-std::shared_ptr<PlanSpace> driving_plan_space() { return std::make_shared<DrivingPlanSpace>(); }
+std::shared_ptr<PlanSpace> driving_plan_space(const char* name) { return std::make_shared<DrivingPlanSpace>(name); }
 
 }  // namespace foldkit::planners::spaces

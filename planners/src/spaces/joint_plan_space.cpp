@@ -14,7 +14,7 @@ using geometry::FoldState;
 
 class JointPlanSpace : public PlanSpace {
  public:
-  const char* name() const override { return "joint"; }
+  using PlanSpace::PlanSpace;
 
   Eigen::Index lead_in_rank(const PlanSetup&, const PlanOptions&, const statespaces::AngleBounds&) override { return 0; }
 
@@ -44,6 +44,6 @@ class JointPlanSpace : public PlanSpace {
 
 }  // namespace
 
-std::shared_ptr<PlanSpace> make_joint_plan_space() { return std::make_shared<JointPlanSpace>(); }
+std::shared_ptr<PlanSpace> make_joint_plan_space() { return std::make_shared<JointPlanSpace>("joint"); }
 
 }  // namespace foldkit::planners

@@ -19,7 +19,7 @@ using geometry::FoldState;
 
 class SingleVertexPlanSpace : public PlanSpace {
  public:
-  const char* name() const override { return "single-vertex"; }
+  using PlanSpace::PlanSpace;
 
   // The closed form cannot hold some singular states (a flat vertex whose passive axes line up):
   // such a start is left along a short closed segment to full rank (3) first.
@@ -62,6 +62,6 @@ class SingleVertexPlanSpace : public PlanSpace {
 
 }  // namespace
 
-std::shared_ptr<PlanSpace> single_vertex_plan_space() { return std::make_shared<SingleVertexPlanSpace>(); }
+std::shared_ptr<PlanSpace> single_vertex_plan_space(const char* name) { return std::make_shared<SingleVertexPlanSpace>(name); }
 
 }  // namespace foldkit::planners::spaces

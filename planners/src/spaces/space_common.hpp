@@ -29,8 +29,9 @@ using Motion = std::function<void(const ompl::base::State* a, const ompl::base::
 std::vector<geometry::FoldState> states_along(const PlanSetup& setup, const ompl::geometric::PathGeometric& path, double step,
                                               const Motion& motion);
 
-std::shared_ptr<PlanSpace> single_vertex_plan_space();
-std::shared_ptr<PlanSpace> driving_plan_space();
-std::shared_ptr<PlanSpace> constrained_plan_space(statespaces::ConstrainedKind kind);
+// Each takes its name from plan_space.cpp's table.
+std::shared_ptr<PlanSpace> single_vertex_plan_space(const char* name);
+std::shared_ptr<PlanSpace> driving_plan_space(const char* name);
+std::shared_ptr<PlanSpace> constrained_plan_space(const char* name, statespaces::ConstrainedKind kind);
 
 }  // namespace foldkit::planners::spaces

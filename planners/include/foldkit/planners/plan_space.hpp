@@ -34,11 +34,13 @@ enum class Fallback {
 /// building; const afterwards).
 class PlanSpace {
  public:
+  /// A space named `name` (the name make_plan_space()'s table gives its kind; a string literal).
+  explicit PlanSpace(const char* name) : name_(name) {}
   virtual ~PlanSpace() = default;
 
   /// The space's name in results and messages: "single-vertex", "driving", "projected", "atlas",
-  /// "tangent-bundle" or "joint" (the box of a pattern without loops).
-  virtual const char* name() const = 0;
+  /// "tangent-bundle" (to_string() of its kind) or "joint" (the box of a pattern without loops).
+  const char* name() const { return name_; }
 
   /// The rank of the closure Jacobian the planner's first state must have; a start below it is
   /// left along geometry::lead_in to that rank first. May build what it needs to tell (the
@@ -71,6 +73,9 @@ class PlanSpace {
 
   /// The way through flat that applies to this space (PlanOptions::fallback); None by default.
   virtual Fallback fallback() const;
+
+ private:
+  const char* name_;
 };
 
 /// A new, unbuilt space of `kind` (not SpaceKind::Auto): the one place that maps a kind to its
