@@ -1,7 +1,10 @@
 // Mobility (creases − rank of the closure Jacobian, `foldkit dof`) of Miura-ori sheets, side by
 // side on the same Jacobian (issue 20, item 3):
 //   BM_Mobility_Ours     — geometry::mobility: LeastNormSolver::decide_rank (dense SVD up to 400
-//                          columns, inverse subspace iteration on JᵀJ + εI above);
+//                          columns; above, SuiteSparse QR's count with its certificate, or inverse
+//                          subspace iteration on JᵀJ + εI near the threshold);
+//   BM_Mobility_InverseSubspace — decide_rank with SparseRankMethod::InverseSubspace, what `dof`
+//                          used above 400 creases before issue 35;
 //   BM_Mobility_SPQR     — SuiteSparse QR (Eigen's SPQRSupport), the rank-revealing sparse QR a
 //                          user would pick, with the same absolute tolerance;
 //   BM_Mobility_SparseQR — Eigen's SparseQR (COLAMD), what `foldkit dof` used before.
@@ -65,6 +68,7 @@ void BM_Mobility_Ours(benchmark::State& st) {
   }
   report(st, c, m.rank);
   st.counters["rank_gap"] = m.decision.gap();
+  st.counters["sparse_qr"] = m.method == "sparse-qr" ? 1 : 0;  // 0: dense SVD, or near the threshold
   if (c.ours.creases <= 400) {
     // Dense oracle: singular values of J above the same absolute tolerance.
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Eigen::MatrixXd(jacobian(c)));
@@ -72,6 +76,19 @@ void BM_Mobility_Ours(benchmark::State& st) {
     for (Eigen::Index i = 0; i < svd.singularValues().size(); ++i) dense += svd.singularValues()[i] > m.tolerance;
     st.counters["agrees"] = dense == m.rank ? 1 : 0;
   }
+}
+
+void BM_Mobility_InverseSubspace(benchmark::State& st) {
+  const Case c = make_case(st);
+  geo::RankDecision d;
+  for (auto _ : st) {
+    const Sparse J = jacobian(c);
+    geo::LeastNormSolver solver;
+    d = solver.decide_rank(J, geo::kMobilityTolerance, 400, 1.0, geo::SparseRankMethod::InverseSubspace);
+    benchmark::DoNotOptimize(d.rank);
+  }
+  report(st, c, d.rank);
+  st.counters["rank_gap"] = d.gap();
 }
 
 void BM_Mobility_SPQR(benchmark::State& st) {
@@ -115,6 +132,7 @@ void sizes(benchmark::internal::Benchmark* b, int largest) {
 }  // namespace
 
 BENCHMARK(BM_Mobility_Ours)->Apply([](auto* b) { sizes(b, 100); });
+BENCHMARK(BM_Mobility_InverseSubspace)->Apply([](auto* b) { sizes(b, 100); });
 BENCHMARK(BM_Mobility_SPQR)->Apply([](auto* b) { sizes(b, 100); });
 // SparseQR fills in: 8 s and 220 MB at 40 × 40 (issue 20), so it stops there.
 BENCHMARK(BM_Mobility_SparseQR)->Apply([](auto* b) { sizes(b, 40); });

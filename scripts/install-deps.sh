@@ -25,14 +25,14 @@ packages=(
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
   libtinyxml2-dev nlohmann-json3-dev libcli11-dev libcgal-dev
   libompl-dev libode-dev libfcl-dev libccd-dev
-  coinor-libclp-dev pkg-config libcpp-httplib-dev
+  coinor-libclp-dev pkg-config libcpp-httplib-dev libsuitesparse-dev
   "$@"
 )
 if [ "$demo" -eq 0 ]; then
   packages+=(
     libbenchmark-dev libgtest-dev
     doxygen
-    libsuitesparse-dev libceres-dev
+    libceres-dev
     python3-matplotlib
     pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest
     ompl-demos

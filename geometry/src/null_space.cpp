@@ -9,6 +9,8 @@
 #include <Eigen/QR>
 #include <Eigen/SVD>
 
+#include "sparse_qr_rank.hpp"
+
 namespace foldkit::geometry {
 
 bool LeastNormSolver::factor(const Eigen::SparseMatrix<double>& jacobian, double eps_floor) {
@@ -146,10 +148,26 @@ Eigen::VectorXd ascending_singular_values(const Eigen::MatrixXd& m) {
   return svd.singularValues().reverse();
 }
 
+// SuiteSparse QR's count when its bounds are clear of the tolerance by `margin` on both sides
+// (LeastNormSolver::decide_rank, "sparse-qr"); false leaves the decision to the subspace iteration.
+bool decide_by_qr(const Eigen::SparseMatrix<double>& jacobian, RankDecision& d) {
+  constexpr double margin = 10.0;
+  const detail::QrRank qr = detail::sparse_qr_rank(jacobian, d.tolerance / margin);
+  if (!qr.ok) return false;
+  const double kept = qr.rank > 0 ? qr.smallest_live - qr.dropped : std::numeric_limits<double>::infinity();
+  if (qr.dropped > d.tolerance / margin || kept < margin * d.tolerance) return false;
+  d.rank = qr.rank;
+  d.nullity = static_cast<int>(jacobian.cols()) - qr.rank;
+  d.largest_zero = d.nullity > 0 ? qr.dropped : 0.0;
+  d.smallest_kept = kept;
+  d.method = "sparse-qr";
+  return true;
+}
+
 }  // namespace
 
 RankDecision LeastNormSolver::decide_rank(const Eigen::SparseMatrix<double>& jacobian, double relative_tolerance,
-                                          Eigen::Index dense_limit, double scale_floor) {
+                                          Eigen::Index dense_limit, double scale_floor, SparseRankMethod sparse) {
   RankDecision d;
   const Eigen::Index n = jacobian.cols();
   if (jacobian.rows() == 0 || jacobian.nonZeros() == 0) {
@@ -168,14 +186,23 @@ RankDecision LeastNormSolver::decide_rank(const Eigen::SparseMatrix<double>& jac
     d.method = "dense-svd";
     return d;
   }
-  d.method = "inverse-subspace";
   d.sigma_max = largest_singular_value(jacobian);
   d.tolerance = relative_tolerance * std::max(d.sigma_max, scale_floor);
   if (d.sigma_max <= d.tolerance) {  // zero to rounding: nothing to iterate on
+    d.method = "inverse-subspace";
     d.nullity = static_cast<int>(n);
     d.largest_zero = d.sigma_max;
     return d;
   }
+  if (sparse == SparseRankMethod::QrCertified && decide_by_qr(jacobian, d)) return d;
+  decide_by_inverse_subspace(jacobian, scale_floor, d);
+  return d;
+}
+
+void LeastNormSolver::decide_by_inverse_subspace(const Eigen::SparseMatrix<double>& jacobian, double scale_floor,
+                                                 RankDecision& d) {
+  d.method = "inverse-subspace";
+  const Eigen::Index n = jacobian.cols();
   // ε relative to this J's own scale (floored at the caller's), not the solver's floor of 1: the
   // inverse iteration separates singular values only above √ε.
   if (!factor(jacobian, scale_floor * scale_floor)) throw std::runtime_error("decide_rank: factorisation failed");
@@ -215,7 +242,7 @@ RankDecision LeastNormSolver::decide_rank(const Eigen::SparseMatrix<double>& jac
       const Eigen::Index k = std::min<Eigen::Index>(d.nullity, s.size() - 1);
       const bool settled = std::abs(s[k] - previous[k]) <= 1e-3 * s[k] &&
                            (d.nullity == 0 || std::abs(s[d.nullity - 1] - previous[d.nullity - 1]) <= 1e-3 * d.tolerance + 1e-3 * s[d.nullity - 1]);
-      if (settled || it >= 60) return d;
+      if (settled || it >= 60) return;
     }
     previous = s;
   }

@@ -13,6 +13,7 @@
 namespace {
 
 using foldkit::geometry::LeastNormSolver;
+using foldkit::geometry::SparseRankMethod;
 using Sparse = Eigen::SparseMatrix<double>;
 
 // A random sparse m × n matrix (about 3 entries a row) whose rows r0 … m−1 repeat earlier rows
@@ -98,10 +99,21 @@ TEST(LeastNormSolver, AnalysesOncePerSparsityPattern) {
 
 namespace {
 
-// decide_rank against Eigen's JacobiSVD (the oracle: a different SVD algorithm), on both paths:
-// dense SVD (the default limit) and subspace iteration (limit 0). Random matrices of known rank
-// r0 (rows beyond r0 repeat earlier ones), wider than the dense limit would pass; the rank and the
-// singular values on both sides of the tolerance agree.
+// decide_rank against Eigen's JacobiSVD (the oracle: a different SVD algorithm), on every path:
+// dense SVD (the default limit), sparse QR and subspace iteration (limit 0). Random matrices of
+// known rank r0 (rows beyond r0 repeat earlier ones), wider than the dense limit would pass; the
+// rank and the singular values on both sides of the tolerance agree. The sparse QR's are bounds:
+// the dropped norm is at least σ_{r+1}, and the kept estimate (σ_min of R's live triangle, less
+// the dropped norm) at most σ_r to its 1e-2.
+struct Path {
+  Eigen::Index limit;
+  SparseRankMethod sparse;
+  const char* method;
+};
+const Path kPaths[] = {{1000, SparseRankMethod::QrCertified, "dense-svd"},
+                       {0, SparseRankMethod::QrCertified, "sparse-qr"},
+                       {0, SparseRankMethod::InverseSubspace, "inverse-subspace"}};
+
 TEST(LeastNormSolver, DecideRankMatchesJacobiSvd) {
   std::mt19937 rng(17);
   for (int trial = 0; trial < 20; ++trial) {
@@ -113,17 +125,57 @@ TEST(LeastNormSolver, DecideRankMatchesJacobiSvd) {
     int rank = 0;
     for (Eigen::Index i = 0; i < s.size(); ++i) rank += s[i] > tol;
     LeastNormSolver solver;
-    for (Eigen::Index limit : {Eigen::Index{1000}, Eigen::Index{0}}) {
-      const foldkit::geometry::RankDecision d = solver.decide_rank(j, 1e-8, limit);
-      EXPECT_EQ(d.method, limit ? "dense-svd" : "inverse-subspace");
+    for (const Path& path : kPaths) {
+      const foldkit::geometry::RankDecision d = solver.decide_rank(j, 1e-8, path.limit, 0.0, path.sparse);
+      EXPECT_EQ(d.method, path.method);
       EXPECT_EQ(d.rank, rank) << trial << " " << d.method;
       EXPECT_EQ(d.nullity, n - rank) << trial << " " << d.method;
-      EXPECT_NEAR(d.sigma_max, s[0], 1e-4 * s[0]);  // by power iteration on the sparse path
-      EXPECT_NEAR(d.smallest_kept, s[rank - 1], 1e-4 * s[rank - 1]) << trial << " " << d.method;
+      EXPECT_NEAR(d.sigma_max, s[0], 1e-4 * s[0]);  // by power iteration on the sparse paths
       EXPECT_LE(d.largest_zero, tol);
       EXPECT_GT(d.gap(), 1e4) << trial << " " << d.method;
+      if (d.method == std::string("sparse-qr")) {
+        EXPECT_LE(d.smallest_kept, 1.02 * s[rank - 1]) << trial;
+        EXPECT_GT(d.smallest_kept, 10.0 * tol) << trial;
+        if (rank < s.size()) EXPECT_GE(d.largest_zero + 1e-14 * s[0], s[rank]) << trial;
+      } else {
+        EXPECT_NEAR(d.smallest_kept, s[rank - 1], 1e-4 * s[rank - 1]) << trial << " " << d.method;
+      }
     }
   }
+}
+
+// A matrix the sparse QR misjudges: upper bidiagonal with 1 on the diagonal and −2 above it has
+// σ_min ≈ 2⁻ⁿ (its null vector grows geometrically) though no column is small, so Heath's column
+// threshold keeps every column. Its live triangle's σ_min is tiny, the certificate refuses the
+// count, and the subspace iteration finds the rank the dense SVD does.
+TEST(LeastNormSolver, DecideRankDoesNotTakeAMisjudgingQrAtItsWord) {
+  const int n = 60;
+  Eigen::MatrixXd b = Eigen::MatrixXd::Identity(n, n);
+  for (int i = 0; i + 1 < n; ++i) b(i, i + 1) = -2.0;
+  const Eigen::VectorXd s = Eigen::JacobiSVD<Eigen::MatrixXd>(b).singularValues();
+  int rank = 0;
+  for (Eigen::Index i = 0; i < s.size(); ++i) rank += s[i] > 1e-8 * s[0];
+  ASSERT_EQ(rank, n - 1);
+  LeastNormSolver solver;
+  const foldkit::geometry::RankDecision d = solver.decide_rank(Sparse(b.sparseView()), 1e-8, 0);
+  EXPECT_EQ(d.method, "inverse-subspace");
+  EXPECT_EQ(d.rank, rank);
+}
+
+// Near the tolerance the count is left to the singular values: a singular value 3× above the
+// tolerance is inside the QR's margin of 10, so the subspace iteration decides, and keeps it.
+TEST(LeastNormSolver, DecideRankNearTheThresholdUsesTheSingularValues) {
+  std::mt19937 rng(5);
+  const Eigen::MatrixXd j(random_jacobian(48, 60, 48, rng));
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(j, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  Eigen::VectorXd s = svd.singularValues();
+  s[s.size() - 1] = 3.0 * 1e-8 * s[0];
+  const Eigen::MatrixXd near = svd.matrixU() * s.asDiagonal() * svd.matrixV().transpose();
+  LeastNormSolver solver;
+  const foldkit::geometry::RankDecision d = solver.decide_rank(Sparse(near.sparseView(0.0)), 1e-8, 0);
+  EXPECT_EQ(d.method, "inverse-subspace");
+  EXPECT_EQ(d.rank, 48);
+  EXPECT_NEAR(d.smallest_kept, s[s.size() - 1], 1e-3 * s[s.size() - 1]);
 }
 
 // Relative by default: the same matrix scaled by 1e-9 keeps its rank. With a scale floor, a
@@ -132,10 +184,10 @@ TEST(LeastNormSolver, DecideRankScaleFloor) {
   std::mt19937 rng(3);
   const Sparse j = random_jacobian(24, 30, 18, rng);
   LeastNormSolver solver;
-  for (Eigen::Index limit : {Eigen::Index{1000}, Eigen::Index{0}}) {
-    EXPECT_EQ(solver.decide_rank(Sparse(1e-9 * j), 1e-8, limit).rank, 18) << limit;
-    EXPECT_EQ(solver.decide_rank(Sparse(1e-17 * j), 1e-8, limit, 1.0).rank, 0) << limit;
-    EXPECT_EQ(solver.decide_rank(Sparse(1e-17 * j), 1e-8, limit, 1.0).nullity, 30) << limit;
+  for (const Path& path : kPaths) {
+    EXPECT_EQ(solver.decide_rank(Sparse(1e-9 * j), 1e-8, path.limit, 0.0, path.sparse).rank, 18) << path.method;
+    EXPECT_EQ(solver.decide_rank(Sparse(1e-17 * j), 1e-8, path.limit, 1.0, path.sparse).rank, 0) << path.method;
+    EXPECT_EQ(solver.decide_rank(Sparse(1e-17 * j), 1e-8, path.limit, 1.0, path.sparse).nullity, 30) << path.method;
   }
 }
 

@@ -116,7 +116,7 @@ struct ProjectedFoldingResult {
   int rank_decisions = 0;            ///< rank-revealing decisions made (the pivots' screen asked for them)
   double rank_gap = 0.0;             ///< geometry::RankDecision::gap() of the last decision (rank, dof above)
   double min_rank_gap = std::numeric_limits<double>::infinity();  ///< smallest gap over the decisions
-  /// The last decision's method: "dense-svd", "inverse-subspace" or "none" (empty when no
+  /// The last decision's method: "dense-svd", "sparse-qr", "inverse-subspace" or "none" (empty when no
   /// decision was made).
   std::string rank_method;
   double seconds = 0.0;              ///< wall-clock seconds of the folding (not the replay)

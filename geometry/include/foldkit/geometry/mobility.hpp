@@ -14,7 +14,7 @@ struct Mobility {
   int rank = 0;            ///< numerical rank of the closure Jacobian
   int creases = 0;         ///< number of joints (columns of the Jacobian)
   double tolerance = 0.0;  ///< absolute: singular values at or below it count as zero
-  std::string method;      ///< "dense-svd", "inverse-subspace" (LeastNormSolver::decide_rank) or "none" (no loop)
+  std::string method;      ///< "dense-svd", "sparse-qr", "inverse-subspace" (LeastNormSolver::decide_rank) or "none" (no loop)
   RankDecision decision;   ///< the singular values behind the count, with their gap
 };
 
@@ -24,8 +24,9 @@ inline constexpr double kMobilityTolerance = 1e-8;
 /// The mobility of `system` at `state`. The rank is decided by singular values
 /// (LeastNormSolver::decide_rank): singular values above relative_tolerance · max(σ_max, 1)
 /// count (σ_max is floored at 1, the size of a closure Jacobian's entries, so that a Jacobian
-/// zero to rounding has rank 0); a dense SVD up to `dense_limit` creases, inverse subspace
-/// iteration on the sparse Jacobian above.
+/// zero to rounding has rank 0); a dense SVD up to `dense_limit` creases; above, SuiteSparse QR's
+/// count where its bounds are clear of the tolerance, else inverse subspace iteration on the
+/// sparse Jacobian.
 /// @param system              the closure equations of the pattern
 /// @param state               one angle per joint, radians
 /// @param relative_tolerance  relative threshold on the singular values
