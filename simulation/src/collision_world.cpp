@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <deque>
 #include <unordered_map>
-#include <unordered_set>
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -14,6 +13,7 @@
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/geometry/triangle_overlap.hpp"
 #include "facet_mesh.hpp"
+#include "grid_broad_phase.hpp"
 #include "triangle_crossing.hpp"
 
 namespace foldkit::simulation {
@@ -46,13 +46,21 @@ struct Facet {
   std::unique_ptr<FacetObject> object;
 };
 
-std::uint64_t key(int a, int b) { return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b); }
-
 enum Side : int { Below = -1, On = 0, Above = 1, Across = 2 };
 
 struct Memory {
   int side = On;      // last side seen other than On
   long sample = -1;   // check at which the pair was last seen
+};
+
+// What the world keeps about a pair the broad phase has kept. Found through the first actor's
+// short sorted list (CollisionWorld::Impl::pair), with the chains in one pool: the candidates come
+// sorted by first actor, so consecutive lookups touch neighbouring memory. Two hash maps (memory,
+// chains) held this before, and their cache misses were a sixth of a check at Miura 40×40.
+struct PairState {
+  Memory memory;
+  int chain_begin = -1;  // into chain_pool; -1 until searched
+  int chain_size = 0;
 };
 
 }  // namespace
@@ -62,9 +70,14 @@ struct CollisionWorld::Impl {
   CollisionOptions options;
   double tol = 0.0;
   std::vector<Facet> facets;
-  std::unordered_set<std::uint64_t> hinged;
+  std::vector<std::vector<int>> hinged;  // per actor: the actors it shares a crease with, sorted
+  std::size_t hinged_pairs = 0;
   fcl::DynamicAABBTreeCollisionManagerd manager;
-  std::unordered_map<std::uint64_t, Memory> memory;
+  detail::GridBroadPhase grid;
+  std::vector<Eigen::Vector3d> box_lo, box_hi;  // per facet, grown (place)
+  std::vector<std::vector<std::pair<int, int>>> slots;  // per first actor: (second actor, PairState index), sorted
+  std::vector<PairState> pair_states;
+  std::vector<int> chain_pool;
   long sample = 0;
   std::vector<std::pair<int, int>> candidates;
   std::size_t mesh_tests = 0;
@@ -76,9 +89,15 @@ struct CollisionWorld::Impl {
   std::vector<Eigen::Isometry3d> turn;                        // per joint, valid where turn_stamp == stamp
   std::vector<long> turn_stamp;
   long stamp = 0;
-  // Chains between pairs, as steps (joint << 1 | k): into actor actors[k] of joint `joint`. A
-  // chain holding only kNoChain means none within reach (the given poses are used).
-  std::unordered_map<std::uint64_t, std::vector<int>> chains;
+  // Relative poses along the current first actor's chains, per actor reached (valid where
+  // reach_stamp == reach_epoch): every chain from `reach_from` is a path in one breadth-first tree
+  // (chain), so its products share their prefixes, and the candidates come sorted by first actor.
+  std::vector<Eigen::Isometry3d> reach;
+  std::vector<long> reach_stamp;
+  long reach_epoch = 0;
+  int reach_from = -1;
+  // Chains between pairs (PairState::chain), as steps (joint << 1 | k): into actor actors[k] of
+  // joint `joint`. A chain holding only kNoChain means none within reach (the given poses are used).
   static constexpr int kNoChain = -1;
   // Farthest a chain search looks, in facets visited: a pair this far apart in the sheet is not
   // held together by a few loops, and its placement by the tree is as good as any.
@@ -86,7 +105,20 @@ struct CollisionWorld::Impl {
 
   Impl(const CreasePattern& p, const CollisionOptions& o) : pattern(&p), options(o) {
     tol = o.tolerance * p.diagonal();
-    for (const auto& j : p.joints()) hinged.insert(key(std::min(j.actors[0], j.actors[1]), std::max(j.actors[0], j.actors[1])));
+    hinged.resize(p.actors().size());
+    slots.resize(p.actors().size());
+    box_lo.resize(p.actors().size());
+    box_hi.resize(p.actors().size());
+    for (const auto& j : p.joints()) {
+      hinged[j.actors[0]].push_back(j.actors[1]);
+      hinged[j.actors[1]].push_back(j.actors[0]);
+    }
+    for (auto& h : hinged) {
+      std::sort(h.begin(), h.end());
+      h.erase(std::unique(h.begin(), h.end()), h.end());
+      hinged_pairs += h.size();
+    }
+    hinged_pairs /= 2;
     facets.reserve(p.actors().size());
     for (std::size_t a = 0; a < p.actors().size(); ++a) facets.push_back(make_facet(static_cast<int>(a)));
     for (std::size_t j = 0; j < p.joints().size(); ++j) {
@@ -97,6 +129,8 @@ struct CollisionWorld::Impl {
     }
     turn.resize(p.joints().size());
     turn_stamp.assign(p.joints().size(), -1);
+    reach.resize(p.actors().size());
+    reach_stamp.assign(p.actors().size(), -1);
     if (o.broad_phase == BroadPhase::DynamicAabbTree) {
       for (auto& f : facets) manager.registerObject(f.object.get());
       manager.setup();
@@ -142,9 +176,19 @@ struct CollisionWorld::Impl {
         lo = lo.cwiseMin(w);
         hi = hi.cwiseMax(w);
       }
-      f.object->setTransform(poses[a]);
-      f.object->set_box(fcl::AABBd(lo - grow, hi + grow));
+      box_lo[a] = lo - grow;
+      box_hi[a] = hi + grow;
+      if (options.broad_phase == BroadPhase::DynamicAabbTree) {
+        f.object->setTransform(poses[a]);
+        f.object->set_box(fcl::AABBd(box_lo[a], box_hi[a]));
+      }
     }
+  }
+
+  // Whether a and b share a crease: a facet has a handful, so a scan beats a hash.
+  bool is_hinged(int a, int b) const {
+    const auto& h = hinged[a];
+    return std::find(h.begin(), h.end(), b) != h.end();
   }
 
   static bool gather(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data) {
@@ -152,12 +196,19 @@ struct CollisionWorld::Impl {
     int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
     int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
     if (a > b) std::swap(a, b);
-    if (!self->hinged.count(key(a, b))) self->candidates.emplace_back(a, b);
+    if (!self->is_hinged(a, b)) self->candidates.emplace_back(a, b);
     return false;
   }
 
   void find_candidates() {
     candidates.clear();
+    if (options.broad_phase == BroadPhase::Grid) {
+      grid.overlapping(box_lo, box_hi, candidates);
+      candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                      [this](const std::pair<int, int>& c) { return is_hinged(c.first, c.second); }),
+                       candidates.end());
+      return;
+    }
     if (options.broad_phase == BroadPhase::DynamicAabbTree) {
       manager.update();
       manager.collide(this, &Impl::gather);
@@ -168,12 +219,13 @@ struct CollisionWorld::Impl {
     const int n = static_cast<int>(facets.size());
     for (int a = 0; a < n; ++a)
       for (int b = a + 1; b < n; ++b)
-        if (!hinged.count(key(a, b))) candidates.emplace_back(a, b);
+        if (!is_hinged(a, b)) candidates.emplace_back(a, b);
   }
 
   void start(const geometry::FoldState& s) {
     state = &s;
     ++stamp;
+    reach_from = -1;
   }
 
   const Eigen::Isometry3d& turned(int joint) {
@@ -189,9 +241,32 @@ struct CollisionWorld::Impl {
   // one of two of equal length, which differ by that vertex's closure error alone). Written out
   // rather than boost::breadth_first_search because it stops at b or after kMaxVisited facets,
   // which a BGL visitor can do only by throwing.
-  const std::vector<int>& chain(int a, int b) {
-    const auto [it, fresh] = chains.try_emplace(key(a, b));
-    if (!fresh) return it->second;
+  PairState& pair(int a, int b) {
+    auto& list = slots[a];
+    auto it = std::lower_bound(list.begin(), list.end(), std::make_pair(b, -1));
+    if (it == list.end() || it->first != b) {
+      it = list.insert(it, {b, static_cast<int>(pair_states.size())});
+      pair_states.emplace_back();
+    }
+    return pair_states[it->second];
+  }
+
+  struct Steps {
+    const int* begin;
+    int size;
+  };
+  Steps chain(int a, int b) { return chain(a, b, pair(a, b)); }
+  Steps chain(int a, int b, PairState& ps) {
+    if (ps.chain_begin < 0) {
+      const std::vector<int> steps = search_chain(a, b);
+      ps.chain_begin = static_cast<int>(chain_pool.size());
+      ps.chain_size = static_cast<int>(steps.size());
+      chain_pool.insert(chain_pool.end(), steps.begin(), steps.end());
+    }
+    return {chain_pool.data() + ps.chain_begin, ps.chain_size};
+  }
+  std::vector<int> search_chain(int a, int b) const {
+    std::vector<int> steps;
     const geometry::FacetGraph& graph = pattern->facet_graph();
     const auto edge_index = boost::get(boost::edge_index, graph);
     std::unordered_map<int, int> via;  // actor → step that reached it
@@ -207,11 +282,7 @@ struct CollisionWorld::Impl {
         queue.push_back(g);
       }
     }
-    std::vector<int>& steps = it->second;
-    if (!via.count(b)) {
-      steps.assign(1, kNoChain);
-      return steps;
-    }
+    if (!via.count(b)) return {kNoChain};
     for (int f = b; f != a;) {
       const int step = via.at(f);
       steps.push_back(step);
@@ -224,16 +295,34 @@ struct CollisionWorld::Impl {
 
   // b's coordinates in a's: along their chain at the current state, or from the given poses.
   Eigen::Isometry3d relative(int a, int b, const std::vector<Eigen::Isometry3d>& poses) {
-    const std::vector<int>& steps = chain(a, b);
-    if (steps.front() == kNoChain) return poses[a].inverse() * poses[b];
-    Eigen::Isometry3d rel = Eigen::Isometry3d::Identity();
-    for (int step : steps) {
-      const int j = step >> 1;
+    return relative(a, b, chain(a, b), poses);
+  }
+  Eigen::Isometry3d relative(int a, int b, Steps steps, const std::vector<Eigen::Isometry3d>& poses) {
+    if (steps.begin[0] == kNoChain) return poses[a].inverse() * poses[b];
+    if (a != reach_from) {
+      reach_from = a;
+      ++reach_epoch;
+      reach[a] = Eigen::Isometry3d::Identity();
+      reach_stamp[a] = reach_epoch;
+    }
+    // The deepest actor along the chain whose pose is known, then the products on from it, in
+    // the same order as composing the whole chain from a: the same numbers, fewer products.
+    const int* step = steps.begin;
+    int known = steps.size;
+    while (known > 0 && reach_stamp[entered(step[known - 1])] != reach_epoch) --known;
+    Eigen::Isometry3d rel = known > 0 ? reach[entered(step[known - 1])] : Eigen::Isometry3d::Identity();
+    for (int i = known; i < steps.size; ++i) {
+      const int j = step[i] >> 1;
       // Entering the facet on the right of the axis turns it by +angle, on the left by −angle.
-      rel = rel * (sides[j][step & 1] > 0 ? turned(j) : turned(j).inverse());
+      rel = rel * (sides[j][step[i] & 1] > 0 ? turned(j) : turned(j).inverse());
+      const int f = entered(step[i]);
+      reach[f] = rel;
+      reach_stamp[f] = reach_epoch;
     }
     return rel;
   }
+  // The actor a chain step enters.
+  int entered(int step) const { return pattern->joints()[step >> 1].actors[step & 1]; }
 
   // Where b lies relative to a's plane; `rel` maps b's coordinates into a's.
   Side side_of(const Facet& b, const Eigen::Isometry3d& rel) const {
@@ -260,37 +349,50 @@ struct CollisionWorld::Impl {
   }
 
   // The deepest crossing of a's and b's triangles, with b placed by `rel` in a's coordinates; its point
-  // in world coordinates by a's pose.
+  // in world coordinates by a's pose. Every crossing triangles_cross finds is one FCL reports (FCL
+  // reports touching pairs too: fcl#502), so both ways find the same crossings; for small facets
+  // (a Miura parallelogram is two triangles) every pair is tested directly, because FCL's
+  // collide() on two BVH models cost more in setting up its traversal than the triangle tests
+  // themselves (a quarter of a check at Miura 40×40).
   std::optional<Crossing> mesh_crossing(int a, int b, const Eigen::Isometry3d& rel, const std::vector<Eigen::Isometry3d>& poses) {
     ++mesh_tests;
     const Facet& fa = facets[a];
     const Facet& fb = facets[b];
     const std::size_t most = fa.triangles.size() * fb.triangles.size();
-    fcl::CollisionRequestd request(most, true);
-    fcl::CollisionResultd result;
-    fcl::collide(fa.object->collisionGeometry().get(), fcl::Transform3d::Identity(), fb.object->collisionGeometry().get(),
-                 fcl::Transform3d(rel.matrix()), request, result);
     std::optional<detail::TriangleCrossing> deepest;
-    for (std::size_t c = 0; c < result.numContacts(); ++c) {
-      const auto& contact = result.getContact(c);
-      const bool swapped = contact.o1 != fa.object->collisionGeometry().get();
-      const auto ta = static_cast<std::size_t>(swapped ? contact.b2 : contact.b1);
-      const auto tb = static_cast<std::size_t>(swapped ? contact.b1 : contact.b2);
+    auto judge = [&](std::size_t ta, std::size_t tb) {
       detail::Tri3 x, y;
       for (int k = 0; k < 3; ++k) {
         x[k] = fa.points[fa.triangles[ta][k]];
         y[k] = rel * fb.points[fb.triangles[tb][k]];
       }
       if (auto cut = detail::triangles_cross(x, y, tol); cut && (!deepest || cut->depth > deepest->depth)) deepest = cut;
+    };
+    if (most <= kDirectTrianglePairs) {
+      for (std::size_t ta = 0; ta < fa.triangles.size(); ++ta)
+        for (std::size_t tb = 0; tb < fb.triangles.size(); ++tb) judge(ta, tb);
+    } else {
+      fcl::CollisionRequestd request(most, true);
+      fcl::CollisionResultd result;
+      fcl::collide(fa.object->collisionGeometry().get(), fcl::Transform3d::Identity(), fb.object->collisionGeometry().get(),
+                   fcl::Transform3d(rel.matrix()), request, result);
+      for (std::size_t c = 0; c < result.numContacts(); ++c) {
+        const auto& contact = result.getContact(c);
+        const bool swapped = contact.o1 != fa.object->collisionGeometry().get();
+        judge(static_cast<std::size_t>(swapped ? contact.b2 : contact.b1), static_cast<std::size_t>(swapped ? contact.b1 : contact.b2));
+      }
     }
     if (!deepest) return std::nullopt;
     return Crossing{{a, b}, poses[a] * deepest->point, CrossingKind::Mesh, deepest->depth};
   }
+  // Most triangle pairs mesh_crossing tests one by one rather than through FCL's BVH.
+  static constexpr std::size_t kDirectTrianglePairs = 16;
 
   std::optional<Crossing> test(int a, int b, const std::vector<Eigen::Isometry3d>& poses) {
-    const Eigen::Isometry3d rel = relative(a, b, poses);
+    PairState& ps = pair(a, b);
+    const Eigen::Isometry3d rel = relative(a, b, chain(a, b, ps), poses);
     const Side side = side_of(facets[b], rel);
-    Memory& m = memory[key(a, b)];
+    Memory& m = ps.memory;
     const bool seen_last = m.sample == sample - 1;
     const int before = seen_last ? m.side : On;
     m.sample = sample;
@@ -368,12 +470,12 @@ std::optional<Crossing> CollisionWorld::mesh_crossing(int a, int b, const std::v
 }
 
 void CollisionWorld::reset() {
-  impl_->memory.clear();
+  for (auto& state : impl_->pair_states) state.memory = Memory{};
   impl_->sample = 0;
 }
 double CollisionWorld::tolerance() const { return impl_->tol; }
 std::size_t CollisionWorld::checked_pairs() const { return impl_->candidates.size(); }
 std::size_t CollisionWorld::mesh_tests() const { return impl_->mesh_tests; }
-std::size_t CollisionWorld::skipped_pairs() const { return impl_->hinged.size(); }
+std::size_t CollisionWorld::skipped_pairs() const { return impl_->hinged_pairs; }
 
 }  // namespace foldkit::simulation

@@ -131,7 +131,9 @@ TEST(AtScale, FlatMiuraNullityMatchesTheClosedForm) {
           solver.decide_rank(J, 1e-8, 0, 0.0, geometry::SparseRankMethod::InverseSubspace);
       EXPECT_EQ(sparse.nullity, 2 * (n - 1)) << n;
     }
-    if (n <= 20) EXPECT_EQ(solver.decide_rank(J, 1e-8, 1'000'000).nullity, 2 * (n - 1)) << n;
+    if (n <= 20) {
+      EXPECT_EQ(solver.decide_rank(J, 1e-8, 1'000'000).nullity, 2 * (n - 1)) << n;
+    }
   }
 }
 
