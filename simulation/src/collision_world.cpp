@@ -78,6 +78,7 @@ struct CollisionWorld::Impl {
   std::vector<std::vector<std::pair<int, int>>> slots;  // per first actor: (second actor, PairState index), sorted
   std::vector<PairState> pair_states;
   std::vector<int> chain_pool;
+  std::vector<int> chain_actors;  // beside chain_pool: the actor each step enters
   long sample = 0;
   std::vector<std::pair<int, int>> candidates;
   std::size_t mesh_tests = 0;
@@ -86,7 +87,9 @@ struct CollisionWorld::Impl {
   std::vector<geometry::JointAxis> axes;                      // per joint
   std::vector<std::array<double, 2>> sides;                   // per joint: side_of each of its actors
   const geometry::FoldState* state = nullptr;
-  std::vector<Eigen::Isometry3d> turn;                        // per joint, valid where turn_stamp == stamp
+  // Per chain step (joint << 1 | k): the motion of entering actors[k] across the joint, the turn or
+  // its inverse, each computed once per state (valid where turn_stamp[joint] == stamp).
+  std::vector<Eigen::Isometry3d> enter;
   std::vector<long> turn_stamp;
   long stamp = 0;
   // Relative poses along the current first actor's chains, per actor reached (valid where
@@ -127,7 +130,7 @@ struct CollisionWorld::Impl {
       sides.push_back({geometry::side_of(p, static_cast<int>(j), joint.actors[0]),
                        geometry::side_of(p, static_cast<int>(j), joint.actors[1])});
     }
-    turn.resize(p.joints().size());
+    enter.resize(2 * p.joints().size());
     turn_stamp.assign(p.joints().size(), -1);
     reach.resize(p.actors().size());
     reach_stamp.assign(p.actors().size(), -1);
@@ -228,12 +231,15 @@ struct CollisionWorld::Impl {
     reach_from = -1;
   }
 
-  const Eigen::Isometry3d& turned(int joint) {
+  const Eigen::Isometry3d& entering(int step) {
+    const int joint = step >> 1;
     if (turn_stamp[joint] != stamp) {
-      turn[joint] = geometry::joint_motion(axes[joint], state->angles[joint]);
+      const Eigen::Isometry3d turn = geometry::joint_motion(axes[joint], state->angles[joint]);
+      // Entering the facet on the right of the axis turns it by +angle, on the left by −angle.
+      for (int k = 0; k < 2; ++k) enter[2 * joint + k] = sides[joint][k] > 0 ? turn : turn.inverse();
       turn_stamp[joint] = stamp;
     }
-    return turn[joint];
+    return enter[step];
   }
 
   // Breadth-first from a to b over the facet graph's creases, in crease order, so the chain is the
@@ -253,6 +259,7 @@ struct CollisionWorld::Impl {
 
   struct Steps {
     const int* begin;
+    const int* actors;  // the actor each step enters
     int size;
   };
   Steps chain(int a, int b) { return chain(a, b, pair(a, b)); }
@@ -262,8 +269,9 @@ struct CollisionWorld::Impl {
       ps.chain_begin = static_cast<int>(chain_pool.size());
       ps.chain_size = static_cast<int>(steps.size());
       chain_pool.insert(chain_pool.end(), steps.begin(), steps.end());
+      for (int step : steps) chain_actors.push_back(step == kNoChain ? -1 : entered(step));
     }
-    return {chain_pool.data() + ps.chain_begin, ps.chain_size};
+    return {chain_pool.data() + ps.chain_begin, chain_actors.data() + ps.chain_begin, ps.chain_size};
   }
   std::vector<int> search_chain(int a, int b) const {
     std::vector<int> steps;
@@ -309,13 +317,11 @@ struct CollisionWorld::Impl {
     // the same order as composing the whole chain from a: the same numbers, fewer products.
     const int* step = steps.begin;
     int known = steps.size;
-    while (known > 0 && reach_stamp[entered(step[known - 1])] != reach_epoch) --known;
-    Eigen::Isometry3d rel = known > 0 ? reach[entered(step[known - 1])] : Eigen::Isometry3d::Identity();
+    while (known > 0 && reach_stamp[steps.actors[known - 1]] != reach_epoch) --known;
+    Eigen::Isometry3d rel = known > 0 ? reach[steps.actors[known - 1]] : Eigen::Isometry3d::Identity();
     for (int i = known; i < steps.size; ++i) {
-      const int j = step[i] >> 1;
-      // Entering the facet on the right of the axis turns it by +angle, on the left by −angle.
-      rel = rel * (sides[j][step[i] & 1] > 0 ? turned(j) : turned(j).inverse());
-      const int f = entered(step[i]);
+      rel = rel * entering(step[i]);
+      const int f = steps.actors[i];
       reach[f] = rel;
       reach_stamp[f] = reach_epoch;
     }

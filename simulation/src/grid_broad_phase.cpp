@@ -95,8 +95,9 @@ void GridBroadPhase::overlapping(const std::vector<Eigen::Vector3d>& lo, const s
     for (int p = cell_start_[c]; p < cell_start_[c + 1]; ++p)
       for (int q = p + 1; q < cell_start_[c + 1]; ++q) {
         const int a = cell_members_[p], b = cell_members_[q];
-        if (!overlap(lo[a], hi[a], lo[b], hi[b])) continue;
-        if (g.index(g.cell(lo[a].cwiseMax(lo[b]))) != c) continue;
+        // The cell of the intersection's low corner, max(lo_a, lo_b), is the larger of the boxes'
+        // first cells on each axis (the cell of a coordinate is monotone in it): integers only.
+        if (g.index(first_[a].cwiseMax(first_[b])) != c || !overlap(lo[a], hi[a], lo[b], hi[b])) continue;
         found_.emplace_back(std::min(a, b), std::max(a, b));
       }
   // Sorted: a counting sort by first box, then each (short) run by second.
