@@ -146,6 +146,7 @@ int run_plan(PlanArgs& opt) {
   std::vector<std::pair<std::string, std::string>> params;
   try {
     opt.planner = planners::canonical_planner(opt.planner);
+    if (const std::string why = planners::planner_refusal(opt.planner); !why.empty()) throw planners::PlannerRefused(opt.planner, why);
     for (const auto& p : opt.params) params.push_back(planners::parse_planner_param(p));
     planners::check_planner_params(opt.planner, params);
   } catch (const std::invalid_argument& e) {
@@ -169,6 +170,8 @@ int run_plan(PlanArgs& opt) {
     if (e.end() == planners::PlanInputError::End::Start && !opt.start.empty())
       throw io::ParseError(opt.start, end_line(options.start_sequence), e.what());
     throw io::ParseError(opt.goal.empty() ? "--goal-angles" : opt.goal, opt.goal.empty() ? 0 : goal_line, e.what());
+  } catch (const planners::PlannerRefused& e) {
+    throw UsageError(e.what());  // the planner asked for, not the goal, is what cannot be
   } catch (const std::invalid_argument& e) {
     throw io::ParseError(opt.goal.empty() ? "--goal-angles" : opt.goal, 0, e.what());
   }

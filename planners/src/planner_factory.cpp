@@ -3,16 +3,22 @@
 #include <algorithm>
 #include <cctype>
 #include <functional>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Console.h>
+#include <ompl/geometric/planners/AnytimePathShortening.h>
+#include <ompl/geometric/planners/cforest/CForest.h>
 #include <ompl/geometric/planners/est/BiEST.h>
 #include <ompl/geometric/planners/est/EST.h>
 #include <ompl/geometric/planners/est/ProjEST.h>
 #include <ompl/geometric/planners/fmt/BFMT.h>
 #include <ompl/geometric/planners/fmt/FMT.h>
+#include <ompl/geometric/planners/informedtrees/ABITstar.h>
+#include <ompl/geometric/planners/informedtrees/AITstar.h>
+#include <ompl/geometric/planners/informedtrees/BITstar.h>
 #include <ompl/geometric/planners/kpiece/BKPIECE1.h>
 #include <ompl/geometric/planners/kpiece/KPIECE1.h>
 #include <ompl/geometric/planners/kpiece/LBKPIECE1.h>
@@ -21,17 +27,26 @@
 #include <ompl/geometric/planners/prm/LazyPRMstar.h>
 #include <ompl/geometric/planners/prm/PRM.h>
 #include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/geometric/planners/prm/SPARS.h>
+#include <ompl/geometric/planners/prm/SPARStwo.h>
+#include <ompl/geometric/planners/quotientspace/QRRT.h>
 #include <ompl/geometric/planners/rlrt/BiRLRT.h>
 #include <ompl/geometric/planners/rlrt/RLRT.h>
 #include <ompl/geometric/planners/rrt/BiTRRT.h>
+#include <ompl/geometric/planners/rrt/InformedRRTstar.h>
+#include <ompl/geometric/planners/rrt/LazyLBTRRT.h>
 #include <ompl/geometric/planners/rrt/LBTRRT.h>
 #include <ompl/geometric/planners/rrt/LazyRRT.h>
 #include <ompl/geometric/planners/rrt/RRT.h>
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/geometric/planners/rrt/RRTXstatic.h>
 #include <ompl/geometric/planners/rrt/RRTsharp.h>
 #include <ompl/geometric/planners/rrt/RRTstar.h>
+#include <ompl/geometric/planners/rrt/SORRTstar.h>
 #include <ompl/geometric/planners/rrt/TRRT.h>
+#include <ompl/geometric/planners/rrt/pRRT.h>
 #include <ompl/geometric/planners/sbl/SBL.h>
+#include <ompl/geometric/planners/sbl/pSBL.h>
 #include <ompl/geometric/planners/sst/SST.h>
 #include <ompl/geometric/planners/stride/STRIDE.h>
 
@@ -47,27 +62,82 @@ Make make() {
   return [](const ompl::base::SpaceInformationPtr& si) { return std::make_shared<P>(si); };
 }
 
+// The multilevel planner on one level: the space itself (foldkit's spaces are not products of
+// simpler ones, so there is no coarser quotient to give it).
+Make make_qrrt() {
+  return [](const ompl::base::SpaceInformationPtr& si) {
+    std::vector<ompl::base::SpaceInformationPtr> levels{si};
+    return std::make_shared<og::QRRT>(levels);
+  };
+}
+
+// One row per geometric planner OMPL 1.5.2 ships (ompl/geometric/planners/), so that a name is
+// answered with a planner or with why there is none: `refused` says what the planner needs that
+// a crease pattern does not give it.
 struct Entry {
   const char* name;
   const char* alias;
   Make make;
+  bool threaded = false;  // runs threads of its own: not reproducible from the seed
+  const char* refused = "";
+  // Refused where the path-length objective's informed sampler is by rejection (detail::PathLength)
+  bool needs_direct_informed = false;
+  // foldkit's defaults where OMPL's do not fit a crease pattern (NAME=VALUE, space-separated),
+  // set before the caller's parameters (docs/PLANNING.md, "Planners")
+  const char* defaults = "";
 };
+
+// SORRT* fills ordered batches from the informed sampler without looking at the time limit; by
+// rejection (every space but the joint box), a batch may never fill: it ran past 60 s on a
+// degree-6 vertex with --time 2.
+constexpr const char* kOrderedBatches =
+    "SORRT* draws ordered batches from an informed sampler without checking the time limit, and on this "
+    "space that sampler works by rejection (there is no direct ellipsoidal sampler for it), so a batch may "
+    "never fill: use InformedRRT* or BIT*";
+
+bool direct_informed(const ompl::base::SpaceInformationPtr& si) {
+  const int type = si->getStateSpace()->getType();
+  return type == ompl::base::STATE_SPACE_REAL_VECTOR || type == ompl::base::STATE_SPACE_SE2 ||
+         type == ompl::base::STATE_SPACE_SE3;
+}
 
 const std::vector<Entry>& table() {
   static const std::vector<Entry> t = {
       {"RRTConnect", "", make<og::RRTConnect>()},  {"RRT", "", make<og::RRT>()},
       {"RRT*", "RRTstar", make<og::RRTstar>()},     {"RRT#", "RRTsharp", make<og::RRTsharp>()},
-      {"LazyRRT", "", make<og::LazyRRT>()},         {"TRRT", "", make<og::TRRT>()},
+      {"LazyRRT", "", make<og::LazyRRT>()},         {"TRRT", "", make<og::TRRT>(), false, "", false, "frontier_node_ratio=1"},
       {"BiTRRT", "", make<og::BiTRRT>()},           {"LBTRRT", "", make<og::LBTRRT>()},
-      {"PRM", "", make<og::PRM>()},                 {"PRM*", "PRMstar", make<og::PRMstar>()},
+      {"PRM", "", make<og::PRM>(), true},           {"PRM*", "PRMstar", make<og::PRMstar>(), true},
       {"LazyPRM", "", make<og::LazyPRM>()},         {"LazyPRM*", "LazyPRMstar", make<og::LazyPRMstar>()},
       {"KPIECE1", "KPIECE", make<og::KPIECE1>()},   {"BKPIECE1", "BKPIECE", make<og::BKPIECE1>()},
       {"LBKPIECE1", "LBKPIECE", make<og::LBKPIECE1>()}, {"EST", "", make<og::EST>()},
       {"BiEST", "", make<og::BiEST>()},             {"ProjEST", "", make<og::ProjEST>()},
       {"SBL", "", make<og::SBL>()},                 {"STRIDE", "", make<og::STRIDE>()},
       {"PDST", "", make<og::PDST>()},               {"FMT", "FMT*", make<og::FMT>()},
-      {"BFMT", "BFMT*", make<og::BFMT>()},          {"SST", "", make<og::SST>()},
+      {"BFMT", "BFMT*", make<og::BFMT>()},          {"SST", "", make<og::SST>(), false, "", false, "selection_radius=0.3 pruning_radius=0.02"},
       {"RLRT", "", make<og::RLRT>()},               {"BiRLRT", "", make<og::BiRLRT>()},
+      // Issue 38: the rest of OMPL 1.5.2's geometric planners.
+      {"BIT*", "BITstar", make<og::BITstar>()},     {"ABIT*", "ABITstar", make<og::ABITstar>()},
+      {"AIT*", "AITstar", make<og::AITstar>()},     {"InformedRRT*", "InformedRRTstar", make<og::InformedRRTstar>()},
+      {"SORRT*", "SORRTstar", make<og::SORRTstar>(), false, "", true}, {"RRTXstatic", "", make<og::RRTXstatic>()},
+      {"LazyLBTRRT", "", make<og::LazyLBTRRT>()},   {"SPARS", "", make<og::SPARS>(), false, "", false, "sparse_delta_fraction=0.5"},
+      {"SPARStwo", "", make<og::SPARStwo>()},       {"QRRT", "", make_qrrt()},
+      {"pRRT", "", make<og::pRRT>(), true},         {"pSBL", "", make<og::pSBL>(), true},
+      {"CForest", "", make<og::CForest>(), true},   {"AnytimePathShortening", "APS", make<og::AnytimePathShortening>(), true},
+      {"TSRRT", "", nullptr, false,
+       "TSRRT grows its tree in a task space that the caller defines (a TaskSpaceConfig: a projection of "
+       "the state and its inverse); a crease pattern names no such task space"},
+      {"VFRRT", "", nullptr, false,
+       "VFRRT follows a vector field over the space, which the caller supplies; a crease pattern has none"},
+      {"XXL", "", nullptr, false,
+       "XXL needs a workspace decomposition of the robot's links (XXLDecomposition); foldkit's spaces "
+       "offer none"},
+      {"ThunderRetrieveRepair", "", nullptr, false,
+       "ThunderRetrieveRepair repairs paths recalled from an experience database (OMPL's Thunder "
+       "framework); planning from experience is not built yet (issue 38, item 4)"},
+      {"LightningRetrieveRepair", "", nullptr, false,
+       "LightningRetrieveRepair repairs paths recalled from an experience database (OMPL's Lightning "
+       "framework); planning from experience is not built yet (issue 38, item 4)"},
   };
   return t;
 }
@@ -89,8 +159,21 @@ const Entry& find(const std::string& name) {
 }  // namespace
 
 ompl::base::PlannerPtr make_planner(const std::string& name, const ompl::base::SpaceInformationPtr& si) {
-  return find(name).make(si);
+  const Entry& e = find(name);
+  if (*e.refused) throw PlannerRefused(e.name, e.refused);
+  if (e.needs_direct_informed && !direct_informed(si)) throw PlannerRefused(e.name, kOrderedBatches);
+  ompl::base::PlannerPtr planner = e.make(si);
+  std::istringstream defaults(e.defaults);
+  std::vector<std::pair<std::string, std::string>> params;
+  for (std::string word; defaults >> word;) params.push_back(parse_planner_param(word));
+  set_planner_params(*planner, e.name, params);
+  return planner;
 }
+
+std::string planner_refusal(const std::string& name) { return find(name).refused; }
+
+PlannerRefused::PlannerRefused(const std::string& planner, const std::string& reason)
+    : std::invalid_argument("planner " + planner + " cannot plan here: " + reason) {}
 
 void set_planner_params(ompl::base::Planner& planner, const std::string& name,
                         const std::vector<std::pair<std::string, std::string>>& params) {
@@ -146,9 +229,6 @@ std::vector<std::string> planner_names() {
 
 std::string canonical_planner(const std::string& name) { return find(name).name; }
 
-bool planner_is_threaded(const std::string& name) {
-  const std::string n = find(name).name;
-  return n == "PRM" || n == "PRM*";
-}
+bool planner_is_threaded(const std::string& name) { return find(name).threaded; }
 
 }  // namespace foldkit::planners

@@ -1,6 +1,7 @@
 #pragma once
 /// @file
 /// OMPL's geometric planners by name.
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,11 +11,22 @@
 
 namespace foldkit::planners {
 
-/// An OMPL geometric planner by name, case-insensitive: RRTConnect, RRT, RRT* (RRTstar), RRT#
-/// (RRTsharp), LazyRRT, TRRT, BiTRRT, LBTRRT, PRM, PRM* (PRMstar), LazyPRM, LazyPRM* (LazyPRMstar),
-/// KPIECE1, BKPIECE1, LBKPIECE1, EST, BiEST, ProjEST, SBL, STRIDE, PDST, FMT, BFMT, SST, RLRT, BiRLRT
-/// (also KPIECE, BKPIECE, LBKPIECE, FMT*, BFMT*), with OMPL's default settings.
-/// @throws std::invalid_argument for any other name (the message lists the known ones)
+/// A planner that cannot plan on the space asked for, with the reason (what it needs that the
+/// space does not give it).
+class PlannerRefused : public std::invalid_argument {
+ public:
+  /// "planner PLANNER cannot plan here: REASON".
+  PlannerRefused(const std::string& planner, const std::string& reason);
+};
+
+/// An OMPL geometric planner by name, case-insensitive, with OMPL's default settings: every one
+/// OMPL 1.5.2 ships (planner_names(); docs/PLANNING.md lists them with their status on each
+/// space). Aliases: RRTstar, RRTsharp, PRMstar, LazyPRMstar, KPIECE, BKPIECE, LBKPIECE, FMT*,
+/// BFMT*, BITstar, ABITstar, AITstar, InformedRRTstar, SORRTstar, APS.
+/// @throws std::invalid_argument for an unknown name (the message lists the known ones)
+/// @throws PlannerRefused for a planner that cannot plan on a crease pattern (planner_refusal()),
+///         and for SORRT* on a space without a direct informed sampler (every space but the joint
+///         box of a sheet without loops)
 ompl::base::PlannerPtr make_planner(const std::string& name, const ompl::base::SpaceInformationPtr& si);
 /// Sets the planner's parameters by name through OMPL's ParamSet (planner.params()), in order.
 /// @param planner  the planner (made by make_planner())
@@ -31,13 +43,17 @@ std::pair<std::string, std::string> parse_planner_param(const std::string& text)
 /// made on a one-dimensional box): for command lines that answer a bad parameter as a usage error.
 /// @throws std::invalid_argument as set_planner_params() does
 void check_planner_params(const std::string& planner, const std::vector<std::pair<std::string, std::string>>& params);
-/// The canonical names above, in that order.
+/// The canonical names of every planner make_planner() knows, those it refuses included.
 std::vector<std::string> planner_names();
+/// Why make_planner() refuses the planner (what it needs that a crease pattern does not give it);
+/// empty for a planner it makes.
+/// @throws std::invalid_argument for an unknown planner
+std::string planner_refusal(const std::string& name);
 /// The canonical name of a planner.
 /// @throws std::invalid_argument for an unknown one
 std::string canonical_planner(const std::string& name);
-/// Whether the planner runs threads of its own (PRM and PRM*: their plans are not reproducible
-/// from the seed).
+/// Whether the planner runs threads of its own (PRM, PRM*, pRRT, pSBL, CForest,
+/// AnytimePathShortening: their plans are not reproducible from the seed).
 /// @throws std::invalid_argument for an unknown planner
 bool planner_is_threaded(const std::string& name);
 
