@@ -37,6 +37,7 @@ Command add_serve(CLI::App& root) {
     std::string host = "127.0.0.1", root = ".", web = default_web_folder();
     int port = 8080;
     double max_body_mb = 256.0, max_plan_time = 60.0, max_time = 300.0;
+    std::size_t workers = ServeOptions{}.workers, queue = ServeOptions{}.queue;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* app = root.add_subcommand("serve", "Serve the JSON API of the verbs on a local HTTP server (docs/SERVE.md)");
@@ -52,6 +53,14 @@ Command add_serve(CLI::App& root) {
   app->add_option("--max-time", opt->max_time, "Seconds a verb may run before it is stopped (HTTP 504)")
       ->check(CLI::Range(0.1, 86400.0))
       ->capture_default_str();
+  // Each verb is a child process on a core of its own; requests beyond the workers wait in the
+  // queue (each holds an HTTP thread and its connection), and beyond the queue get 503.
+  app->add_option("--workers", opt->workers, "Verbs run at once (default: one per core)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1024}))
+      ->capture_default_str();
+  app->add_option("--queue", opt->queue, "Verb requests that wait for a worker at most; more get 503 with Retry-After")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{1024}))
+      ->capture_default_str();
   return {app, [opt] {
             ServeOptions o;
             o.root = opt->root;
@@ -61,6 +70,8 @@ Command add_serve(CLI::App& root) {
             o.max_body = static_cast<std::size_t>(opt->max_body_mb * 1024 * 1024);
             o.limits.max_plan_time = opt->max_plan_time;
             o.limits.max_time = opt->max_time;
+            o.workers = opt->workers;
+            o.queue = opt->queue;
             std::unique_ptr<ServeApi> api;
             try {
               api = std::make_unique<ServeApi>(o);
@@ -71,6 +82,7 @@ Command add_serve(CLI::App& root) {
             api->install(server);
             const int port = opt->port == 0 ? server.bind_to_any_port(opt->host) : (server.bind_to_port(opt->host, opt->port) ? opt->port : -1);
             if (port < 0) throw UsageError("cannot listen on " + opt->host + ":" + std::to_string(opt->port));
+            api->deepen_backlog();
             std::cerr << "foldkit serve: http://" << opt->host << ':' << port << (opt->web.empty() ? "/api" : "/") << " (root "
                       << api->paths().root().string() << "); Ctrl-C stops it" << std::endl;
             return server.listen_after_bind() ? kOk : kInvalidInput;

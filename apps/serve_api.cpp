@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -147,7 +149,8 @@ json listing(const fs::path& folder, const RootedPaths& paths) {
 
 }  // namespace
 
-ServeApi::ServeApi(ServeOptions options) : options_(std::move(options)), paths_(options_.root), executable_(this_executable()) {
+ServeApi::ServeApi(ServeOptions options)
+    : options_(std::move(options)), paths_(options_.root), executable_(this_executable()), pool_(options_.workers, options_.queue) {
   for (const auto& f : options_.files) {
     try {
       files_.push_back(paths_.relative(paths_.input(f)));
@@ -164,11 +167,18 @@ ServeApi::ServeApi(ServeOptions options) : options_(std::move(options)), paths_(
 
 void ServeApi::install(httplib::Server& server) {
   server.set_payload_max_length(options_.max_body);
+  // httplib's pool (by default max(8, cores - 1) threads) serves one connection per thread and
+  // queues the rest unread: with fewer threads than workers + queue, queued verbs would hold
+  // every thread and GET /api and the app's files would wait behind them (http_threads()).
+  server.new_task_queue = [threads = http_threads()] { return new httplib::ThreadPool(threads); };
   // httplib's default also sets SO_REUSEPORT, with which a second server binds a port that is in
   // use and the two share its requests; a port in use must be an error.
-  server.set_socket_options([](socket_t sock) {
+  // It is called on the listening socket before bind (on each address tried; the last is the one
+  // bound), which deepen_backlog() then listens on again.
+  server.set_socket_options([this](socket_t sock) {
     int yes = 1;
     setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
+    listening_ = sock;
   });
 
   // Answers go uncompressed: Debian's cpp-httplib 0.11 compresses with Brotli at its slowest
@@ -222,6 +232,10 @@ void ServeApi::install(httplib::Server& server) {
   server.Get(R"(/(?!api(/|$)).*)", [this](const httplib::Request& req, httplib::Response& res) { get_app_file(req, res); });
 }
 
+void ServeApi::deepen_backlog() const {
+  if (listening_ >= 0) ::listen(listening_, kListenBacklog);
+}
+
 void ServeApi::index(httplib::Response& res) const {
   json verbs = json::array();
   for (const auto& v : served_verbs()) verbs.push_back(v.verb);
@@ -234,7 +248,8 @@ void ServeApi::index(httplib::Response& res) const {
                        {"writes_patterns", io::writes_patterns(f)},
                        {"sequence", f.sequence}});
   reply(res, 200, {{"foldkit", "0.1.0"}, {"verbs", verbs}, {"formats", formats}, {"files", files_}, {"max_body", options_.max_body},
-                   {"max_time", options_.limits.max_time}, {"max_plan_time", options_.limits.max_plan_time}});
+                   {"max_time", options_.limits.max_time}, {"max_plan_time", options_.limits.max_plan_time},
+                   {"workers", options_.workers}, {"queue", options_.queue}});
 }
 
 void ServeApi::list_files(const httplib::Request& req, httplib::Response& res) const {
@@ -289,7 +304,43 @@ void ServeApi::put_file(const httplib::Request& req, httplib::Response& res) con
   }
 }
 
+std::string ServeApi::past_time_limit(const std::string& verb) const {
+  std::ostringstream out;
+  out << verb << ": stopped after the server's limit of " << options_.limits.max_time << " s (foldkit serve --max-time)";
+  return out.str();
+}
+
+// A worker's turn for the verb: at once when one is free, else after the requests queued before
+// it. Answers the request itself and returns nothing when the queue is full (503 with
+// Retry-After: a client should come back rather than wait on an open connection) or when the
+// deadline came while it waited (504, as for a verb that ran past it: the same limit).
+std::optional<VerbRun> ServeApi::run_in_turn(const std::string& verb, const std::vector<std::string>& words,
+                                             VerbPool::Clock::time_point deadline, httplib::Response& res) {
+  switch (pool_.acquire(deadline)) {
+    case VerbPool::Grant::QueueFull: {
+      const long retry = pool_.retry_after_seconds();
+      refuse(res, 503,
+             "busy: all " + std::to_string(pool_.workers()) + " workers run verbs and the queue of " + std::to_string(pool_.queue()) +
+                 " is full (foldkit serve --workers, --queue); try again in " + std::to_string(retry) + " s",
+             kUsage);
+      res.set_header("Retry-After", std::to_string(retry));
+      return std::nullopt;
+    }
+    case VerbPool::Grant::DeadlinePassed:
+      refuse(res, 504, past_time_limit(verb), kInvalidInput);
+      return std::nullopt;
+    case VerbPool::Grant::Granted:
+      break;
+  }
+  VerbPool::Slot slot(pool_);
+  const double left = std::chrono::duration<double>(deadline - VerbPool::Clock::now()).count();
+  return run_verb(executable_, words, std::max(left, 0.0));
+}
+
 void ServeApi::post_verb(const httplib::Request& req, httplib::Response& res) {
+  // --max-time counts from the request's arrival: the time it waits for a worker is part of it.
+  const auto deadline = VerbPool::Clock::now() + std::chrono::duration_cast<VerbPool::Clock::duration>(
+                                                     std::chrono::duration<double>(options_.limits.max_time));
   const std::string verb = req.matches[1];
   const VerbSpec* spec = find_served_verb(verb);
   if (!spec) return refuse(res, 404, verb + ": not a verb the server runs");
@@ -307,15 +358,10 @@ void ServeApi::post_verb(const httplib::Request& req, httplib::Response& res) {
   } catch (const UsageError& e) {
     return refuse(res, 400, verb + ": " + e.what());
   }
-  std::unique_lock<std::mutex> lock(job_, std::try_to_lock);
-  if (!lock.owns_lock()) return refuse(res, 503, "busy: another verb is running; try again when it has finished", kUsage);
-  const VerbRun run = run_verb(executable_, words, options_.limits.max_time);
-  lock.unlock();
-  if (run.timed_out) {
-    std::ostringstream out;
-    out << verb << ": stopped after the server's limit of " << options_.limits.max_time << " s (foldkit serve --max-time)";
-    return refuse(res, 504, out.str(), kInvalidInput);
-  }
+  const std::optional<VerbRun> ran = run_in_turn(verb, words, deadline, res);
+  if (!ran) return;  // refused (503) or out of time while it waited (504)
+  const VerbRun& run = *ran;
+  if (run.timed_out) return refuse(res, 504, past_time_limit(verb), kInvalidInput);
   if (run.flooded) return refuse(res, 500, verb + ": stopped for printing more than the server keeps", kInvalidInput);
   if (run.exit < 0) return refuse(res, 500, verb + ": ended by signal " + std::to_string(run.signal), kInvalidInput);
   const std::string log = relative_messages(run.err, paths_);

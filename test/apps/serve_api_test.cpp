@@ -284,10 +284,11 @@ TEST(ServeApi, OversizedBodiesAreRefused) {
   EXPECT_EQ(s.client().Put("/api/file?path=small.svg", "<svg/>", "image/svg+xml")->status, 200);
 }
 
-// One verb at a time: a request while a plan runs is told the server is busy (503) at once, and
-// a plan asks for at most --max-plan-time seconds.
-TEST(ServeApi, OneVerbAtATimeAndPlansAreTimeLimited) {
-  Server s("busy", {"--max-plan-time", "1.5"});
+// With one worker and no queue, a request while a plan runs is told the server is busy (503, with
+// Retry-After) at once, and a plan asks for at most --max-plan-time seconds. (Queues and many
+// workers: serve_load_test.cpp.)
+TEST(ServeApi, BusyWithoutAQueueAndPlansAreTimeLimited) {
+  Server s("busy", {"--max-plan-time", "1.5", "--workers", "1", "--queue", "0"});
   ASSERT_GT(s.port(), 0) << s.log();
   generate(s, {"single-vertex", "--sectors", "90,60,90,60,60"}, "v.pmml");
   std::ofstream(s.path("guess.cmml")) << one_event({{1, 28}, {2, -23}, {3, 28}, {4, 17}, {5, -17}});
@@ -305,6 +306,7 @@ TEST(ServeApi, OneVerbAtATimeAndPlansAreTimeLimited) {
   const auto busy = s.post("info", {{"pattern", "v.pmml"}});
   ASSERT_TRUE(busy);
   EXPECT_EQ(busy->status, 503) << busy->body;
+  EXPECT_FALSE(busy->get_header_value("Retry-After").empty());
   slow.join();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(seconds, 10.0);  // 1.5 s of planning, not the 30 asked for
