@@ -27,7 +27,7 @@ int convert_sequence(const ConvertArgs& opt) {
   }
   std::vector<geometry::FoldState> states = geometry::event_states(pattern, seq);
   if (is_kind(opt.output, FileKind::Cmml)) {
-    io::write_file_atomic(opt.output, io::write_cmml(seq));
+    io::write_cmml_file(opt.output, seq);
   } else if (is_kind(opt.output, FileKind::Fold)) {
     io::FoldExport extra;
     extra.state = states.back();
@@ -57,9 +57,10 @@ Command add_convert(CLI::App& root) {
   CLI::App* app = root.add_subcommand("convert", "Convert between the formats of docs/FORMATS.md by file extension");
   const std::string written = io::extensions([](const io::FileFormat& f) { return io::writes_patterns(f) || f.sequence; });
   reads(app->add_option("input", opt->input,
-                        "Input file: a crease pattern (" + io::extensions(io::reads_patterns) + "), or .cmml with --pattern"))
+                        "Input file: a crease pattern (" + io::extensions(io::reads_patterns) +
+                            "), or .cmml with --pattern; any of them may be gzip-compressed (X.cmml.gz)"))
       ->required();
-  writes(app->add_option("output", opt->output, "Output file (" + written + ")"))->required();
+  writes(app->add_option("output", opt->output, "Output file (" + written + "; a trailing .gz compresses it: X.fold.gz)"))->required();
   reads(app->add_option("--pattern", opt->pattern, "The crease pattern a .cmml input folds"));
   app->add_flag("--joint-ids", opt->joint_ids, "Label joints with their IDs in SVG output");
   return {app, [opt] { return run_convert(*opt); }};

@@ -88,7 +88,7 @@ void add_fold_options(CLI::App* app, FoldArgs& opt) {
       ->excludes(app->get_option("--velocity"));
   app->add_flag("--no-collision", opt.no_collision, "Closure only: no self-collision checks (folding or replay)");
   app->add_flag("--partial", opt.partial, "When the target is not reached, still write the path up to the stop");
-  writes(app->add_option("-o,--output", opt.output, "Output CMML"))->required();
+  writes(app->add_option("-o,--output", opt.output, "Output CMML (.cmml; .cmml.gz: gzip-compressed)"))->required();
   add_json(app, opt.json);
 }
 
@@ -155,7 +155,7 @@ nlohmann::json fold_json(const FoldArgs& opt, const folding::ProjectedFoldingRes
 }
 
 int run_fold(const FoldArgs& opt) {
-  if (!is_kind(opt.output, FileKind::Cmml)) throw UsageError("-o needs a .cmml file name, not '" + opt.output + "'");
+  if (!is_kind(opt.output, FileKind::Cmml)) throw UsageError("-o needs a .cmml (or .cmml.gz) file name, not '" + opt.output + "'");
   if (!(opt.fraction > 0.0)) throw UsageError("--fraction must be greater than 0");
   const geometry::CreasePattern pattern = load_pattern(opt.pattern).pattern;
   const folding::ProjectedFoldingResult r = fold(opt, pattern);
@@ -164,7 +164,7 @@ int run_fold(const FoldArgs& opt) {
   print_summary(r);
   const bool write = replay_ok && (reached || opt.partial);
   if (write) {
-    io::write_file_atomic(opt.output, io::write_cmml(r.sequence));
+    io::write_cmml_file(opt.output, r.sequence);  // streamed: a large fold's text is never whole in memory
     std::cerr << "wrote " << opt.output << '\n';
   }
   if (opt.json) print_json(fold_json(opt, r, write));

@@ -23,7 +23,7 @@ packages=(
   cmake g++ make ccache
   libeigen3-dev libboost-dev libboost-graph-dev
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
-  libtinyxml2-dev nlohmann-json3-dev libcli11-dev libcgal-dev
+  libtinyxml2-dev nlohmann-json3-dev libcli11-dev libcgal-dev zlib1g-dev
   libompl-dev libode-dev libfcl-dev libccd-dev
   coinor-libclp-dev pkg-config libcpp-httplib-dev libsuitesparse-dev
   "$@"

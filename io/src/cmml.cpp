@@ -3,17 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string_view>
 
 #include <tinyxml2.h>
 
+#include "atomic_file.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/number_format.hpp"
 #include "foldkit/io/parse_error.hpp"
 #include "foldkit/io/xml_reader.hpp"
+#include "gzip_stream.hpp"
 #include "text_lines.hpp"
 
 namespace foldkit::io {
@@ -102,54 +104,113 @@ struct CmmlReading {
 // Files from this size on are read a slice at a time (parse_cmml_sliced).
 constexpr std::size_t kSlicedFrom = std::size_t(4) << 20;
 constexpr std::size_t kSliceBytes = std::size_t(1) << 20;
+// How much text a sliced reading takes from its source at a time.
+constexpr std::size_t kPullBytes = std::size_t(256) << 10;
 
-}  // namespace
+// Where a sliced reading's text comes from: appends the next piece to `buffer`; false, appending
+// nothing, once the text is all read. A file's read errors (corrupt gzip data) are thrown as
+// they come, at their line.
+using Pull = std::function<bool(std::string& buffer)>;
 
-namespace detail {
+// The text a sliced reading has pulled and not yet read: `text` from `start` on.
+struct Pending {
+  const Pull& pull;
+  std::string text;
+  std::size_t start = 0;
 
-std::optional<geometry::FoldSequence> parse_cmml_sliced(const std::string& text, const std::string& name, std::size_t slice_bytes) {
-  // Only the plain shape foldkit writes: an optional declaration, <CMML>, then elements and text
-  // with no comment, CDATA section, processing instruction or DOCTYPE (whose text could hold
-  // "</Fold>"), and nothing after </CMML>. Anything else is read whole.
-  const std::size_t open = text.find("<CMML>");
-  const std::size_t close = text.rfind("</CMML>");
-  if (open == std::string::npos || close == std::string::npos || close < open) return std::nullopt;
-  std::string_view prefix(text.data(), open);
+  std::string_view rest() const { return std::string_view(text).substr(start); }
+  // Where `what` is in rest(), at or after `from`, pulling more as needed; npos when the text ends first.
+  std::size_t find(std::string_view what, std::size_t from) {
+    for (std::size_t searched = from;;) {
+      const std::size_t at = rest().find(what, searched);
+      if (at != std::string_view::npos) return at;
+      // A match may begin in the last few bytes and end in the next piece.
+      searched = std::max(from, rest().size() >= what.size() ? rest().size() - what.size() + 1 : 0);
+      if (!more()) return std::string_view::npos;
+    }
+  }
+  // Pulls one more piece, first dropping the text read when that is most of it (amortised: each
+  // byte is moved about once however small the slices).
+  bool more() {
+    if (start > 0 && start >= text.size() / 2) {
+      text.erase(0, start);
+      start = 0;
+    }
+    return pull(text);
+  }
+  void consume(std::size_t n) { start += n; }
+};
+
+// Whether the text before <CMML> is what foldkit writes: a byte order mark, an XML declaration,
+// white space.
+bool plain_prefix(std::string_view prefix) {
   if (prefix.substr(0, 3) == "\xEF\xBB\xBF") prefix.remove_prefix(3);
   if (prefix.substr(0, 5) == "<?xml") {
     const std::size_t end = prefix.find("?>");
-    if (end == std::string_view::npos) return std::nullopt;
+    if (end == std::string_view::npos) return false;
     prefix.remove_prefix(end + 2);
   }
-  const std::string_view body(text.data() + open + 6, close - open - 6);
-  if (!detail::blank(prefix) || !detail::blank(std::string_view(text).substr(close + 7)) || body.find("<!") != std::string_view::npos ||
-      body.find("<?") != std::string_view::npos || body.find("<CMML") != std::string_view::npos || body.find("</CMML") != std::string_view::npos)
-    return std::nullopt;
+  return detail::blank(prefix);
+}
+
+// Whether a piece of <CMML>'s body is free of what could hide "</Fold>" (a comment, CDATA, a
+// processing instruction, a DOCTYPE) or nest another <CMML>.
+bool plain_body(std::string_view body) {
+  for (const char* what : {"<!", "<?", "<CMML", "</CMML"})
+    if (body.find(what) != std::string_view::npos) return false;
+  return true;
+}
+
+// The sliced reading of parse_cmml_sliced, from any source: the text is pulled as the slices
+// need it, so that a file is never in memory whole.
+std::optional<geometry::FoldSequence> read_sliced(const Pull& pull, const std::string& name, std::size_t slice_bytes) {
+  // Only the plain shape foldkit writes: an optional declaration, <CMML>, then elements and text
+  // with no comment, CDATA section, processing instruction or DOCTYPE (whose text could hold
+  // "</Fold>"), and nothing after </CMML>. Anything else is read whole.
+  Pending pending{pull, {}};
+  const std::size_t open = pending.find("<CMML>", 0);
+  if (open == std::string_view::npos || !plain_prefix(pending.rest().substr(0, open))) return std::nullopt;
+  const std::string head(pending.rest().substr(0, open));
+  pending.consume(open + 6);
+  int line = detail::line_at(head, head.size());
   CmmlReading reading;
-  int line = line_at(text, open);
-  try {
-    for (std::size_t at = 0; at < body.size();) {
-      std::size_t end = std::min(body.size(), at + std::max<std::size_t>(slice_bytes, 1));
-      if (end < body.size()) {
-        const std::size_t fold_end = body.find("</Fold>", end);
-        end = fold_end == std::string_view::npos ? body.size() : fold_end + 7;
-      }
-      // The slice keeps its lines: it starts on the line <CMML> or the last slice ended on.
-      const std::string piece = (at == 0 ? text.substr(0, open) : std::string()) + "<CMML>" + std::string(body.substr(at, end - at)) + "</CMML>";
-      const detail::XmlInput in(piece, name, at == 0 ? 1 : line);
-      reading.read(in, in.root("CMML"));
-      line += static_cast<int>(std::count(body.begin() + at, body.begin() + end, '\n'));
-      at = end;
+  for (bool first = true, last = false; !last; first = false) {
+    // At least slice_bytes of <Fold> elements, up to the end of one; the rest when none ends later.
+    const std::size_t fold_end = pending.find("</Fold>", std::max<std::size_t>(slice_bytes, 1));
+    last = fold_end == std::string_view::npos;
+    std::string_view body = pending.rest();
+    if (last) {
+      const std::size_t close = body.rfind("</CMML>");
+      if (close == std::string_view::npos || !detail::blank(body.substr(close + 7))) return std::nullopt;
+      body = body.substr(0, close);
+    } else {
+      body = body.substr(0, fold_end + 7);
     }
-  } catch (const ParseError&) {
-    return std::nullopt;  // the whole file's reading says what is wrong, and where
+    if (!plain_body(body)) return std::nullopt;
+    // The slice keeps its lines: it starts on the line <CMML> or the last slice ended on.
+    const std::string piece = (first ? head : std::string()) + "<CMML>" + std::string(body) + "</CMML>";
+    try {
+      const detail::XmlInput in(piece, name, first ? 1 : line);
+      reading.read(in, in.root("CMML"));
+    } catch (const ParseError&) {
+      return std::nullopt;  // the whole file's reading says what is wrong, and where
+    }
+    line += static_cast<int>(std::count(body.begin(), body.end(), '\n'));
+    pending.consume(body.size());
   }
   return geometry::make_sequence(std::move(reading.title), std::move(reading.folds));
 }
 
-}  // namespace detail
-
-namespace {
+// A Pull over `text`, a piece at a time.
+Pull pull_from(const std::string& text) {
+  return [&text, at = std::size_t(0)](std::string& buffer) mutable {
+    if (at >= text.size()) return false;
+    const std::size_t n = std::min(kPullBytes, text.size() - at);
+    buffer.append(text, at, n);
+    at += n;
+    return true;
+  };
+}
 
 geometry::FoldSequence parse_cmml_whole(const std::string& text, const std::string& name) {
   detail::XmlInput in(text, name);
@@ -158,7 +219,37 @@ geometry::FoldSequence parse_cmml_whole(const std::string& text, const std::stri
   return geometry::make_sequence(std::move(reading.title), std::move(reading.folds));
 }
 
+// The text of `sequence` handed to `sink` about a megabyte at a time: write_cmml gathers it,
+// write_cmml_file streams it to the file, so that the two write the same bytes.
+void emit_cmml(const geometry::FoldSequence& sequence, const std::function<void(std::string_view)>& sink) {
+  constexpr std::size_t kFlushBytes = std::size_t(1) << 20;
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<CMML>\n";
+  out += "  <Title>" + detail::escape_xml(sequence.title) + "</Title>\n";
+  for (const auto& event : sequence.events) {
+    const std::string number = std::to_string(event.number);
+    for (const auto& f : event.folds) {
+      out += "  <Fold>\n    <EventNumber>" + number + "</EventNumber>\n    <ID>" + std::to_string(f.joint_id) +
+             "</ID>\n    <FoldAngle>" + angle_text(f) + "</FoldAngle>\n    <Velocity>" + speed_text(f) +
+             "</Velocity>\n  </Fold>\n";
+      if (out.size() >= kFlushBytes) {
+        sink(out);
+        out.clear();
+      }
+    }
+  }
+  out += "</CMML>\n";
+  sink(out);
+}
+
 }  // namespace
+
+namespace detail {
+
+std::optional<geometry::FoldSequence> parse_cmml_sliced(const std::string& text, const std::string& name, std::size_t slice_bytes) {
+  return read_sliced(pull_from(text), name, slice_bytes);
+}
+
+}  // namespace detail
 
 // A CMML of thousands of folds (projected folding writes every crease at every step: 308,000
 // <Fold> elements, 49 MB, for a Miura-ori 40 × 40) is read a slice of elements at a time, so that
@@ -170,19 +261,37 @@ geometry::FoldSequence parse_cmml(const std::string& text, const std::string& na
   return parse_cmml_whole(text, name);
 }
 
-geometry::FoldSequence read_cmml(const std::string& path) { return parse_cmml(read_file(path), path); }
+// The file is pulled as the slices need it, plain or gzip-compressed alike, so that neither its
+// text nor its compressed bytes are in memory whole; a small file, or one the slices decline
+// (to be read whole for its error), is read whole as parse_cmml reads it.
+geometry::FoldSequence read_cmml(const std::string& path) {
+  detail::TextReader in(path);
+  std::string head;
+  while (head.size() < kSlicedFrom && in.read(head, kSlicedFrom - head.size())) {
+  }
+  if (head.size() < kSlicedFrom) return parse_cmml_whole(head, path);
+  bool head_given = false;
+  const Pull pull = [&](std::string& buffer) {
+    if (head_given) return in.read(buffer, kPullBytes);
+    head_given = true;
+    buffer += head;
+    head = std::string();  // its memory back: the slices hold the text from here on
+    return true;
+  };
+  if (auto sequence = read_sliced(pull, path, kSliceBytes)) return std::move(*sequence);
+  return parse_cmml_whole(read_file(path), path);
+}
+
+void write_cmml_file(const std::string& path, const geometry::FoldSequence& sequence) {
+  detail::AtomicFile file(path);
+  emit_cmml(sequence, [&file](std::string_view piece) { file.write(piece); });
+  file.commit();
+}
 
 std::string write_cmml(const geometry::FoldSequence& sequence) {
-  std::ostringstream out;
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<CMML>\n";
-  out << "  <Title>" << detail::escape_xml(sequence.title) << "</Title>\n";
-  for (const auto& event : sequence.events)
-    for (const auto& f : event.folds)
-      out << "  <Fold>\n    <EventNumber>" << event.number << "</EventNumber>\n    <ID>" << f.joint_id
-          << "</ID>\n    <FoldAngle>" << angle_text(f) << "</FoldAngle>\n    <Velocity>" << speed_text(f)
-          << "</Velocity>\n  </Fold>\n";
-  out << "</CMML>\n";
-  return out.str();
+  std::string text;
+  emit_cmml(sequence, [&text](std::string_view piece) { text += piece; });
+  return text;
 }
 
 }  // namespace foldkit::io

@@ -9,6 +9,7 @@
 #include "foldkit/io/fold_format.hpp"
 #include "foldkit/io/pmml.hpp"
 #include "foldkit/io/svg.hpp"
+#include "gzip_stream.hpp"
 
 namespace foldkit::io {
 
@@ -61,9 +62,12 @@ const std::vector<FileFormat>& file_formats() {
   return all;
 }
 
+// A compressed file is its format's (X.cmml.gz is CMML): the suffix is stripped here, once, for
+// every caller; writing compresses by it (AtomicFile), reading by the file's first bytes.
 const FileFormat* format_of(const std::string& path) {
+  const std::string name = detail::without_gzip_suffix(path);
   for (const FileFormat& f : file_formats())
-    if (has_extension(path, f.extension)) return &f;
+    if (has_extension(name, f.extension)) return &f;
   return nullptr;
 }
 

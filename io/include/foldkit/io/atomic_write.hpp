@@ -17,14 +17,19 @@ class WriteError : public std::runtime_error {
 /// Writes to a temporary file beside `path`, then renames it over `path`: readers never see a
 /// partial file, and a failure leaves any old file untouched. A symbolic link is followed (its
 /// target is replaced); an existing file keeps its permissions, a new one gets those the umask
-/// allows. The data is synced to disk before the rename.
+/// allows. The data is synced to disk before the rename. When `path` ends in `.gz` (`X.cmml.gz`,
+/// `X.fold.gz`, any case), the file holds `content` gzip-compressed, a chunk at a time
+/// (docs/FORMATS.md, "Compressed files").
 /// @param path     the file to write
-/// @param content  its bytes
+/// @param content  its bytes (uncompressed)
 /// @throws WriteError when any step fails (the temporary file is removed)
 void write_file_atomic(const std::string& path, const std::string& content);
 
-/// Whole file as bytes.
-/// @throws ParseError (path, line 0) when it cannot be opened or read, or is a directory
+/// Whole file as bytes, decompressed when it is gzip-compressed (it starts with gzip's magic bytes
+/// 1f 8b, whatever its name).
+/// @throws ParseError (path, line 0) when it cannot be opened or read, or is a directory; for
+///         compressed data that is corrupt or cut short, at the line its text reached
+///         ("FILE:LINE: truncated gzip data: …")
 std::string read_file(const std::string& path);
 
 }  // namespace foldkit::io

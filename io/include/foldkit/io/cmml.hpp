@@ -17,8 +17,12 @@ namespace foldkit::io {
 /// @param name  the file name used in error messages
 /// @throws ParseError for anything that is not CMML, at the offending line
 geometry::FoldSequence parse_cmml(const std::string& text, const std::string& name);
-/// Reads and parses the CMML file at `path`.
-/// @throws ParseError when the file cannot be read or is not CMML
+/// Reads and parses the CMML file at `path`, gzip-compressed when it starts with gzip's magic bytes
+/// (1f 8b), whatever its name. A large file is read a slice at a time as parse_cmml() reads it, the
+/// file's text pulled as the slices need it, so that neither the text nor the compressed file is
+/// in memory whole.
+/// @throws ParseError when the file cannot be read or is not CMML; for compressed data that is
+///         corrupt or cut short, at the line its text reached
 geometry::FoldSequence read_cmml(const std::string& path);
 
 /// The CMML text of `sequence`. Angles are clamped to [−π, π] and written in degrees; angles
@@ -28,6 +32,13 @@ geometry::FoldSequence read_cmml(const std::string& path);
 /// @throws std::invalid_argument for a non-finite angle or speed, a speed ≤ 0, or one
 ///         whose degrees overflow or are too small to read back as positive
 std::string write_cmml(const geometry::FoldSequence& sequence);
+
+/// Writes the CMML text of `sequence` (the bytes of write_cmml()) to `path` a piece at a time, as
+/// write_file_atomic() writes: to a temporary renamed over `path`, gzip-compressed when `path`
+/// ends in `.gz`. Nothing is left at `path` when it fails.
+/// @throws std::invalid_argument as write_cmml() does
+/// @throws WriteError when the file cannot be written
+void write_cmml_file(const std::string& path, const geometry::FoldSequence& sequence);
 
 namespace detail {
 

@@ -58,7 +58,8 @@ struct FileFormat {
 /// Every format, in a fixed order (PMML, CMML, FOLD, SVG, .cp, .opx): the order messages list them in.
 const std::vector<FileFormat>& file_formats();
 
-/// The format of `path` by its extension, ignoring case; null when no format has it.
+/// The format of `path` by its extension, ignoring case and a trailing `.gz` (`X.cmml.gz` is CMML,
+/// written gzip-compressed; docs/FORMATS.md, "Compressed files"); null when no format has it.
 const FileFormat* format_of(const std::string& path);
 
 /// The extensions of the formats `which` accepts, as a message lists them: ".pmml or .fold",
