@@ -93,8 +93,11 @@ bool FoldValidity::expired() const {
 }
 
 bool FoldValidityChecker::isValid(const ob::State* state) const {
+  // Not ended by a TimeLimit: a state's verdict must not change while a planner holds it
+  // (SPARStwo asserts that a state it found valid still is, and aborted when the limit passed in
+  // between); the motions' verdicts end the loops the limit is for.
   thread_local geometry::FoldState f;
-  return !validity_->expired() && reader_(state, f) && validity_->valid(f);
+  return reader_(state, f) && validity_->valid(f);
 }
 
 FoldMotionValidator::FoldMotionValidator(const ob::SpaceInformationPtr& si, std::shared_ptr<const FoldValidity> validity,

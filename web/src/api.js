@@ -24,8 +24,9 @@ async function answer(response) {
   return body;
 }
 
-// The server runs one verb at a time and answers 503 to a second: the page queues its own
-// verbs, and waits out another client's (up to a minute).
+// The server runs a few verbs at once (foldkit serve --workers), queues more (--queue) and answers
+// 503 only past its queue: the page sends its own verbs one after another, and waits out a busy
+// server (up to a minute).
 let queue = Promise.resolve();
 
 async function post(name, args) {

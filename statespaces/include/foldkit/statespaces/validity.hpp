@@ -68,9 +68,10 @@ class FoldValidity {
     std::unique_ptr<simulation::CollisionWorld> world_;  // null: collisions are not checked
   };
 
-  /// While it lives, the OMPL checkers on this validity (FoldValidityChecker,
-  /// FoldMotionValidator) call every state and motion invalid once its deadline has passed;
-  /// destroying it restores the limit it replaced. valid() and Motion are not affected.
+  /// While it lives, FoldMotionValidator calls every motion invalid once its deadline has
+  /// passed; destroying it restores the limit it replaced. States keep their verdicts
+  /// (FoldValidityChecker, valid() and Motion are not affected): a planner may recheck a state it
+  /// holds, and OMPL's SPARStwo asserts that the answer has not changed.
   class TimeLimit {
    public:
     /// Sets `validity`'s deadline, remembering the one it replaces.
@@ -87,7 +88,7 @@ class FoldValidity {
   };
   /// Whether a TimeLimit's deadline has passed. OMPL's planners stop at their termination
   /// condition, but some loops never consult it (RRTConnect connects to the other tree until it
-  /// is trapped: with a tiny `range`, for hours); once every state is invalid they end at once.
+  /// is trapped: with a tiny `range`, for hours); once every motion is invalid they end at once.
   bool expired() const;
 
   /// The pattern whose states are checked.
