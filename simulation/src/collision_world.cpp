@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <deque>
-#include <unordered_map>
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -12,6 +10,7 @@
 
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/geometry/triangle_overlap.hpp"
+#include "facet_chain.hpp"
 #include "facet_mesh.hpp"
 #include "grid_broad_phase.hpp"
 #include "triangle_crossing.hpp"
@@ -99,9 +98,9 @@ struct CollisionWorld::Impl {
   std::vector<long> reach_stamp;
   long reach_epoch = 0;
   int reach_from = -1;
-  // Chains between pairs (PairState::chain), as steps (joint << 1 | k): into actor actors[k] of
-  // joint `joint`. A chain holding only kNoChain means none within reach (the given poses are used).
-  static constexpr int kNoChain = -1;
+  // Chains between pairs (detail::chain_steps, kept in chain_pool). A chain holding only kNoChain
+  // means none within reach (the given poses are used).
+  static constexpr int kNoChain = detail::kNoChain;
   // Farthest a chain search looks, in facets visited: a pair this far apart in the sheet is not
   // held together by a few loops, and its placement by the tree is as good as any.
   static constexpr std::size_t kMaxVisited = 256;
@@ -242,11 +241,6 @@ struct CollisionWorld::Impl {
     return enter[step];
   }
 
-  // Breadth-first from a to b over the facet graph's creases, in crease order, so the chain is the
-  // same whatever the actors' numbering when it is the only shortest one (round a vertex, it is
-  // one of two of equal length, which differ by that vertex's closure error alone). Written out
-  // rather than boost::breadth_first_search because it stops at b or after kMaxVisited facets,
-  // which a BGL visitor can do only by throwing.
   PairState& pair(int a, int b) {
     auto& list = slots[a];
     auto it = std::lower_bound(list.begin(), list.end(), std::make_pair(b, -1));
@@ -265,40 +259,13 @@ struct CollisionWorld::Impl {
   Steps chain(int a, int b) { return chain(a, b, pair(a, b)); }
   Steps chain(int a, int b, PairState& ps) {
     if (ps.chain_begin < 0) {
-      const std::vector<int> steps = search_chain(a, b);
+      const std::vector<int> steps = detail::chain_steps(*pattern, a, b, kMaxVisited);
       ps.chain_begin = static_cast<int>(chain_pool.size());
       ps.chain_size = static_cast<int>(steps.size());
       chain_pool.insert(chain_pool.end(), steps.begin(), steps.end());
       for (int step : steps) chain_actors.push_back(step == kNoChain ? -1 : entered(step));
     }
     return {chain_pool.data() + ps.chain_begin, chain_actors.data() + ps.chain_begin, ps.chain_size};
-  }
-  std::vector<int> search_chain(int a, int b) const {
-    std::vector<int> steps;
-    const geometry::FacetGraph& graph = pattern->facet_graph();
-    const auto edge_index = boost::get(boost::edge_index, graph);
-    std::unordered_map<int, int> via;  // actor → step that reached it
-    via.emplace(a, kNoChain);
-    std::deque<int> queue{a};
-    while (!queue.empty() && !via.count(b) && via.size() < kMaxVisited) {
-      const int f = queue.front();
-      queue.pop_front();
-      for (auto [e, end] = boost::out_edges(f, graph); e != end; ++e) {
-        const int j = edge_index[*e], g = static_cast<int>(boost::target(*e, graph));
-        if (via.count(g)) continue;
-        via.emplace(g, (j << 1) | (pattern->joints()[j].actors[0] == g ? 0 : 1));
-        queue.push_back(g);
-      }
-    }
-    if (!via.count(b)) return {kNoChain};
-    for (int f = b; f != a;) {
-      const int step = via.at(f);
-      steps.push_back(step);
-      const auto& joint = pattern->joints()[step >> 1];
-      f = joint.actors[1 - (step & 1)];
-    }
-    std::reverse(steps.begin(), steps.end());
-    return steps;
   }
 
   // b's coordinates in a's: along their chain at the current state, or from the given poses.
