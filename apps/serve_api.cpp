@@ -265,7 +265,12 @@ void ServeApi::get_file(const httplib::Request& req, httplib::Response& res) con
     const std::string name = req.get_param_value("path");
     const fs::path p = paths_.input(name);
     if (fs::file_size(p) > options_.max_file) return refuse(res, 413, name + ": larger than the server returns", kInvalidInput);
-    res.set_content(read_file(p), content_type(name));
+    std::string bytes = read_file(p);
+    // A compressed file (.cmml.gz, told by its magic bytes as io reads it) is sent as stored, as
+    // its format's text with gzip content coding: the browser's fetch decompresses it.
+    const bool gzip = bytes.size() >= 2 && bytes[0] == '\x1f' && bytes[1] == '\x8b';
+    res.set_content(std::move(bytes), content_type(name));
+    if (gzip) res.set_header("Content-Encoding", "gzip");
     res.set_header("X-Content-Type-Options", "nosniff");
     res.set_header("Content-Security-Policy", "sandbox");
   } catch (const PathRefused& e) {
@@ -294,6 +299,10 @@ void ServeApi::put_file(const httplib::Request& req, httplib::Response& res) con
     const std::string name = req.get_param_value("path");
     if (!text_format(name))
       return refuse(res, 400, name + ": the server writes only .pmml, .cmml, .fold, .svg, .loadcase, .json and .csv files");
+    // The server compresses a .gz name itself (io::write_file_atomic): gzip bytes sent as the body
+    // would be stored compressed twice.
+    if (req.body.size() >= 2 && req.body[0] == '\x1f' && req.body[1] == '\x8b')
+      return refuse(res, 400, name + ": send the file's text, not gzip bytes (the server compresses a .gz name itself)");
     const fs::path p = paths_.output(name);
     io::write_file_atomic(p.string(), req.body);
     reply(res, 200, {{"written", paths_.relative(p)}, {"bytes", req.body.size()}});

@@ -51,6 +51,15 @@ ob::PlannerPtr entry_planner(const std::string& entry, const BenchScene& scene, 
   return p;
 }
 
+// The objective an entry's planner needs on its problem (planners::informed_objective), null for
+// none; "X+Carpenter" is X's.
+ob::OptimizationObjectivePtr entry_objective(const std::string& entry, const ob::SpaceInformationPtr& si) {
+  std::string name = planner_and_space(entry).first;
+  if (const std::string inner = fallback_inner(name); !inner.empty()) name = inner;
+  if (is_deterministic_planner(name)) return nullptr;
+  return planners::informed_objective(name, si);
+}
+
 namespace {
 
 ob::PlannerPtr bench_planner(const std::string& name, const BenchScene& scene, const PlanSetup& setup,

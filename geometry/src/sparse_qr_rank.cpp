@@ -86,7 +86,8 @@ double smallest_singular_value(const Eigen::SparseMatrix<double>& t) {
     q = qr.householderQ() * Eigen::MatrixXd::Identity(n, k);
     const Eigen::MatrixXd tq = t * q;
     sigma = Eigen::JacobiSVD<Eigen::MatrixXd>(tq).singularValues().minCoeff();
-    if (std::abs(sigma - previous) <= 1e-2 * sigma) break;
+    // At least three iterations: a first step that barely moves the Ritz value has not converged.
+    if (it >= 3 && std::abs(sigma - previous) <= 1e-2 * sigma) break;
     previous = sigma;
     Eigen::MatrixXd y = upper.transpose().solve(q);  // Tᵀy = q
     q = upper.solve(y);                              // T z = y: z = (TᵀT)⁻¹q

@@ -19,7 +19,6 @@
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/planners/plan_space.hpp"
 #include "foldkit/statespaces/validity.hpp"
-#include "path_length.hpp"
 #include "plan_finish.hpp"
 
 namespace foldkit::planners {
@@ -49,8 +48,6 @@ void set_start_and_goal(const PlanSetup& setup, og::SimpleSetup& ss, const FoldS
     throw PlanInputError(PlanInputError::End::Goal, std::string("plan: the goal is a singular state of the ") + setup.plan_space->name() +
                                                         " space (try --space projected)");
   ss.setStartAndGoalStates(s, g, 1e-9);
-  // Path length, as OMPL's default, with an informed sampler that works on these spaces.
-  ss.setOptimizationObjective(std::make_shared<detail::PathLength>(ss.getSpaceInformation()));
   setup.plan_space->anchor(s.get(), g.get());
 }
 
@@ -169,6 +166,7 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanOptions
   }
   ss.setPlanner(planner);
   set_start_and_goal(setup, ss, setup.goal);
+  if (auto objective = informed_objective(options.planner, setup.si)) ss.setOptimizationObjective(objective);
   ss.setup();
 
   const auto t0 = std::chrono::steady_clock::now();

@@ -1,5 +1,7 @@
 #include "foldkit/planners/planner_factory.hpp"
 
+#include "path_length.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <functional>
@@ -85,6 +87,8 @@ struct Entry {
   // foldkit's defaults where OMPL's do not fit a crease pattern (NAME=VALUE, space-separated),
   // set before the caller's parameters (docs/PLANNING.md, "Planners")
   const char* defaults = "";
+  // Draws from the objective's informed sampler: needs informed_objective() on foldkit's spaces
+  bool informed = false;
 };
 
 // SORRT* fills ordered batches from the informed sampler without looking at the time limit; by
@@ -117,13 +121,15 @@ const std::vector<Entry>& table() {
       {"BFMT", "BFMT*", make<og::BFMT>()},          {"SST", "", make<og::SST>(), false, "", false, "selection_radius=0.3 pruning_radius=0.02"},
       {"RLRT", "", make<og::RLRT>()},               {"BiRLRT", "", make<og::BiRLRT>()},
       // Issue 38: the rest of OMPL 1.5.2's geometric planners.
-      {"BIT*", "BITstar", make<og::BITstar>()},     {"ABIT*", "ABITstar", make<og::ABITstar>()},
-      {"AIT*", "AITstar", make<og::AITstar>()},     {"InformedRRT*", "InformedRRTstar", make<og::InformedRRTstar>()},
-      {"SORRT*", "SORRTstar", make<og::SORRTstar>(), false, "", true}, {"RRTXstatic", "", make<og::RRTXstatic>()},
+      {"BIT*", "BITstar", make<og::BITstar>(), false, "", false, "", true},
+      {"ABIT*", "ABITstar", make<og::ABITstar>(), false, "", false, "", true},
+      {"AIT*", "AITstar", make<og::AITstar>(), false, "", false, "", true},
+      {"InformedRRT*", "InformedRRTstar", make<og::InformedRRTstar>(), false, "", false, "", true},
+      {"SORRT*", "SORRTstar", make<og::SORRTstar>(), false, "", true, "", true}, {"RRTXstatic", "", make<og::RRTXstatic>()},
       {"LazyLBTRRT", "", make<og::LazyLBTRRT>()},   {"SPARS", "", make<og::SPARS>(), false, "", false, "sparse_delta_fraction=0.5"},
       {"SPARStwo", "", make<og::SPARStwo>()},       {"QRRT", "", make_qrrt()},
       {"pRRT", "", make<og::pRRT>(), true},         {"pSBL", "", make<og::pSBL>(), true},
-      {"CForest", "", make<og::CForest>(), true},   {"AnytimePathShortening", "APS", make<og::AnytimePathShortening>(), true},
+      {"CForest", "", make<og::CForest>(), true, "", false, "", true},   {"AnytimePathShortening", "APS", make<og::AnytimePathShortening>(), true},
       {"TSRRT", "", nullptr, false,
        "TSRRT grows its tree in a task space that the caller defines (a TaskSpaceConfig: a projection of "
        "the state and its inverse); a crease pattern names no such task space"},
@@ -230,5 +236,10 @@ std::vector<std::string> planner_names() {
 std::string canonical_planner(const std::string& name) { return find(name).name; }
 
 bool planner_is_threaded(const std::string& name) { return find(name).threaded; }
+
+ompl::base::OptimizationObjectivePtr informed_objective(const std::string& name, const ompl::base::SpaceInformationPtr& si) {
+  if (!find(name).informed) return nullptr;
+  return std::make_shared<detail::PathLength>(si);
+}
 
 }  // namespace foldkit::planners

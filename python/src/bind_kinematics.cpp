@@ -70,7 +70,7 @@ void bind_mobility(py::module_& m) {
       .def_property_readonly("method", [](const DofReport& d) { return d.mobility.method; },
                              "'dense-svd', 'sparse-qr', 'inverse-subspace' or 'none' (no loop)."
                              " sparse-qr: largest_zero_singular_value is an upper bound and"
-                             " smallest_kept_singular_value an estimate from below.")
+                             " smallest_kept_singular_value an estimate (a lower bound once its iteration converged).")
       .def_property_readonly("largest_zero_singular_value", [](const DofReport& d) { return d.mobility.decision.largest_zero; },
                              "Largest singular value counted as zero.")
       .def_property_readonly("smallest_kept_singular_value", [](const DofReport& d) { return d.mobility.decision.smallest_kept; },

@@ -12,6 +12,7 @@
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "folded_state.hpp"
+#include "test_time.hpp"
 
 namespace {
 
@@ -73,6 +74,27 @@ TEST(PlannerNames, FoldkitDefaultsAreSetAndCanBeOverridden) {
   EXPECT_EQ(std::stod(sst->params().getParam("pruning_radius")->getValue()), 0.02);
   fp::set_planner_params(*sst, "SST", {{"selection_radius", "0.7"}});
   EXPECT_EQ(std::stod(sst->params().getParam("selection_radius")->getValue()), 0.7);
+}
+
+// The informed planners plan on foldkit's own spaces (OMPL's direct informed sampler threw there),
+// and the objective they need is theirs alone: PRM, given none, still stops at its first path
+// instead of running out its time (it did when every plan set path length with a zero threshold).
+TEST(PlannerNames, InformedPlannersPlanAndPrmStopsAtItsFirstPath) {
+  const CreasePattern p = build_or_throw(gen::miura(4, 4));
+  const FoldState goal = foldkit::test::folded_along_assignment(p, 0.8);
+  for (const char* name : {"BIT*", "InformedRRT*", "PRM"}) {
+    SCOPED_TRACE(name);
+    fp::PlanOptions o;
+    o.planner = name;
+    const bool optimises = std::string(name) == "InformedRRT*";  // to the limit: it must get a short one
+    o.time = optimises ? foldkit::test::scaled_seconds(3.0) : 30.0;
+    o.seed = 3;
+    o.fallback = false;
+    const fp::PlanResult r = fp::plan(p, goal, o);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_TRUE(r.replay.has_value() && r.replay->status.ok());
+    if (!optimises) EXPECT_LT(r.seconds, 10.0);
+  }
 }
 
 // Threaded planners are not reproducible from the seed (their threads race), so each gets three

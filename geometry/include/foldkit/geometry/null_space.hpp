@@ -32,7 +32,9 @@ struct RankDecision {
   double smallest_kept = std::numeric_limits<double>::infinity();  ///< smallest counted as non-zero (∞ when none is)
   /// "dense-svd", "sparse-qr", "inverse-subspace", or "none" for a Jacobian without rows or
   /// entries. For "sparse-qr", largest_zero is an upper bound (the norm of what the QR dropped)
-  /// and smallest_kept an estimate from below to within 1e-2 (LeastNormSolver::decide_rank).
+  /// and smallest_kept an estimate: σ_min of R's live triangle by inverse iteration (converged
+  /// to 1e-2, from above) less that norm, a lower bound on σ_rank once converged
+  /// (LeastNormSolver::decide_rank).
   std::string method;
   /// smallest_kept / largest_zero (largest_zero floored at 1e-16·σ_max): how far the decision is
   /// from the tolerance on both sides; a decision with a gap near 1 is a guess.

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/Planner.h>
 #include <ompl/base/SpaceInformation.h>
 
@@ -52,6 +53,14 @@ std::string planner_refusal(const std::string& name);
 /// The canonical name of a planner.
 /// @throws std::invalid_argument for an unknown one
 std::string canonical_planner(const std::string& name);
+/// The objective a plan with this planner sets on its problem: for the planners that draw from the
+/// objective's informed sampler (BIT*, ABIT*, AIT*, InformedRRT*, SORRT*, CForest), path length
+/// with an informed sampler that works on foldkit's spaces (OMPL's direct one throws on the
+/// single-vertex and driving spaces; docs/PLANNING.md, "Planners"); null for every other planner,
+/// which then picks its own default as OMPL does (PRM stops at its first path, TRRT weighs
+/// mechanical work).
+/// @throws std::invalid_argument for an unknown planner
+ompl::base::OptimizationObjectivePtr informed_objective(const std::string& name, const ompl::base::SpaceInformationPtr& si);
 /// Whether the planner runs threads of its own (PRM, PRM*, pRRT, pSBL, CForest,
 /// AnytimePathShortening: their plans are not reproducible from the seed).
 /// @throws std::invalid_argument for an unknown planner
