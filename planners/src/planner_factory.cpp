@@ -31,7 +31,6 @@
 #include <ompl/geometric/planners/prm/PRMstar.h>
 #include <ompl/geometric/planners/prm/SPARS.h>
 #include <ompl/geometric/planners/prm/SPARStwo.h>
-#include <ompl/geometric/planners/quotientspace/QRRT.h>
 #include <ompl/geometric/planners/rlrt/BiRLRT.h>
 #include <ompl/geometric/planners/rlrt/RLRT.h>
 #include <ompl/geometric/planners/rrt/BiTRRT.h>
@@ -62,15 +61,6 @@ namespace {
 template <class P>
 Make make() {
   return [](const ompl::base::SpaceInformationPtr& si) { return std::make_shared<P>(si); };
-}
-
-// The multilevel planner on one level: the space itself (foldkit's spaces are not products of
-// simpler ones, so there is no coarser quotient to give it).
-Make make_qrrt() {
-  return [](const ompl::base::SpaceInformationPtr& si) {
-    std::vector<ompl::base::SpaceInformationPtr> levels{si};
-    return std::make_shared<og::QRRT>(levels);
-  };
 }
 
 // One row per geometric planner OMPL 1.5.2 ships (ompl/geometric/planners/), so that a name is
@@ -127,7 +117,10 @@ const std::vector<Entry>& table() {
       {"InformedRRT*", "InformedRRTstar", make<og::InformedRRTstar>(), false, "", false, "", true},
       {"SORRT*", "SORRTstar", make<og::SORRTstar>(), false, "", true, "", true}, {"RRTXstatic", "", make<og::RRTXstatic>()},
       {"LazyLBTRRT", "", make<og::LazyLBTRRT>()},   {"SPARS", "", make<og::SPARS>(), false, "", false, "sparse_delta_fraction=0.5"},
-      {"SPARStwo", "", make<og::SPARStwo>()},       {"QRRT", "", make_qrrt()},
+      {"SPARStwo", "", make<og::SPARStwo>()},       {"QRRT", "", nullptr, false,
+       "OMPL 1.5.2's multilevel planners leak: MultiQuotient allocates each level's planner and its "
+       "nearest-neighbour structure and never frees them (LeakSanitizer), and foldkit's spaces offer "
+       "no coarser levels, so on one level it would be RRT with extra steps"},
       {"pRRT", "", make<og::pRRT>(), true},         {"pSBL", "", make<og::pSBL>(), true},
       {"CForest", "", make<og::CForest>(), true, "", false, "", true},   {"AnytimePathShortening", "APS", make<og::AnytimePathShortening>(), true},
       {"TSRRT", "", nullptr, false,

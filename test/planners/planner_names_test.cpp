@@ -59,7 +59,7 @@ TEST(PlannerNames, EachIsMadeOrRefusedWithItsReason) {
       EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
     }
   }
-  EXPECT_EQ(refused, 5);  // TSRRT, VFRRT, XXL and the two experience planners
+  EXPECT_EQ(refused, 6);  // QRRT, TSRRT, VFRRT, XXL and the two experience planners
   EXPECT_THROW(fp::make_planner("NoSuchPlanner", si), std::invalid_argument);
 }
 
