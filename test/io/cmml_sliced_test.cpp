@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "fold_sequence_equal.hpp"
+
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
 
@@ -30,21 +32,7 @@ std::string written(int events, int joints, const std::string& title = "sliced")
   return io::write_cmml(s);
 }
 
-void expect_same(const geometry::FoldSequence& a, const geometry::FoldSequence& b) {
-  EXPECT_EQ(a.title, b.title);
-  ASSERT_EQ(a.events.size(), b.events.size());
-  for (std::size_t e = 0; e < a.events.size(); ++e) {
-    EXPECT_EQ(a.events[e].number, b.events[e].number);
-    ASSERT_EQ(a.events[e].folds.size(), b.events[e].folds.size());
-    for (std::size_t f = 0; f < a.events[e].folds.size(); ++f) {
-      const auto &x = a.events[e].folds[f], &y = b.events[e].folds[f];
-      EXPECT_EQ(x.joint_id, y.joint_id);
-      EXPECT_EQ(x.angle, y.angle);
-      EXPECT_EQ(x.speed, y.speed);
-      EXPECT_EQ(x.line, y.line) << "fold " << f << " of event " << e;
-    }
-  }
-}
+using foldkit::test::expect_same;
 
 // The whole reading, or its error.
 std::optional<geometry::FoldSequence> whole(const std::string& text) {

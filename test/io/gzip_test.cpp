@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "fold_sequence_equal.hpp"
+
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
@@ -48,19 +50,7 @@ geometry::FoldSequence sequence(int events, int joints) {
   return s;
 }
 
-void expect_same(const geometry::FoldSequence& a, const geometry::FoldSequence& b) {
-  EXPECT_EQ(a.title, b.title);
-  ASSERT_EQ(a.events.size(), b.events.size());
-  for (std::size_t e = 0; e < a.events.size(); ++e) {
-    EXPECT_EQ(a.events[e].number, b.events[e].number);
-    ASSERT_EQ(a.events[e].folds.size(), b.events[e].folds.size());
-    for (std::size_t f = 0; f < a.events[e].folds.size(); ++f) {
-      const auto &x = a.events[e].folds[f], &y = b.events[e].folds[f];
-      ASSERT_TRUE(x.joint_id == y.joint_id && x.angle == y.angle && x.speed == y.speed && x.line == y.line)
-          << "fold " << f << " of event " << e;
-    }
-  }
-}
+using foldkit::test::expect_same;
 
 // The ParseError reading `path` as CMML throws (fails the test when it throws none).
 io::ParseError cmml_error(const std::string& path) {
