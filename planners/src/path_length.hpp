@@ -12,6 +12,10 @@ namespace foldkit::planners::detail {
 /// state → goal by the space's distance could still beat the best cost. The direct sampler
 /// throws on the single-vertex and driving spaces, and on a constrained space it would sample
 /// the ambient box, off the closure manifold.
+/// Whether OMPL's direct ellipsoidal informed sampler works on the space: real-vector, SE(2) and
+/// SE(3) spaces (the joint box of a sheet without loops); none of foldkit's own.
+bool has_direct_informed_sampler(const ompl::base::SpaceInformationPtr& si);
+
 class PathLength : public ompl::base::PathLengthOptimizationObjective {
  public:
   using ompl::base::PathLengthOptimizationObjective::PathLengthOptimizationObjective;

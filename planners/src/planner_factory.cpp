@@ -89,12 +89,6 @@ constexpr const char* kOrderedBatches =
     "space that sampler works by rejection (there is no direct ellipsoidal sampler for it), so a batch may "
     "never fill: use InformedRRT* or BIT*";
 
-bool direct_informed(const ompl::base::SpaceInformationPtr& si) {
-  const int type = si->getStateSpace()->getType();
-  return type == ompl::base::STATE_SPACE_REAL_VECTOR || type == ompl::base::STATE_SPACE_SE2 ||
-         type == ompl::base::STATE_SPACE_SE3;
-}
-
 const std::vector<Entry>& table() {
   static const std::vector<Entry> t = {
       {"RRTConnect", "", make<og::RRTConnect>()},  {"RRT", "", make<og::RRT>()},
@@ -160,7 +154,7 @@ const Entry& find(const std::string& name) {
 ompl::base::PlannerPtr make_planner(const std::string& name, const ompl::base::SpaceInformationPtr& si) {
   const Entry& e = find(name);
   if (*e.refused) throw PlannerRefused(e.name, e.refused);
-  if (e.needs_direct_informed && !direct_informed(si)) throw PlannerRefused(e.name, kOrderedBatches);
+  if (e.needs_direct_informed && !detail::has_direct_informed_sampler(si)) throw PlannerRefused(e.name, kOrderedBatches);
   ompl::base::PlannerPtr planner = e.make(si);
   std::istringstream defaults(e.defaults);
   std::vector<std::pair<std::string, std::string>> params;
