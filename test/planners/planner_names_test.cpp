@@ -93,7 +93,9 @@ TEST(PlannerNames, InformedPlannersPlanAndPrmStopsAtItsFirstPath) {
     const fp::PlanResult r = fp::plan(p, goal, o);
     ASSERT_TRUE(r.status.ok()) << r.status.message;
     EXPECT_TRUE(r.replay.has_value() && r.replay->status.ok());
-    if (!optimises) EXPECT_LT(r.seconds, 10.0);
+    if (!optimises) {
+      EXPECT_LT(r.seconds, 10.0);
+    }
   }
 }
 
