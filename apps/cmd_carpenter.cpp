@@ -23,6 +23,12 @@ struct CarpenterArgs {
   std::size_t max_steps = folding::CarpenterPlanarOptions{}.max_steps;
 };
 
+// Whether `path` names an output of that extension, plain or gzip-compressed (X.cmml.gz:
+// io::write_file_atomic compresses what it writes to a .gz path, as every other verb's writer).
+bool is_output(const std::string& path, const std::string& extension) {
+  return has_extension(path, extension) || has_extension(path, extension + ".gz");
+}
+
 // A single-vertex crease pattern (PMML or FOLD) in the state of --state (or the FOLD file's own
 // fold angles): flattened on the sphere by the spherical Carpenter's rule.
 int run_spherical(const CarpenterArgs& opt) {
@@ -42,7 +48,7 @@ int run_spherical(const CarpenterArgs& opt) {
     }
   }();
   if (!opt.output.empty()) {
-    if (!has_extension(opt.output, ".cmml")) throw UsageError(opt.output + ": a single vertex's output is CMML (.cmml)");
+    if (!is_output(opt.output, ".cmml")) throw UsageError(opt.output + ": a single vertex's output is CMML (.cmml or .cmml.gz)");
     io::write_file_atomic(opt.output, io::write_cmml(r.folding));
   }
   std::cerr << opt.chain << ": " << (r.status.ok() ? "flattened" : "not flattened") << " in " << r.steps << " steps: " << r.status.message
@@ -62,9 +68,8 @@ int run_spherical(const CarpenterArgs& opt) {
 }
 
 int run_planar(const CarpenterArgs& opt) {
-  if (!opt.output.empty() && !has_extension(opt.output, ".cmml") && !has_extension(opt.output, ".json") &&
-      !has_extension(opt.output, ".csv"))
-    throw UsageError(opt.output + ": unknown output format (expected .cmml, .json or .csv)");
+  if (!opt.output.empty() && !is_output(opt.output, ".cmml") && !is_output(opt.output, ".json") && !is_output(opt.output, ".csv"))
+    throw UsageError(opt.output + ": unknown output format (expected .cmml, .json or .csv, each optionally .gz)");
   folding::PlanarChain chain{io::parse_chain_points(io::read_file(opt.chain), opt.chain), opt.closed};
   try {
     folding::check_simple_chain(chain);
@@ -79,9 +84,9 @@ int run_planar(const CarpenterArgs& opt) {
   const std::vector<folding::Frame2> frames = opt.fold ? folding::reversed(r.frames) : r.frames;
   if (!opt.output.empty()) {
     std::string text;
-    if (has_extension(opt.output, ".cmml"))
+    if (is_output(opt.output, ".cmml"))
       text = io::write_cmml(folding::turning_angle_sequence(frames, opt.closed, opt.chain));
-    else if (has_extension(opt.output, ".json"))
+    else if (is_output(opt.output, ".json"))
       text = io::frames_json(frames, opt.closed);
     else
       text = io::frames_csv(frames);

@@ -74,6 +74,27 @@ TEST(CarpenterCli, OutputExtensionIgnoresCase) {
   EXPECT_GT(frames["frames"].size(), 1u);
 }
 
+// X.cmml.gz as every other verb writes it: gzip's magic bytes, and the same events as the plain
+// file of the same run (read back through the gzip reader of io::read_cmml).
+TEST(CarpenterCli, CompressedCmmlOutputReadsAsThePlainOne) {
+  const std::string chain = write_temp("spiral-gz.txt", kSpiral);
+  const std::string plain = temp_dir() + "/spiral-gz.cmml", packed = temp_dir() + "/spiral-gz.cmml.gz";
+  ASSERT_EQ(foldkit({"carpenter", chain, "-o", plain}).exit, 0);
+  const CliResult r = foldkit({"carpenter", chain, "-o", packed});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const std::string bytes = slurp(packed);
+  ASSERT_GE(bytes.size(), 2u);
+  EXPECT_EQ(static_cast<unsigned char>(bytes[0]), 0x1f);
+  EXPECT_EQ(static_cast<unsigned char>(bytes[1]), 0x8b);
+  const auto a = foldkit::io::parse_cmml(slurp(plain), plain), b = foldkit::io::read_cmml(packed);
+  ASSERT_EQ(a.events.size(), b.events.size());
+  for (std::size_t e = 0; e < a.events.size(); ++e) {
+    ASSERT_EQ(a.events[e].folds.size(), b.events[e].folds.size());
+    for (std::size_t f = 0; f < a.events[e].folds.size(); ++f) EXPECT_EQ(a.events[e].folds[f].angle, b.events[e].folds[f].angle);
+  }
+  EXPECT_EQ(foldkit({"carpenter", chain, "-o", temp_dir() + "/spiral.txt.gz"}).exit, 2);
+}
+
 TEST(CarpenterCli, FoldWritesTheFramesBackwards) {
   const std::string chain = write_temp("spiral2.txt", kSpiral);
   const std::string json = write_temp("fold.json", "");
