@@ -1,0 +1,117 @@
+#pragma once
+/// @file
+/// Planning from experience (issue 38, item 4): OMPL's Lightning framework on foldkit's spaces.
+/// A database keeps the paths of earlier plans on one pattern; a new query recalls the stored path
+/// whose ends are nearest to its own (OMPL's LightningDB, by the space's distance, either
+/// direction), repairs the stretches that are no longer valid with the planner
+/// (og::LightningRetrieveRepair), and plans from scratch only when that fails. Unlike
+/// ompl::tools::Lightning, recall and scratch run one after the other, not racing in two threads,
+/// so that a plan stays a function of its seed.
+///
+/// The file is foldkit's own container around OMPL's PlannerDataStorage records: a text header
+/// that names the space, the size of its states, a fingerprint of the pattern and a CRC-32 of the
+/// records, so that a database of another pattern or space, or a damaged one, is refused with its
+/// reason before OMPL parses a byte of it (docs/PLANNING.md, "Planning from experience").
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <ompl/base/Planner.h>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/geometric/PathGeometric.h>
+
+#include "foldkit/geometry/crease_pattern.hpp"
+
+namespace ompl::tools {
+class LightningDB;
+}
+
+namespace foldkit::planners {
+
+/// A database file that cannot be used: unreadable, damaged, or made for another pattern or
+/// space. what() is "FILE: reason".
+class ExperienceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A fingerprint of a pattern's geometry and creases (FNV-1a over the vertex coordinates, the
+/// joints' actors and the actors' vertex lists): equal for the same pattern read from any file
+/// that holds the same numbers, different (up to hash collisions) otherwise.
+std::uint64_t pattern_fingerprint(const geometry::CreasePattern& pattern);
+
+/// The paths of earlier plans on one pattern in one space: OMPL's LightningDB, loaded from and
+/// saved to foldkit's database file. Not thread-safe.
+class ExperienceDatabase {
+ public:
+  /// An empty database for the states of `si`'s space.
+  /// @param si           the space information of the plan (its space serializes its states)
+  /// @param space_name   the space's name (PlanSpace::name()), kept in the file
+  /// @param fingerprint  pattern_fingerprint() of the pattern, kept in the file
+  ExperienceDatabase(const ompl::base::SpaceInformationPtr& si, std::string space_name, std::uint64_t fingerprint);
+  ~ExperienceDatabase();
+  ExperienceDatabase(const ExperienceDatabase&) = delete;
+  ExperienceDatabase& operator=(const ExperienceDatabase&) = delete;
+
+  /// Adds the paths of a database file's bytes (io::read_file's; the caller reads and writes the
+  /// file, so that planners does no file I/O). Empty bytes add nothing: the first plan with a new
+  /// database starts it.
+  /// @param bytes  the file's content
+  /// @param name   the file's name, for messages
+  /// @throws ExperienceError ("NAME: reason") when the bytes are not a foldkit experience
+  ///         database, are damaged (the CRC, the length, a record OMPL cannot read, a path of
+  ///         fewer than two states), or were written for another pattern or space
+  void read(const std::string& bytes, const std::string& name);
+  /// The database file's bytes: the header, then every path (write them atomically:
+  /// io::write_file_atomic).
+  std::string bytes() const;
+  /// Adds `path` (at least two states of the database's space); shorter paths are not kept.
+  void add(const ompl::geometric::PathGeometric& path);
+  /// The number of paths kept.
+  std::size_t paths() const;
+  /// The number of states over all paths.
+  std::size_t states() const;
+  /// OMPL's database, for og::LightningRetrieveRepair.
+  const std::shared_ptr<ompl::tools::LightningDB>& lightning() const { return db_; }
+
+ private:
+  ompl::base::SpaceInformationPtr si_;
+  std::string space_name_;
+  std::uint64_t fingerprint_;
+  std::shared_ptr<ompl::tools::LightningDB> db_;
+};
+
+/// Recall, then scratch: og::LightningRetrieveRepair on the database (its repairs by `repair`),
+/// and, when the database is empty or recall finds no exact path, the `scratch` planner with the
+/// time left. The planner's name is the scratch planner's followed by "+Lightning"; recalled()
+/// says which of the two solved.
+class ExperiencePlanner : public ompl::base::Planner {
+ public:
+  /// @param si       the plan's space information (validity checker and motion validator set)
+  /// @param db       the database to recall from (must outlive the planner)
+  /// @param scratch  the planner from scratch, made for `si`
+  /// @param repair   the planner that repairs recalled paths, made for `si`
+  /// @throws std::invalid_argument when db, scratch or repair is null
+  ExperiencePlanner(const ompl::base::SpaceInformationPtr& si, const ExperienceDatabase* db, ompl::base::PlannerPtr scratch,
+                    ompl::base::PlannerPtr repair);
+  /// Recall (when the database holds paths), then scratch; see the class comment.
+  /// @return EXACT_SOLUTION from either, else the scratch planner's status
+  ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition& ptc) override;
+  /// Clears both planners and the outcome.
+  void clear() override;
+  /// Sets up both planners on this planner's problem definition.
+  void setup() override;
+  /// Whether the last solve() solved by recall (false: from scratch, or not at all).
+  bool recalled() const { return recalled_; }
+  /// Seconds the last solve() spent recalling and repairing.
+  double recall_seconds() const { return recall_seconds_; }
+
+ private:
+  const ExperienceDatabase* db_;
+  ompl::base::PlannerPtr scratch_, recall_;
+  bool recalled_ = false;
+  double recall_seconds_ = 0.0;
+};
+
+}  // namespace foldkit::planners

@@ -1,0 +1,217 @@
+#include "foldkit/planners/experience.hpp"
+
+#include <chrono>
+#include <cstring>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include <boost/crc.hpp>
+#include <ompl/base/PlannerData.h>
+#include <ompl/base/PlannerDataStorage.h>
+#include <ompl/geometric/planners/experience/LightningRetrieveRepair.h>
+#include <ompl/tools/lightning/LightningDB.h>
+
+namespace foldkit::planners {
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace {
+
+constexpr const char* kMagic = "foldkit-experience";
+constexpr int kVersion = 1;
+
+struct Fnv {
+  std::uint64_t h = 1469598103934665603ull;
+  void bytes(const void* p, std::size_t n) {
+    const auto* c = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
+  }
+  template <typename T>
+  void value(const T& v) {
+    bytes(&v, sizeof v);
+  }
+};
+
+// OMPL's database warns, when it is destroyed, of paths its own save() did not write; foldkit's
+// caller writes bytes() itself, so the count is cleared then.
+class Database : public ompl::tools::LightningDB {
+ public:
+  using LightningDB::LightningDB;
+  ~Database() override { numUnsavedPaths_ = 0; }
+};
+
+std::uint32_t crc32(const std::string& body) {
+  boost::crc_32_type crc;
+  crc.process_bytes(body.data(), body.size());
+  return crc.checksum();
+}
+
+std::string hex(std::uint64_t v) {
+  std::ostringstream s;
+  s << std::hex << v;
+  return s.str();
+}
+
+// The header: one "key value" line each, in this order; the records follow it.
+struct Header {
+  std::string space;
+  std::size_t state_bytes = 0, paths = 0, bytes = 0;
+  std::uint64_t pattern = 0;
+  std::uint32_t crc = 0;
+};
+
+// Reads the header off `in`; the reason it is not one, or empty.
+std::string read_header(std::istream& in, Header& h) {
+  std::string magic;
+  int version = 0;
+  if (!(in >> magic >> version) || magic != kMagic) return "not a foldkit experience database (it does not start with \"foldkit-experience\")";
+  if (version != kVersion) return "experience database version " + std::to_string(version) + ", this foldkit reads version " + std::to_string(kVersion);
+  const auto field = [&](const char* key, auto& value, bool in_hex = false) {
+    std::string k;
+    if (!(in >> k) || k != key) return false;
+    if (in_hex) in >> std::hex;
+    in >> value;
+    in >> std::dec;
+    return static_cast<bool>(in);
+  };
+  if (!field("space", h.space) || !field("state-bytes", h.state_bytes) || !field("pattern", h.pattern, true) || !field("paths", h.paths) ||
+      !field("bytes", h.bytes) || !field("crc", h.crc, true))
+    return "damaged header (expected the lines space, state-bytes, pattern, paths, bytes, crc)";
+  if (in.get() != '\n') return "damaged header (no line break before the records)";
+  return {};
+}
+
+}  // namespace
+
+std::uint64_t pattern_fingerprint(const geometry::CreasePattern& pattern) {
+  Fnv f;
+  f.value(pattern.vertices().size());
+  for (const auto& v : pattern.vertices()) {
+    f.value(v.x());
+    f.value(v.y());
+  }
+  f.value(pattern.actors().size());
+  for (const auto& a : pattern.actors())
+    for (const auto& t : a.triangles)
+      for (int v : t.v) f.value(v);
+  f.value(pattern.joints().size());
+  for (const auto& j : pattern.joints()) {
+    f.value(j.actors[0]);
+    f.value(j.actors[1]);
+  }
+  return f.h;
+}
+
+ExperienceDatabase::ExperienceDatabase(const ob::SpaceInformationPtr& si, std::string space_name, std::uint64_t fingerprint)
+    : si_(si), space_name_(std::move(space_name)), fingerprint_(fingerprint),
+      db_(std::make_shared<Database>(si->getStateSpace())) {}
+
+ExperienceDatabase::~ExperienceDatabase() = default;
+
+void ExperienceDatabase::read(const std::string& bytes, const std::string& name) {
+  if (bytes.empty()) return;
+  const auto fail = [&](const std::string& why) { throw ExperienceError(name + ": " + why); };
+  std::istringstream in(bytes);
+  Header h;
+  if (const std::string why = read_header(in, h); !why.empty()) fail(why);
+  if (h.space != space_name_) fail("written for the " + h.space + " space, this plan searches the " + space_name_ + " space");
+  const std::size_t state_bytes = si_->getStateSpace()->getSerializationLength();
+  if (h.state_bytes != state_bytes)
+    fail("written for states of " + std::to_string(h.state_bytes) + " bytes, this space's have " + std::to_string(state_bytes) +
+         " (another pattern)");
+  if (h.pattern != fingerprint_) fail("written for another pattern (its fingerprint " + hex(h.pattern) + ", this one's " + hex(fingerprint_) + ")");
+  const auto at = static_cast<std::size_t>(in.tellg());
+  if (bytes.size() - at != h.bytes)
+    fail("damaged: " + std::to_string(bytes.size() - at) + " bytes of records where the header says " + std::to_string(h.bytes));
+  const std::string body = bytes.substr(at);
+  if (crc32(body) != h.crc) fail("damaged: the records do not match their CRC-32");
+  std::istringstream records(body);
+  ob::PlannerDataStorage storage;
+  std::vector<og::PathGeometric> loaded;
+  for (std::size_t i = 0; i < h.paths; ++i) {
+    ob::PlannerData data(si_);
+    try {
+      storage.load(records, data);
+    } catch (const std::exception& e) {
+      fail("damaged: path " + std::to_string(i + 1) + " cannot be read (" + e.what() + ")");
+    }
+    if (data.numVertices() < 2) fail("damaged: path " + std::to_string(i + 1) + " has fewer than two states");
+    og::PathGeometric path(si_);
+    for (unsigned int v = 0; v < data.numVertices(); ++v) path.append(data.getVertex(v).getState());
+    loaded.push_back(std::move(path));
+  }
+  if (records.peek() != std::char_traits<char>::eof()) fail("damaged: bytes after the last of its " + std::to_string(h.paths) + " paths");
+  for (const auto& path : loaded) add(path);
+}
+
+std::string ExperienceDatabase::bytes() const {
+  std::vector<ob::PlannerDataPtr> all;
+  db_->getAllPlannerDatas(all);
+  std::ostringstream records;
+  ob::PlannerDataStorage storage;
+  for (const auto& data : all) storage.store(*data, records);
+  const std::string body = records.str();
+  std::ostringstream out;
+  out << kMagic << ' ' << kVersion << "\nspace " << space_name_ << "\nstate-bytes " << si_->getStateSpace()->getSerializationLength() << "\npattern " << std::hex
+      << fingerprint_ << std::dec << "\npaths " << all.size() << "\nbytes " << body.size() << "\ncrc " << std::hex << crc32(body)
+      << std::dec << '\n'
+      << body;
+  return out.str();
+}
+
+void ExperienceDatabase::add(const og::PathGeometric& path) {
+  if (path.getStateCount() < 2) return;
+  og::PathGeometric copy(path);
+  double seconds = 0.0;
+  db_->addPath(copy, seconds);
+}
+
+std::size_t ExperienceDatabase::paths() const { return db_->getExperiencesCount(); }
+
+std::size_t ExperienceDatabase::states() const { return db_->getStatesCount(); }
+
+ExperiencePlanner::ExperiencePlanner(const ob::SpaceInformationPtr& si, const ExperienceDatabase* db, ob::PlannerPtr scratch,
+                                     ob::PlannerPtr repair)
+    : ob::Planner(si, scratch ? scratch->getName() + "+Lightning" : std::string("Lightning")), db_(db), scratch_(std::move(scratch)) {
+  if (!db_ || !scratch_ || !repair) throw std::invalid_argument("ExperiencePlanner: the database and both planners are required");
+  auto recall = std::make_shared<og::LightningRetrieveRepair>(si, db_->lightning());
+  recall->setRepairPlanner(repair);
+  recall_ = recall;
+  specs_ = scratch_->getSpecs();
+}
+
+void ExperiencePlanner::setup() {
+  ob::Planner::setup();
+  for (const auto& p : {scratch_, recall_}) {
+    p->setProblemDefinition(pdef_);
+    if (!p->isSetup()) p->setup();
+  }
+}
+
+void ExperiencePlanner::clear() {
+  ob::Planner::clear();
+  scratch_->clear();
+  recall_->clear();
+  recalled_ = false;
+  recall_seconds_ = 0.0;
+}
+
+ob::PlannerStatus ExperiencePlanner::solve(const ob::PlannerTerminationCondition& ptc) {
+  recalled_ = false;
+  recall_seconds_ = 0.0;
+  if (db_->paths() > 0) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const ob::PlannerStatus status = recall_->solve(ptc);
+    recall_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (status == ob::PlannerStatus::EXACT_SOLUTION) {
+      recalled_ = true;
+      return status;
+    }
+    if (ptc()) return ob::PlannerStatus::TIMEOUT;
+  }
+  return scratch_->solve(ptc);
+}
+
+}  // namespace foldkit::planners
