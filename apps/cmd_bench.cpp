@@ -18,6 +18,7 @@
 #include "foldkit/bench/log.hpp"
 #include "foldkit/bench/run.hpp"
 #include "foldkit/bench/scenes.hpp"
+#include "foldkit/planners/objectives.hpp"
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 
@@ -86,8 +87,13 @@ int list(bool json) {
   for (const auto& s : bench::bench_suites())
     suites.push_back({{"name", s.name}, {"description", s.description}, {"scenes", s.scenes}, {"planners", s.planners}});
   nlohmann::json sampling = planners::planner_names(), deterministic = bench::deterministic_planner_names();
+  nlohmann::json objectives = nlohmann::json::array();
+  for (const auto& o : planners::objective_table())
+    objectives.push_back({{"name", o.name}, {"unit", o.unit}, {"description", o.description}, {"additive", o.additive},
+                          {"informed_sampler", o.informed_sampler}});
   if (json) {
     print_json({{"suites", suites},
+                {"objectives", objectives},
                 {"scenes", bench::bench_scene_names()},
                 {"planners", {{"sampling", sampling}, {"deterministic", deterministic}}}});
     return kOk;
@@ -106,12 +112,18 @@ int list(bool json) {
   for (const auto& x : planners::planner_names()) std::cerr << ' ' << x;
   std::cerr << "\ndeterministic planners (--planners):";
   for (const auto& x : bench::deterministic_planner_names()) std::cerr << ' ' << x;
-  std::cerr << '\n';
+  std::cerr << "\nobjectives (--objective; weighted sums NAME:WEIGHT,… of the additive ones):\n";
+  for (const auto& o : planners::objective_table())
+    std::cerr << "  " << o.name << " (" << o.unit << (o.additive ? ", additive" : "")
+              << (o.informed_sampler ? "" : ", no informed sampler") << "): " << o.description << '\n';
   return kOk;
 }
 
 struct BenchArgs {
-  std::string suite, output, shard = "1/1", planners, scenes, error_vs_time, space = "auto";
+  std::string suite, output, shard = "1/1", planners, scenes, error_vs_time, space = "auto",
+                                                                             objective = bench::BenchOptions{}.objective;
+  double cost_threshold = 0.0;
+  CLI::Option* cost_threshold_option = nullptr;
   std::vector<std::string> params;
   double time = 1.0;
   unsigned int runs = 10, seed = 1;
@@ -139,6 +151,12 @@ void add_bench_options(CLI::App* app, const std::shared_ptr<BenchArgs>& opt) {
       })
       ->capture_default_str();
   app->add_option("--param", opt->params, "NAME=VALUE: a sampling planner's parameter by OMPL's name (repeatable)");
+  app->add_option("--objective", opt->objective,
+                  "What the sampling planners optimise, as foldkit plan --objective (length, rotation, clearance, "
+                  "NAME:WEIGHT,…)")
+      ->capture_default_str();
+  opt->cost_threshold_option = app->add_option(
+      "--cost-threshold", opt->cost_threshold, "An optimising planner stops once its path costs less than this (clearance: more)");
   app->add_option("--error-vs-time", opt->error_vs_time,
                   "Time limits, comma-separated seconds: write DIR/error_vs_time.csv (error reached per limit) instead of logs");
   app->add_flag("--simplify", opt->simplify,
@@ -166,6 +184,18 @@ Command add_bench(CLI::App& root) {
             o.simplify = opt->simplify;
             o.space = opt->space;
             for (const auto& p : opt->params) o.params.push_back(planners::parse_planner_param(p));
+            try {  // usage errors, before any scene is built
+              planners::parse_objective(opt->objective);
+            } catch (const std::invalid_argument& e) {
+              throw UsageError(std::string("--objective: ") + e.what());
+            }
+            if (opt->cost_threshold_option->count() > 0) try {
+                planners::check_cost_threshold(opt->cost_threshold, "--cost-threshold");
+              } catch (const std::invalid_argument& e) {
+                throw UsageError(e.what());
+              }
+            o.objective = opt->objective;
+            if (opt->cost_threshold_option->count() > 0) o.cost_threshold = opt->cost_threshold;
             std::tie(o.shard, o.shards) = parse_shard(opt->shard);
             if (!opt->planners.empty()) o.planners = split_list(opt->planners, "--planners");
             if (!opt->scenes.empty()) o.scenes = split_list(opt->scenes, "--scenes");

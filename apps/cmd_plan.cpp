@@ -1,6 +1,8 @@
 // foldkit plan: a collision-free, closed fold sequence from a start to a goal, by an OMPL planner.
 #include <algorithm>
+#include <cmath>
 #include <iostream>
+#include <limits>
 
 #include "cli_common.hpp"
 #include "progress_line.hpp"
@@ -8,6 +10,7 @@
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
+#include "foldkit/planners/objectives.hpp"
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 
@@ -24,9 +27,12 @@ std::vector<std::pair<int, double>> parse_goal_angles(const geometry::CreasePatt
 
 struct PlanArgs {  // defaults: PlanOptions's
   std::string pattern, goal, goal_angles, start, space = planners::to_string(planners::PlanOptions{}.space),
-                                                 planner = planners::PlanOptions{}.planner, output;
+                                                 planner = planners::PlanOptions{}.planner, output,
+                                                 objective = planners::PlanOptions{}.objective;
   std::vector<std::string> params;
   double time = planners::PlanOptions{}.time, search_margin = planners::PlanOptions{}.search_margin;
+  double cost_threshold = std::numeric_limits<double>::quiet_NaN();  // NaN: none (PlanOptions::cost_threshold empty)
+  CLI::Option* cost_threshold_option = nullptr;
   unsigned int seed = planners::PlanOptions{}.seed;
   bool no_collision = false, free_signs = false, no_fallback = false, json = false;
 };
@@ -45,6 +51,14 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
       ->capture_default_str();
   app->add_option("--planner", opt.planner, "OMPL geometric planner by name (RRTConnect, RRT*, PRM, KPIECE1, BiTRRT, …)")
       ->capture_default_str();
+  std::string objectives;
+  for (const auto& n : planners::objective_names()) objectives += (objectives.empty() ? "" : ", ") + n;
+  app->add_option("--objective", opt.objective,
+                  "What the planner optimises: " + objectives + ", or a weighted sum NAME:WEIGHT,… of length and rotation")
+      ->capture_default_str();
+  opt.cost_threshold_option = app->add_option(
+      "--cost-threshold", opt.cost_threshold,
+      "Stop at the first path whose cost is below this (clearance: above it); 0: optimise for all of --time");
   app->add_option("--param", opt.params, "NAME=VALUE: a planner parameter by OMPL's name (repeatable), e.g. range=0.3");
   positive(app->add_option("--time", opt.time,
                   "Seconds the search may take: sampling, the Carpenter fallback and the way through flat (not the replay)"));
@@ -115,11 +129,18 @@ void set_start_and_settings(const PlanArgs& opt, const geometry::CreasePattern& 
   options.search_margin = opt.search_margin;
   options.use_assignment = !opt.free_signs;
   options.fallback = !opt.no_fallback;
+  options.objective = opt.objective;
+  if (opt.cost_threshold_option->count() > 0) options.cost_threshold = opt.cost_threshold;
 }
 
 int report(const PlanArgs& opt, const planners::PlanResult& r) {
   std::cerr << (r.status.ok() ? "solved" : "no plan") << ": " << r.status.message << " (" << r.planner << " in " << r.space
-            << ", " << r.seconds << " s, " << r.waypoints.size() << " waypoints)\n";
+            << ", " << r.seconds << " s, " << r.waypoints.size() << " waypoints, objective " << r.objective;
+  if (r.status.ok()) std::cerr << ", cost " << r.cost;
+  if (!r.cost_history.empty())
+    std::cerr << ", best cost " << r.cost_history.front().second << " at " << r.cost_history.front().first << " s to "
+              << r.cost_history.back().second << " at " << r.cost_history.back().first << " s";
+  std::cerr << ")\n";
   if (r.status.ok()) {
     io::write_file_atomic(opt.output, io::write_cmml(r.sequence));
     std::cerr << "wrote " << opt.output << '\n';
@@ -133,6 +154,10 @@ int report(const PlanArgs& opt, const planners::PlanResult& r) {
                      {"seconds", r.seconds},
                      {"time", r.seconds},  // deprecated: the name of `seconds` before issue 37
                      {"path_length", r.path_length},
+                     {"objective", r.objective},
+                     // null without a path, or for a clearance with no two facets apart (+∞)
+                     {"cost", std::isfinite(r.cost) ? nlohmann::json(r.cost) : nlohmann::json(nullptr)},
+                     {"cost_history", r.cost_history},
                      {"max_closure_error", r.max_closure_error},
                      {"waypoints", r.waypoints.size()}};
     add_status(j, r.status);
@@ -149,6 +174,15 @@ int run_plan(PlanArgs& opt) {
     if (const std::string why = planners::planner_refusal(opt.planner); !why.empty()) throw planners::PlannerRefused(opt.planner, why);
     for (const auto& p : opt.params) params.push_back(planners::parse_planner_param(p));
     planners::check_planner_params(opt.planner, params);
+    planners::Objective objective;
+    try {
+      objective = planners::parse_objective(opt.objective);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--objective: ") + e.what());
+    }
+    if (const std::string why = planners::objective_refusal(opt.planner, objective); !why.empty())
+      throw planners::PlannerRefused(opt.planner, why);
+    if (opt.cost_threshold_option->count() > 0) planners::check_cost_threshold(opt.cost_threshold, "--cost-threshold");
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }

@@ -22,6 +22,7 @@
 #include "foldkit/bench/deterministic_planner.hpp"
 #include "foldkit/bench/log.hpp"
 #include "foldkit/bench/run.hpp"
+#include "foldkit/planners/objectives.hpp"
 #include "foldkit/planners/plan_setup.hpp"
 #include "foldkit/simulation/clearance.hpp"
 #include "foldkit/simulation/simulate.hpp"
@@ -56,6 +57,7 @@ PathMetrics measure_path(const BenchScene& scene, const std::vector<FoldState>& 
   for (std::size_t i = 0; i < waypoints.size(); ++i) {
     m.max_closure_error = std::max(m.max_closure_error, system.max_error(waypoints[i]));
     if (i > 0) m.path_length += (waypoints[i].angles - waypoints[i - 1].angles).norm();
+    if (i > 0) m.rotation += (waypoints[i].angles - waypoints[i - 1].angles).lpNorm<1>();
   }
   m.final_closure_error = system.max_error(waypoints.back());
   m.goal_distance = (waypoints.back().angles - scene.goal.angles).cwiseAbs().maxCoeff();
@@ -101,7 +103,7 @@ const std::vector<std::string>& our_run_properties() {
   static const std::vector<std::string> p = {
       "run index INTEGER",         "final closure error REAL", "max closure error REAL", "min clearance REAL",
       "replay collisions INTEGER", "replay valid BOOLEAN",     "joint path length REAL", "cmml events INTEGER",
-      "goal distance REAL",        "path jumps BOOLEAN"};
+      "goal distance REAL",        "path jumps BOOLEAN",       "joint rotation REAL",    "objective cost REAL"};
   return p;
 }
 
@@ -151,8 +153,8 @@ namespace {
 using namespace run_detail;  // NOLINT: the scenes, planners and helpers every run shares
 
 // Our per-run properties, added to the run's row after each run (OMPL's post-run event).
-void add_path_properties(const PlanSetup& setup, const BenchScene& scene, const ob::PlannerPtr& planner,
-                         ompl::tools::Benchmark::RunProperties& run) {
+void add_path_properties(const PlanSetup& setup, const BenchScene& scene, const planners::Objective& objective,
+                         const ob::PlannerPtr& planner, ompl::tools::Benchmark::RunProperties& run) {
   const auto states = solution_states(setup, scene, planner->getProblemDefinition());
   if (planner->getProblemDefinition()->hasSolution()) run["path jumps BOOLEAN"] = states ? "0" : "1";
   if (!states) return;
@@ -163,6 +165,10 @@ void add_path_properties(const PlanSetup& setup, const BenchScene& scene, const 
   run["replay collisions INTEGER"] = std::to_string(m.replay_collisions);
   run["replay valid BOOLEAN"] = m.replay_ok ? "1" : "0";
   run["joint path length REAL"] = num(m.path_length);
+  run["joint rotation REAL"] = num(m.rotation);
+  // The objective's cost on the whole path, every crease counted (planners::path_cost); for
+  // clearance the same as "min clearance" but on every state.
+  run["objective cost REAL"] = num(planners::path_cost(objective, *scene.pattern, *states));
   run["cmml events INTEGER"] = std::to_string(m.cmml_events);
   run["goal distance REAL"] = num(m.goal_distance);
 }
@@ -173,7 +179,8 @@ class SceneRun {
  public:
   SceneRun(const BenchOptions& o, const Resolved& res, const std::vector<BenchWorkItem>& work, std::size_t si,
            std::chrono::steady_clock::time_point t0, std::size_t& done)
-      : o_(o), res_(res), work_(work), t0_(t0), done_(done), runs_of_(res.planners.size()) {
+      : o_(o), res_(res), work_(work), t0_(t0), done_(done), runs_of_(res.planners.size()),
+        objective_(planners::parse_objective(o.objective)) {
     result_.scene = res.scenes[si];
     for (const auto& w : work)
       if (w.scene == si) runs_of_[w.planner].push_back(w.run);
@@ -214,7 +221,7 @@ class SceneRun {
     // group draws informed samples, the whole group gets its objective (PRM and LazyPRM then run
     // their whole time, as PRM* does; docs/PLANNING.md, "Planners").
     for (std::size_t pi : members)
-      if (auto objective = entry_objective(res_.planners[pi], setup.si)) {
+      if (auto objective = entry_objective(res_.planners[pi], setup, o_)) {
         ss.setOptimizationObjective(objective);
         break;
       }
@@ -228,6 +235,9 @@ class SceneRun {
     bench.addExperimentParameter("shard", "STRING", std::to_string(o_.shard) + "/" + std::to_string(o_.shards));
     bench.addExperimentParameter("planners", "STRING", names_);
     bench.addExperimentParameter("simplify", "BOOLEAN", o_.simplify ? "1" : "0");
+    bench.addExperimentParameter("objective", "STRING", objective_.name());
+    // Only when given: ompl_benchmark_statistics cannot read an experiment property without a value.
+    if (o_.cost_threshold) bench.addExperimentParameter("cost_threshold", "REAL", num(*o_.cost_threshold));
     std::map<const ob::Planner*, std::size_t> index_of, next;
     for (std::size_t pi : members) {
       bench.addPlanner(objects_[pi]);
@@ -247,7 +257,7 @@ class SceneRun {
       const auto& indices = runs_of_[pi];
       const unsigned int index = indices[std::min(next[planner.get()]++, indices.size() - 1)];
       run["run index INTEGER"] = std::to_string(index);
-      add_path_properties(setup, scene, planner, run);
+      add_path_properties(setup, scene, objective_, planner, run);
       ++done_;
       if (o_.progress) o_.progress({done_, work_.size(), scene.name, res_.planners[pi], since(t0_), false});
     });
@@ -307,6 +317,7 @@ class SceneRun {
   const std::chrono::steady_clock::time_point t0_;
   std::size_t& done_;
   std::vector<std::vector<unsigned int>> runs_of_;  // per planner: the run indices of this shard
+  const planners::Objective objective_;
   BenchSceneResult result_;
   std::optional<SceneSpaces> scenes_;
   std::vector<ob::PlannerPtr> objects_;

@@ -13,6 +13,7 @@
 
 #include "foldkit/bench/deterministic_planner.hpp"
 #include "foldkit/planners/carpenter_fallback.hpp"
+#include "foldkit/planners/objectives.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 
 namespace foldkit::bench::run_detail {
@@ -51,13 +52,14 @@ ob::PlannerPtr entry_planner(const std::string& entry, const BenchScene& scene, 
   return p;
 }
 
-// The objective an entry's planner needs on its problem (planners::informed_objective), null for
-// none; "X+Carpenter" is X's.
-ob::OptimizationObjectivePtr entry_objective(const std::string& entry, const ob::SpaceInformationPtr& si) {
+// The objective an entry's planner gets on its problem (run_scenes.hpp); "X+Carpenter" is X's.
+ob::OptimizationObjectivePtr entry_objective(const std::string& entry, const PlanSetup& setup, const BenchOptions& o) {
   std::string name = planner_and_space(entry).first;
   if (const std::string inner = fallback_inner(name); !inner.empty()) name = inner;
   if (is_deterministic_planner(name)) return nullptr;
-  return planners::informed_objective(name, si);
+  const planners::Objective objective = planners::parse_objective(o.objective);
+  if (objective.is_default() && !o.cost_threshold) return planners::informed_objective(name, setup.si);
+  return planners::make_objective(objective, setup, o.cost_threshold);
 }
 
 namespace {
@@ -112,9 +114,15 @@ Resolved resolve(const BenchOptions& o) {
   }
   if (!(o.time > 0.0) || !std::isfinite(o.time)) throw std::invalid_argument("the time per run must be positive");
   if (o.runs == 0) throw std::invalid_argument("at least one run per planner");
+  const planners::Objective objective = planners::parse_objective(o.objective);
+  if (o.cost_threshold) planners::check_cost_threshold(*o.cost_threshold, "bench");
   for (const auto& entry : r.planners) {  // before anything is written
     const std::string p = planner_and_space(entry).first;
-    if (!is_deterministic_planner(p)) planners::check_planner_params(fallback_inner(p).empty() ? p : fallback_inner(p), o.params);
+    if (is_deterministic_planner(p)) continue;
+    const std::string sampling = fallback_inner(p).empty() ? p : fallback_inner(p);
+    planners::check_planner_params(sampling, o.params);
+    if (const std::string why = planners::objective_refusal(sampling, objective); !why.empty())
+      throw planners::PlannerRefused(sampling, why);
   }
   if (o.shards == 0 || o.shard == 0 || o.shard > o.shards)
     throw std::invalid_argument("--shard " + std::to_string(o.shard) + "/" + std::to_string(o.shards) +

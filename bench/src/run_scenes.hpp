@@ -26,9 +26,12 @@ std::string num(double v);
 // the single-vertex fallback, as plan() does.
 ompl::base::PlannerPtr entry_planner(const std::string& entry, const BenchScene& scene, const planners::PlanSetup& setup,
                                      const std::vector<std::pair<std::string, std::string>>& params, double time);
-// The objective an entry's planner needs on its problem: planners::informed_objective of the
-// planner (X's for "X+Carpenter"), null for the rest and for the deterministic planners.
-ompl::base::OptimizationObjectivePtr entry_objective(const std::string& entry, const ompl::base::SpaceInformationPtr& si);
+// The objective an entry's planner gets on its problem: for the default objective (length, no
+// threshold) planners::informed_objective of the planner (X's for "X+Carpenter"), null for the
+// rest; any other objective of the options for every sampling planner; null for the
+// deterministic planners.
+ompl::base::OptimizationObjectivePtr entry_objective(const std::string& entry, const planners::PlanSetup& setup,
+                                                     const BenchOptions& o);
 
 // The fold states of the problem definition's best solution, from the scene's start.
 std::optional<std::vector<geometry::FoldState>> solution_states(const planners::PlanSetup& setup, const BenchScene& scene,

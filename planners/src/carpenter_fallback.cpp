@@ -1,6 +1,9 @@
 #include "foldkit/planners/carpenter_fallback.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
 #include <memory>
 #include <stdexcept>
 
@@ -96,9 +99,26 @@ ob::PlannerStatus CarpenterFallbackPlanner::solve(const ob::PlannerTerminationCo
   fallback_message_.clear();
   ob::PlannerStatus status;
   {
-    // The inner planner's loops that ignore its termination condition end at its share too.
-    const statespaces::FoldValidity::TimeLimit limit(*validity_, inner_time_);
-    status = inner_->solve(ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(inner_time_)));
+    // An optimising planner (one that reports its best cost: RRT*, PRM*, …) that has its first
+    // path within its share keeps improving it until the caller's condition: the share bounds the
+    // search for a first path, not the optimisation. Any other planner stops at its share, its
+    // loops that ignore the termination condition too.
+    ob::Planner::PlannerProgressProperty best;
+    for (const auto& [name, property] : inner_->getPlannerProgressProperties())
+      if (name.rfind("best cost", 0) == 0) best = property;
+    std::optional<statespaces::FoldValidity::TimeLimit> limit;
+    ob::PlannerTerminationCondition share = ob::timedPlannerTerminationCondition(inner_time_);
+    if (best) {
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(inner_time_);
+      const ob::ProblemDefinitionPtr pdef = pdef_;
+      share = ob::PlannerTerminationCondition([deadline, best, pdef] {
+        if (std::chrono::steady_clock::now() < deadline || pdef->hasExactSolution()) return false;
+        return !std::isfinite(std::strtod(best().c_str(), nullptr));
+      });
+    } else {
+      limit.emplace(*validity_, inner_time_);
+    }
+    status = inner_->solve(ob::plannerOrTerminationCondition(ptc, share));
   }
   if (status == ob::PlannerStatus::EXACT_SOLUTION || ptc()) return status;
   if (status == ob::PlannerStatus::INVALID_START || status == ob::PlannerStatus::INVALID_GOAL ||

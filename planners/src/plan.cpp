@@ -16,9 +16,11 @@
 #include "foldkit/geometry/closure_path.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/planners/carpenter_fallback.hpp"
+#include "foldkit/planners/objectives.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/planners/plan_space.hpp"
 #include "foldkit/statespaces/validity.hpp"
+#include "cost_history.hpp"
 #include "plan_finish.hpp"
 
 namespace foldkit::planners {
@@ -35,10 +37,15 @@ double elapsed(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-ob::PlannerStatus run_planner(const PlanSetup& setup, og::SimpleSetup& ss, double seconds) {
+ob::PlannerStatus run_planner(const PlanSetup& setup, og::SimpleSetup& ss, double seconds, bool until_threshold) {
   const statespaces::FoldValidity::TimeLimit limit(*setup.validity, seconds);
-  return ss.solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(seconds),
-                                                    ob::exactSolnPlannerTerminationCondition(ss.getProblemDefinition())));
+  const ob::ProblemDefinitionPtr pdef = ss.getProblemDefinition();
+  // With a cost threshold, an exact path that does not meet it is no reason to stop: the
+  // planner's solution is "optimized" once its cost satisfies the objective.
+  const ob::PlannerTerminationCondition solved =
+      until_threshold ? ob::PlannerTerminationCondition([pdef] { return pdef->hasOptimizedSolution(); })
+                      : ob::exactSolnPlannerTerminationCondition(pdef);
+  return ss.solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(seconds), solved));
 }
 
 void set_start_and_goal(const PlanSetup& setup, og::SimpleSetup& ss, const FoldState& goal) {
@@ -157,8 +164,11 @@ namespace {
 // exact solution or the time limit; the solution path, or nothing with result.status set.
 std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanOptions& options, PlanResult& result) {
   og::SimpleSetup ss(setup.si);
+  if (const std::string why = objective_refusal(options.planner, parse_objective(options.objective)); !why.empty())
+    throw PlannerRefused(canonical_planner(options.planner), why);
   ob::PlannerPtr planner = make_planner(options.planner, setup.si);
   set_planner_params(*planner, options.planner, options.params);
+  const ob::PlannerPtr optimiser = planner;  // the one that reports its best cost, not the fallback around it
   std::shared_ptr<CarpenterFallbackPlanner> fallback;
   if (setup.plan_space->fallback() == Fallback::Carpenter && options.fallback) {
     fallback = with_carpenter_fallback(setup, *setup.pattern, planner, options.time, options.waypoint_step);
@@ -166,12 +176,14 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanOptions
   }
   ss.setPlanner(planner);
   set_start_and_goal(setup, ss, setup.goal);
-  if (auto objective = informed_objective(options.planner, setup.si)) ss.setOptimizationObjective(objective);
+  if (auto objective = plan_objective(setup, options)) ss.setOptimizationObjective(objective);
   ss.setup();
 
+  detail::CostRecorder costs(*optimiser, 0.02, result.cost_history);
   const auto t0 = std::chrono::steady_clock::now();
-  const ob::PlannerStatus status = run_planner(setup, ss, options.time);
+  const ob::PlannerStatus status = run_planner(setup, ss, options.time, options.cost_threshold.has_value());
   result.seconds = elapsed(t0);
+  costs.stop();
   result.fallback = fallback && fallback->used_fallback();
   if (status == ob::PlannerStatus::EXACT_SOLUTION) return ss.getSolutionPath();
   // The fallback failed (its reason), or the time ran out (OMPL's TIMEOUT, or only an approximate
@@ -194,12 +206,15 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanOptions
 
 PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, const PlanOptions& options) {
   if (!(options.time > 0.0) || !std::isfinite(options.time)) throw std::invalid_argument("plan: the time limit must be positive");
+  if (options.cost_threshold) check_cost_threshold(*options.cost_threshold, "plan");
+  parse_objective(options.objective);  // before any work: an unknown objective is the caller's error
   if (options.quiet) ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
   ompl::RNG::setSeed(std::max(1u, options.seed));
 
   const PlanSetup setup = make_plan_setup(pattern, goal, options);
   PlanResult result;
   result.planner = options.planner;
+  result.objective = parse_objective(options.objective).name();
   result.space = setup.plan_space->name();
   if (!setup.blocked.empty()) {
     result.status = {geometry::StatusCode::Collision, setup.blocked};
@@ -224,9 +239,14 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
     return detail::plan_via_flat(
         setup, options, result, options.planner + " found no direct plan in " + std::to_string(direct.time) + " s (" + result.status.message + ")");
   if (!path) return result;
-  if (options.simplify) {
+  if (options.simplify && parse_objective(options.objective).is_default() && !options.cost_threshold) {
     og::PathSimplifier simplifier(setup.si);
     simplifier.reduceVertices(*path);
+    simplifier.shortcutPath(*path);
+  } else if (options.simplify) {
+    // reduceVertices joins any two states a valid motion joins, whatever that costs (it would
+    // straighten a clearance path); shortcutPath keeps a shortcut only where the objective gains.
+    og::PathSimplifier simplifier(setup.si, ob::GoalPtr(), plan_objective(setup, options));
     simplifier.shortcutPath(*path);
   }
   std::string why;

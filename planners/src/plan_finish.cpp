@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "foldkit/planners/objectives.hpp"
 #include "foldkit/simulation/simulate.hpp"
 
 namespace foldkit::planners::detail {
@@ -19,6 +20,7 @@ PlanResult& finish_plan(const PlanSetup& setup, const PlanOptions& options, std:
     result.max_closure_error = std::max(result.max_closure_error, setup.system->max_error(result.waypoints[i]));
     if (i > 0) result.path_length += (result.waypoints[i].angles - result.waypoints[i - 1].angles).norm();
   }
+  result.cost = path_cost(parse_objective(options.objective), *setup.pattern, result.waypoints);
   if (result.max_closure_error > 1e-6) {
     result.status = {geometry::StatusCode::ClosureViolated,
                      "the planned path is not closed (error " + std::to_string(result.max_closure_error) + " rad)"};

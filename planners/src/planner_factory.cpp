@@ -224,6 +224,10 @@ std::string canonical_planner(const std::string& name) { return find(name).name;
 
 bool planner_is_threaded(const std::string& name) { return find(name).threaded; }
 
+bool planner_samples_informed(const std::string& name) { return find(name).informed; }
+
+bool planner_orders_informed_batches(const std::string& name) { return find(name).needs_direct_informed; }
+
 ompl::base::OptimizationObjectivePtr informed_objective(const std::string& name, const ompl::base::SpaceInformationPtr& si) {
   if (!find(name).informed) return nullptr;
   return std::make_shared<detail::PathLength>(si);

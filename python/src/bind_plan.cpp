@@ -1,5 +1,6 @@
 // foldkit.plan: sampling-based planning on the crease pattern's closure manifold (OMPL).
 #include "bindings.hpp"
+#include "foldkit/planners/objectives.hpp"
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/simulation/simulate.hpp"
@@ -19,6 +20,14 @@ std::string quoted_spaces(std::size_t from) {
   return list;
 }
 
+// The objectives plan() accepts, quoted for a docstring (from the C++ table).
+std::string quoted_objectives() {
+  const std::vector<std::string> names = planners::objective_names();
+  std::string list;
+  for (std::size_t i = 0; i < names.size(); ++i) list += (i == 0 ? "'" : ", '") + names[i] + "'";
+  return list;
+}
+
 void bind_result(py::module_& m) {
   def_seconds(py::class_<PlanResult>(m, "PlanResult", "A plan: the waypoints from start to goal, their CMML, and the simulator's replay."),
               "Wall-clock seconds the search ran (the fallback included).")
@@ -31,6 +40,20 @@ void bind_result(py::module_& m) {
       .def_readonly("via_flat", &PlanResult::via_flat,
                     "Whether the path goes start, flat, goal as two plans from flat (driving space, folded start).")
       .def_readonly("path_length", &PlanResult::path_length, "Σ joint-angle distance between waypoints, radians.")
+      .def_readonly("objective", &PlanResult::objective, "The objective's canonical name, e.g. 'rotation' or 'length:1,rotation:0.5'.")
+      .def_readonly("cost", &PlanResult::cost,
+                    "The objective's cost of the waypoints, every crease counted (length and rotation in radians, "
+                    "clearance in pattern units); nan without a path.")
+      .def_property_readonly(
+          "cost_history",
+          [](const PlanResult& r) {
+            Eigen::MatrixX2d m(static_cast<Eigen::Index>(r.cost_history.size()), 2);
+            for (std::size_t i = 0; i < r.cost_history.size(); ++i)
+              m.row(static_cast<Eigen::Index>(i)) << r.cost_history[i].first, r.cost_history[i].second;
+            return m;
+          },
+          "The planner's best cost over its search (OMPL's progress property), shape (changes, 2): seconds since the "
+          "search began, cost; empty for planners that do not optimise.")
       .def_readonly("max_closure_error", &PlanResult::max_closure_error, "Largest loop error over waypoints and replay, radians.")
       .def_property_readonly(
           "waypoints", [](const PlanResult& r) { return states_array(r.waypoints); },
@@ -43,6 +66,19 @@ void bind_result(py::module_& m) {
       });
 }
 
+// plan()'s goal: an array of angles, or a FoldSequence's end state (as the CLI's --goal CMML).
+geometry::FoldState goal_of(const geometry::CreasePattern& p, const py::object& goal) {
+  if (py::isinstance<geometry::FoldSequence>(goal))
+    return checked_end_state(p, goal.cast<geometry::FoldSequence>(), source_of(goal));
+  Eigen::VectorXd angles;
+  try {
+    angles = goal.cast<Eigen::VectorXd>();
+  } catch (const py::cast_error&) {
+    throw py::type_error("goal must be an array of fold angles (radians) or a FoldSequence");
+  }
+  return to_state(p, angles, "goal");
+}
+
 }  // namespace
 
 void bind_plan(py::module_& m) {
@@ -52,25 +88,13 @@ void bind_plan(py::module_& m) {
       [](const geometry::CreasePattern& p, const py::object& goal, const py::object& start, const std::string& space,
          const std::string& planner, double time, unsigned seed, bool collisions, bool use_assignment, bool simplify,
          double search_margin, double waypoint_step, double speed, bool replay, const std::map<std::string, std::string>& params,
-         bool fallback, const py::object& velocity) {
+         bool fallback, const py::object& velocity, const std::string& objective, const std::optional<double>& cost_threshold) {
         speed = renamed(speed, planners::PlanOptions{}.speed, velocity, "velocity", "speed");  // `velocity`: fold()'s desired velocity
         require_positive(time, "time");
         require_positive(waypoint_step, "waypoint_step");
         require_positive(speed, "speed");
         require(std::isfinite(search_margin), "search_margin", "finite (negative: automatic)", search_margin);
-        // The goal first: its errors come before the start's, as they did.
-        geometry::FoldState goal_state;
-        if (py::isinstance<geometry::FoldSequence>(goal)) {  // its end state, as the CLI's --goal CMML
-          goal_state = checked_end_state(p, goal.cast<geometry::FoldSequence>(), source_of(goal));
-        } else {
-          Eigen::VectorXd angles;
-          try {
-            angles = goal.cast<Eigen::VectorXd>();
-          } catch (const py::cast_error&) {
-            throw py::type_error("goal must be an array of fold angles (radians) or a FoldSequence");
-          }
-          goal_state = to_state(p, angles, "goal");
-        }
+        const geometry::FoldState goal_state = goal_of(p, goal);  // its errors come before the start's, as they did
         planners::PlanOptions options;
         if (!start.is_none()) {
           if (py::isinstance<geometry::FoldSequence>(start)) {
@@ -93,6 +117,9 @@ void bind_plan(py::module_& m) {
         options.replay = replay;
         options.params.assign(params.begin(), params.end());
         options.fallback = fallback;
+        options.objective = planners::parse_objective(objective).name();  // ValueError before any work
+        if (cost_threshold) planners::check_cost_threshold(*cost_threshold, "cost_threshold");
+        options.cost_threshold = cost_threshold;
         py::gil_scoped_release release;
         return planners::plan(p, goal_state, options);
       },
@@ -104,7 +131,8 @@ void bind_plan(py::module_& m) {
       py::arg("search_margin") = planners::PlanOptions{}.search_margin, py::arg("waypoint_step") = planners::PlanOptions{}.waypoint_step,
       py::arg("speed") = planners::PlanOptions{}.speed, py::arg("replay") = planners::PlanOptions{}.replay,
       py::arg("params") = std::map<std::string, std::string>{}, py::arg("fallback") = planners::PlanOptions{}.fallback,
-      py::arg("velocity") = py::none(),
+      py::arg("velocity") = py::none(), py::arg("objective") = planners::PlanOptions{}.objective,
+      py::arg("cost_threshold") = planners::PlanOptions{}.cost_threshold,
       ("Plans from `start` to the closed state `goal`: an array of angles (radians) or a FoldSequence (its end state, as "
        "the CLI's --goal CMML). `start` is None (flat), a FoldSequence (its end state is the start; "
       "the plan's sequence begins with it, as the CLI's --start CMML), or a closed state: then the plan's sequence reaches "
@@ -116,10 +144,13 @@ void bind_plan(py::module_& m) {
       "sphere (start, flat, goal); in the driving space from a folded start, a plan from flat to the start, reversed, then "
       "one from flat to the goal (at once for a goal known to lie on another branch). The result's `fallback` and "
       "`via_flat` say so. `speed` is the fastest crease's speed in each CMML event, rad/s (`velocity`: its deprecated "
-      "name). Returns a PlanResult (check `status`).")
+      "name). `objective` is what the planner optimises, as `foldkit plan --objective`: " + quoted_objectives() +
+      ", or a weighted sum 'NAME:WEIGHT,…' of the additive ones (objectives()); `cost_threshold` stops an optimising "
+      "planner once its path costs less (clearance: more), None for never. Returns a PlanResult (check `status`).")
           .c_str());
   m.def("planners", &planners::planner_names, "The planner names plan() accepts.");
   m.def("spaces", &planners::space_names, "The space names plan() accepts ('auto' first).");
+  m.def("objectives", &planners::objective_names, "The objective names plan() accepts ('length' first: the default).");
 }
 
 }  // namespace foldkit::python

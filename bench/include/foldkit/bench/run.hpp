@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,6 +50,16 @@ struct BenchOptions {
   /// Parameters of the sampling planners by OMPL's names ("range", "0.3"), set through each
   /// planner's ParamSet; a planner without one of them is an error.
   std::vector<std::pair<std::string, std::string>> params;
+  /// What the sampling planners optimise (planners::parse_objective(), as PlanOptions::objective):
+  /// the default, "length" without a threshold, only on the planners that sample informed; any
+  /// other on every sampling planner of the run. Recorded as the log's "objective" property,
+  /// each run's cost as "objective cost".
+  std::string objective = planners::PlanOptions{}.objective;
+  /// The objective's cost threshold (PlanOptions::cost_threshold): an optimising planner stops
+  /// once its path meets it (OMPL's planners check it themselves); empty: none is ever met, and
+  /// an optimising planner runs its whole time, unless it proves its path optimal (BIT* whose path
+  /// costs its admissible heuristic's bound).
+  std::optional<double> cost_threshold;
   double time = 1.0;                ///< seconds per run; positive and finite
   unsigned int runs = 10,  ///< runs per planner and scene (per time limit for run_error_vs_time()); at least 1
       seed = 1,            ///< the scenes' goal seed (make_bench_scene()) and OMPL's random seed (0 counts as 1)
@@ -92,6 +103,7 @@ struct PathMetrics {
   /// (simulation::min_clearance).
   double min_clearance = 0.0;
   double path_length = 0.0;    ///< Σ Euclidean joint-angle distance, radians
+  double rotation = 0.0;       ///< Σ|Δθ| over every crease, radians (the rotation objective's cost)
   double goal_distance = 0.0;  ///< largest joint difference between the path's end and the goal, radians
   std::size_t replay_collisions = 0,  ///< collisions the simulator found replaying the path's CMML
       cmml_events = 0;                ///< events of that CMML (geometry::path_sequence at the scene's PlanOptions::speed)

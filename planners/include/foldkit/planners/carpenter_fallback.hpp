@@ -44,7 +44,9 @@ constexpr double kSamplerShare = 0.25;
 
 /// A sampling planner with the spherical Carpenter path as its fallback, on the single-vertex
 /// space. solve() gives the inner planner `inner_time` seconds (or less, when the caller's
-/// condition fires first); when it ends without an exact solution and the caller's condition
+/// condition fires first) to find a path; an optimising inner planner (one that reports OMPL's
+/// progress property "best cost": RRT*, PRM*, …) that has one by then goes on improving it until
+/// the caller's condition. When it ends without an exact solution and the caller's condition
 /// has not fired, the fallback runs until it ends or the caller's condition fires (then
 /// TIMEOUT: the whole search keeps to the caller's limit, to one Carpenter step or one state
 /// check). Its path is written into the space and checked in order, as one

@@ -2,6 +2,7 @@
 /// @file
 /// Motion planning between two closed fold states with OMPL: the space, the planner, and the
 /// path turned into a CMML sequence the simulator replays (docs/PLANNING.md).
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -66,9 +67,19 @@ struct PlanOptions {
   std::vector<std::pair<std::string, std::string>> params;
   /// Seconds the search may take at most (positive, finite): the planner, the Carpenter fallback
   /// and both legs of the way through flat together (to one check or one Carpenter step); it
-  /// stops at the first exact solution. Not bounded by it: the start's lead-in, simplifying,
-  /// densifying and the replay.
+  /// stops at the first exact solution (with `cost_threshold`: the first whose cost meets it).
+  /// Not bounded by it: the start's lead-in, simplifying, densifying and the replay.
   double time = 5.0;
+  /// What the planner optimises, by name (parse_objective(); docs/PLANNING.md, "Objectives"):
+  /// "length", "rotation", "clearance" or a weighted sum such as "length:1,rotation:0.5".
+  /// The default, "length" without a threshold, is set only on the planners that sample
+  /// informed; any other objective on every planner, so that OMPL's optimising planners (RRT*,
+  /// PRM*, …) improve it until `time` or the threshold.
+  std::string objective = "length";
+  /// Stop once the path's cost is below this (clearance: above it), OMPL's cost threshold;
+  /// finite and ≥ 0. Empty: none is ever satisfied, and the search stops at the first exact
+  /// solution a planner reports (RRT*, RRT#, PRM*, … report theirs only at `time`).
+  std::optional<double> cost_threshold;
   unsigned int seed = 1;      ///< seed of OMPL's random numbers (0 counts as 1)
   bool collisions = true;     ///< whether crossing facets make a state invalid (planning and replay)
   bool use_assignment = true;  ///< mountain/valley assignments of the pattern become angle bounds
@@ -122,6 +133,15 @@ struct PlanResult {
   /// the driving space); `seconds` counts the direct attempt and both plans.
   bool via_flat = false;
   double path_length = 0.0;     ///< Σ Euclidean joint-angle distance between waypoints, radians
+  std::string objective;        ///< the objective's canonical name (Objective::name())
+  /// The objective's cost of `waypoints`, every crease counted (planners::path_cost: length and
+  /// rotation in radians, clearance in pattern units); NaN without a path.
+  double cost = std::numeric_limits<double>::quiet_NaN();
+  /// The planner's best cost over its search, as OMPL's progress property "best cost" reports it
+  /// (in the space's own terms: length in its metric), sampled every 20 ms: (seconds since the
+  /// search began, cost) at each change; empty for planners that report none (they do not
+  /// optimise) and for the way through flat.
+  std::vector<std::pair<double, double>> cost_history;
   double max_closure_error = 0.0;  ///< largest loop error over the waypoints and the replay, radians
   std::vector<geometry::FoldState> waypoints;  ///< start … goal, dense (at most waypoint_step apart per joint)
   geometry::FoldSequence sequence;             ///< from the flat sheet (start_sequence first)
@@ -137,7 +157,10 @@ struct PlanResult {
 ///         loops, a start or goal of the wrong size, not closed, breaking the assignment or
 ///         colliding, a time, resolution, waypoint step or speed that is not positive, an unknown
 ///         planner, a single-vertex space on a pattern that is not one vertex (or a goal singular
-///         for it), or no closed way out of a singular start
+///         for it), or no closed way out of a singular start; an objective that does not parse
+///         (parse_objective()) or a cost threshold that is negative or not finite
+/// @throws PlannerRefused (a std::invalid_argument) for a planner that cannot plan on the space
+///         or cannot optimise the objective (objective_refusal())
 PlanResult plan(const geometry::CreasePattern& pattern, const geometry::FoldState& goal, const PlanOptions& options = {});
 
 }  // namespace foldkit::planners

@@ -47,10 +47,13 @@ struct PlanSetup {
 /// @throws PlanInputError when the goal is a singular state of the space
 void set_start_and_goal(const PlanSetup& setup, ompl::geometric::SimpleSetup& ss, const geometry::FoldState& goal);
 
-/// Runs `ss`'s planner (set up on setup.si) until its first exact solution or `seconds`. The time
-/// holds even in planner loops that never consult their termination condition (RRTConnect's
-/// connect loop): setup.validity is under a FoldValidity::TimeLimit meanwhile.
-ompl::base::PlannerStatus run_planner(const PlanSetup& setup, ompl::geometric::SimpleSetup& ss, double seconds);
+/// Runs `ss`'s planner (set up on setup.si) until its first exact solution (`until_threshold`:
+/// its first solution whose cost satisfies the problem's objective, OMPL's "optimized"
+/// solution) or `seconds`. The time holds even in planner loops that never consult their
+/// termination condition (RRTConnect's connect loop): setup.validity is under a
+/// FoldValidity::TimeLimit meanwhile.
+ompl::base::PlannerStatus run_planner(const PlanSetup& setup, ompl::geometric::SimpleSetup& ss, double seconds,
+                                      bool until_threshold = false);
 
 /// Checks the problem as plan() does and builds the space: SpaceKind::Auto picks the
 /// single-vertex space for a pattern with one interior vertex and no hole, else the driving-crease

@@ -61,6 +61,14 @@ std::string canonical_planner(const std::string& name);
 /// mechanical work).
 /// @throws std::invalid_argument for an unknown planner
 ompl::base::OptimizationObjectivePtr informed_objective(const std::string& name, const ompl::base::SpaceInformationPtr& si);
+/// Whether the planner draws from its objective's informed sampler (BIT*, ABIT*, AIT*,
+/// InformedRRT*, SORRT*, CForest): it needs an objective that has one (objective_refusal()).
+/// @throws std::invalid_argument for an unknown planner
+bool planner_samples_informed(const std::string& name);
+/// Whether the planner fills ordered batches from the informed sampler without looking at the
+/// time limit (SORRT*): it needs a direct informed sampler, not a rejection one.
+/// @throws std::invalid_argument for an unknown planner
+bool planner_orders_informed_batches(const std::string& name);
 /// Whether the planner runs threads of its own (PRM, PRM*, pRRT, pSBL, CForest,
 /// AnytimePathShortening: their plans are not reproducible from the seed).
 /// @throws std::invalid_argument for an unknown planner
