@@ -121,9 +121,18 @@ bool app_file(const std::string& path) {
   return false;
 }
 
+// One read of the whole file: a character at a time (istreambuf_iterator) took 0.43 s for a
+// 40 × 40 Miura-ori's 49 MB fold, before the first byte went out.
 std::string read_file(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::error_code ec;
+  const auto size = fs::file_size(p, ec);
+  std::string bytes(ec ? 0 : static_cast<std::size_t>(size), '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  // A file that grew since its size was taken: the rest too.
+  if (in) bytes.append(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return bytes;
 }
 
 std::string first_line(const std::string& text) {

@@ -6,8 +6,9 @@ import { View3D } from './view3d.js';
 import { Timeline } from './timeline.js';
 import { emptySequence, setFold, readCMML, writeCMML, anglesAfterEvents } from './cmml.js';
 import * as session from './session.js';
-import { format, StateNumbers } from './numbers.js';
-import { opensPattern, opensSequence, stem } from './formats.js';
+import { format, StateNumbers, SIMULATING } from './numbers.js';
+import { opensPattern, opensSequence } from './formats.js';
+import { opening } from './boot.js';
 import { $, app, files, log, setNumber, task } from './page.js';
 import { showProblemList } from './problems.js';
 import { parameters, download, baseName } from './page_fields.js';
@@ -144,12 +145,12 @@ function unsetSelectedFolds() {
 }
 
 // Before a simulation, the 3D view shows the commanded end state (not yet checked by foldkit).
-function previewEnd() {
+function previewEnd(why) {
   const joints = app.model.joints();
   const after = anglesAfterEvents(app.sequence, joints.map((j) => j.id));
   const last = after.length ? after[after.length - 1] : joints.map(() => 0);
   view.setAngles(Float64Array.from(last, (d) => (d * Math.PI) / 180));
-  stateNumbers.showPreview();
+  stateNumbers.showPreview(why);
 }
 
 function moveEvent(delta) {
@@ -237,10 +238,13 @@ async function simulateNow() {
 }
 app.simulateNow = simulateNow;
 
+// A sequence's end state is on screen at once; the trajectory and every number follow from simulate.
 async function loadSequence(sequence) {
   app.sequence = sequence;
   app.currentEvent = sequence.events.length ? sequence.events[sequence.events.length - 1].number : 1;
   showSequence();
+  previewEnd(SIMULATING);
+  performance.mark('foldkit:end-state-shown');
   return simulateNow();
 }
 
@@ -307,15 +311,15 @@ async function generateNow(kind) {
 }
 app.generateNow = generateNow;
 
-async function openNow(path) {
+async function openNow(path, opened = undefined) {  // opened: session.open's answer, asked for already
   if (!path) return;
-  const opened = await task('open', () => session.open(path, files(), app.formats));
-  if (!opened) return;
-  if (opened.model) {
+  const answer = await task('open', () => opened ?? session.open(path, files(), app.formats));
+  if (!answer) return;
+  if (answer.model) {
     app.sequence = emptySequence();
-    setModel(opened.model);
+    setModel(answer.model);
   }
-  if (opened.sequence) await loadSequence(opened.sequence);
+  if (answer.sequence) await loadSequence(answer.sequence);
 }
 
 async function listOpenable() {
@@ -425,17 +429,18 @@ async function start() {
   lattice();
   app.interactiveAt = performance.now();  // ms after navigation began: the page answers input from here
   editor.snap = { ...editor.snap, grid: Number($('snap-grid').value) || null };
-  const server = await task('server', () => api.index());
-  if (server) app.formats = server.formats;
-  // The server's files: the first pattern is opened, then the first sequence.
-  if (server && server.files.length) {
-    const pattern = server.files.find((f) => opensPattern(app.formats, f));
-    const sequence = server.files.find((f) => opensSequence(app.formats, f));
-    if (pattern) {
-      $('name').value = stem(app.formats, pattern) + '-edit';
-      await openNow(pattern);
+  // The command line's first pattern, then its first sequence, asked for early by boot.js.
+  const boot = await task('server', () => opening);
+  if (boot) app.formats = boot.server.formats;
+  if (boot && boot.pattern) {
+    $('name').value = boot.name;
+    const opened = session.openedEarly(boot);
+    await openNow(boot.pattern, opened.pattern);
+    performance.mark('foldkit:pattern-shown');
+    if (boot.sequence) {
+      clearTimeout(checkTimer);  // its simulation checks the pattern first: not now, while it is read
+      await openNow(boot.sequence, opened.sequence);
     }
-    if (pattern && sequence) await openNow(sequence);
   }
   app.ready = true;
   document.body.dataset.ready = 'true';

@@ -12,6 +12,10 @@ export function format(value, digits = 3) {
 
 /** What the rows say while foldkit has not measured the state on screen. */
 export const PENDING = '…';
+/** Why the rows are empty beside the commanded end of folds not yet simulated. */
+export const PREVIEW = 'the commanded end state, not checked yet: press Simulate';
+/** … and beside a sequence just opened, which foldkit simulates next (once the pattern passes). */
+export const SIMULATING = 'the end state the sequence commands, not checked yet: foldkit simulates it next';
 /** The DOF row of a frame whose loops do not close: a DOF means nothing there. */
 export const NOT_CLOSED = '—, not closed here: the sequence is invalid here';
 
@@ -45,9 +49,10 @@ export class StateNumbers {
     return this.shown;
   }
 
-  /** The view shows a state no one has checked (the commanded end of folds not yet simulated). */
-  showPreview() {
-    this.shown = { kind: 'preview', answer: null };
+  /** The view shows a state no one has checked (the commanded end of folds not yet simulated);
+   * `why`: the rows' tooltip (default: press Simulate). */
+  showPreview(why = PREVIEW) {
+    this.shown = { kind: 'preview', answer: null, why };
     this.render();
     return this.shown;
   }
@@ -86,8 +91,7 @@ export class StateNumbers {
       return;
     }
     const waiting = this.shown.kind === 'frame';
-    const why = waiting ? 'foldkit measures this frame when the scrubber rests' : this.shown.kind === 'preview'
-      ? 'the commanded end state, not checked yet: press Simulate' : '';
+    const why = waiting ? 'foldkit measures this frame when the scrubber rests' : this.shown.kind === 'preview' ? this.shown.why : '';
     for (const cell of [dof, closure]) {
       cell.textContent = waiting ? PENDING : format(null);
       cell.title = why;

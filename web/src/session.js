@@ -1,7 +1,8 @@
 // One pattern being edited and its files under the server's root: NAME.pmml, NAME.cmml,
 // NAME-frames.fold, … Every number the page shows comes back from foldkit through these calls.
 import * as api from './api.js';
-import { writeCMML, readCMML, foldFrameAngles } from './cmml.js';
+import { writeCMML, CmmlReader, unpackSequence, foldFrameAngles } from './cmml.js';
+import { readSequenceAside } from './reader.js';
 import { PatternModel } from './model.js';
 import { formatOf, extensions } from './formats.js';
 
@@ -63,12 +64,21 @@ export async function stateDof(files, jointIds, degrees) {
   return (await api.verb('dof', { pattern: files.pattern, state: files.state })).result;
 }
 
+/** The trajectory frames the page asks `simulate` for (--max-frames): 600, fewer for a large
+ * sheet, so that frames × joints stays within 400,000 angles, yet at least 100. Every frame is
+ * every edge's angle as FOLD text: a 40 × 40 Miura-ori's 359 frames were 27 MB, 0.3 s to send
+ * and parse; its 121 frames now (9 MB, 0.1 s) still play it smoothly. The verdict, the
+ * collisions and the final state do not depend on it. */
+export function frameBudget(joints) {
+  return Math.max(100, Math.min(600, Math.floor(400000 / Math.max(1, joints))));
+}
+
 /** Simulates the sequence: {result (simulate's JSON), exit, frames (radians per joint, in
  * `joints` order), final, times (seconds per frame)}. `options` are simulate's arguments (e.g. {'no-collision': true}). */
 export async function simulate(model, sequence, files, options = {}) {
   const path = await sequencePath(sequence, files, model);
   const run = await api.verb('simulate', { pattern: files.pattern, sequence: path, frames: files.frames,
-    'max-frames': 600, ...options });
+    'max-frames': frameBudget(model.joints().length), ...options });
   const trajectory = JSON.parse(await api.readFile(files.frames));
   const { frames, final, times } = foldFrameAngles(trajectory, model.joints());
   return { result: run.result, exit: run.exit, log: run.log, frames, final, times };
@@ -99,11 +109,32 @@ export async function stiffness(model, sequence, files, { fixed, load, force }) 
   return (await api.verb('stiffness', args)).result;
 }
 
+// Reads a CMML file as it downloads, on a thread of its own where the browser has them
+// (reader.js), else on this one.
+function readCMMLFile(path) {
+  const aside = readSequenceAside(path);
+  if (aside) return aside;
+  const reader = new CmmlReader();
+  return api.readFilePieces(path, (text) => reader.push(text)).then(() => reader.finish());
+}
+
 /** A CMML file of the root, remembered as the sequence's file until the page edits it. */
 export async function readSequence(path) {
-  const sequence = readCMML(await api.readFile(path));
+  const sequence = await readCMMLFile(path);
   sequence.file = path;
   return sequence;
+}
+
+/** What boot.js's `opening` read early, as open() answers it: {pattern: a promise of {model}, or
+ * null where the pattern is converted (open() it), sequence: a promise of {sequence}, or null}.
+ * Marks when each part came in (performance.mark, for web/bench/open.mjs). */
+export function openedEarly(boot) {
+  const mark = (name) => (value) => { performance.mark(`foldkit:${name}`); return value; };
+  return {
+    pattern: boot.patternText && boot.patternText.then(mark('pattern-text')).then((text) => ({ model: PatternModel.fromPMML(text) })),
+    sequence: boot.packedSequence && boot.packedSequence.then(mark('sequence-read'))
+      .then((packed) => ({ sequence: { ...unpackSequence(packed), file: boot.sequence } })),
+  };
 }
 
 /** A generated pattern (foldkit generate KIND), written as the session's PMML and read back. */

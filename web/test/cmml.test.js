@@ -7,7 +7,7 @@ import { mkdtempSync, writeFileSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { spawnSync } from 'node:child_process';
-import { writeCMML, readCMML, setFold, anglesAfterEvents, foldFrameAngles } from '../src/cmml.js';
+import { writeCMML, readCMML, CmmlReader, unpackSequence, setFold, anglesAfterEvents, foldFrameAngles } from '../src/cmml.js';
 
 const cli = process.env.FOLDKIT_CLI;
 const run = (args) => {
@@ -80,4 +80,36 @@ test('trajectory frames read back as the simulator\'s angles, in foldkit\'s sign
   });
   assert.ok(sim.final_angles.some(({ angle }) => angle > 1) && sim.final_angles.some(({ angle }) => angle < -1), 'both signs occur');
   assert.throws(() => foldFrameAngles(info, [{ id: 99, a: { x: 0.5, y: 0.5 }, b: { x: 9, y: 9 } }]), /changed since it was simulated/);
+});
+
+test('read piece by piece, CMML reads as it does whole, wherever the pieces end', () => {
+  const s = { title: 'pieces & <cuts>', events: [1, 2, 3, 4].map((number) => ({ number, folds: [1, 2, 3].map((joint) => ({ joint, angle: number * 10.125 + joint, speed: 30 })) })) };
+  // Comments (one holding a <Fold>, one between fields), the title after a fold, CRLF line ends.
+  const text = writeCMML(s).replace('<CMML>', '<CMML>\r\n<!-- <Fold><EventNumber>9</EventNumber></Fold> -->')
+    .replace('    <ID>2</ID>', '    <!-- a </Fold> here is no end -->\n    <ID>2</ID>').replace(/\n/g, '\r\n');
+  const whole = readCMML(text);
+  assert.equal(whole.title, s.title);
+  assert.deepEqual(whole.events, s.events);
+  for (let size = 1; size <= 97; size += 3) {
+    const reader = new CmmlReader();
+    for (let k = 0; k < text.length; k += size) reader.push(text.slice(k, k + size));
+    assert.deepEqual(reader.finish(), whole, `pieces of ${size}`);
+  }
+  const late = new CmmlReader();
+  late.push('<CMML><Fold><EventNumber>1</EventNumber><ID>4</ID><FoldAngle>5</FoldAngle><Velocity>6</Velocity></Fold><Title>la');
+  late.push('te</Title></CMML>');
+  assert.deepEqual(late.finish(), { title: 'late', events: [{ number: 1, folds: [{ joint: 4, angle: 5, speed: 6 }] }] });
+  const bad = new CmmlReader();
+  bad.push('<PMML><Fold><EventNumber>1</EventNumber><ID>4</ID><FoldAngle>5</FoldAngle><Velocity>6</Velocity></Fold>');
+  assert.throws(() => bad.finish(), /not a CMML/);
+  assert.throws(() => new CmmlReader().push('<CMML><Fold><ID>4</ID></Fold>'), /no <EventNumber>/);
+  // Packed into arrays (a worker's answer) and back, exactly; events in order of number, each
+  // event's folds in file order wherever they stand in the file.
+  const packer = new CmmlReader();
+  packer.push(text);
+  assert.deepEqual(unpackSequence(packer.packed()), whole);
+  const mixed = writeCMML({ title: '', events: [{ number: 5, folds: [{ joint: 1, angle: 1, speed: 1 }] }, { number: -2, folds: [{ joint: 2, angle: 2, speed: 2 }] }] })
+    + writeCMML({ title: '', events: [{ number: 5, folds: [{ joint: 3, angle: 3, speed: 3 }] }] });
+  assert.deepEqual(readCMML(mixed).events, [{ number: -2, folds: [{ joint: 2, angle: 2, speed: 2 }] },
+    { number: 5, folds: [{ joint: 1, angle: 1, speed: 1 }, { joint: 3, angle: 3, speed: 3 }] }]);
 });

@@ -49,4 +49,15 @@ test('each served format does what the CLI does with its files', { timeout: 6000
   assert.equal(formatOf(formats, '.pmml'), null);
   assert.equal(stem(formats, 'dir/bird.Fold'), 'bird');
   assert.equal(stem(formats, 'dir/notes.txt'), 'notes.txt');
+  // A gzip-compressed file is of its format, as foldkit reads and writes it (X.cmml.gz).
+  assert.equal(run('fold', join(root, 'm.pmml'), '--fraction', '0.5', '-o', join(root, 'm-folded.cmml.gz')).status, 0);
+  assert.equal(run('validate', join(root, 'm-folded.cmml.gz'), '--pattern', join(root, 'm.pmml')).status, 0);
+  assert.ok(opensSequence(formats, 'm-folded.cmml.gz'));
+  assert.equal(formatOf(formats, 'a/B.PMML.GZ').name, 'PMML');
+  assert.equal(formatOf(formats, 'x.gz'), null);
+  assert.equal(stem(formats, 'dir/m-folded.cmml.gz'), 'm-folded');
+  // … and the server sends its text, which the browser's fetch inflates.
+  const sent = await fetch(`${server.url}api/file?path=m-folded.cmml.gz`);
+  assert.equal(sent.headers.get('content-encoding'), 'gzip');
+  assert.match(await sent.text(), /^<\?xml[\s\S]*<CMML>/);
 });

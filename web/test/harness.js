@@ -29,9 +29,10 @@ export function tempRoot(name) {
 }
 
 /** Starts `foldkit serve --port 0` on `root` with `files`; resolves {url, pid, stop()} once its
- * first line names the port (at most 20 s). */
-export function startServer(root, files = [], extra = []) {
-  const child = spawn(cli, ['serve', '--port', '0', '--root', root, '--web', webDir, ...extra, ...files], { stdio: ['ignore', 'ignore', 'pipe'] });
+ * first line names the port (at most 20 s). `web`: the app's folder (a copy of another version,
+ * to measure side by side). */
+export function startServer(root, files = [], extra = [], web = webDir) {
+  const child = spawn(cli, ['serve', '--port', '0', '--root', root, '--web', web, ...extra, ...files], { stdio: ['ignore', 'ignore', 'pipe'] });
   let err = '';
   return new Promise((resolve, reject) => {
     const timer = setTimeout(() => { child.kill('SIGKILL'); reject(new Error(`foldkit serve did not start in 20 s:\n${err}`)); }, 20000);
