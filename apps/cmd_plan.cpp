@@ -1,6 +1,7 @@
 // foldkit plan: a collision-free, closed fold sequence from a start to a goal, by an OMPL planner.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 
@@ -10,6 +11,7 @@
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
+#include "foldkit/planners/experience.hpp"
 #include "foldkit/planners/objectives.hpp"
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
@@ -28,7 +30,7 @@ std::vector<std::pair<int, double>> parse_goal_angles(const geometry::CreasePatt
 struct PlanArgs {  // defaults: PlanOptions's
   std::string pattern, goal, goal_angles, start, space = planners::to_string(planners::PlanOptions{}.space),
                                                  planner = planners::PlanOptions{}.planner, output,
-                                                 objective = planners::PlanOptions{}.objective;
+                                                 objective = planners::PlanOptions{}.objective, experience;
   std::vector<std::string> params;
   double time = planners::PlanOptions{}.time, search_margin = planners::PlanOptions{}.search_margin;
   double cost_threshold = std::numeric_limits<double>::quiet_NaN();  // NaN: none (PlanOptions::cost_threshold empty)
@@ -71,6 +73,9 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
   app->add_flag("--no-fallback", opt.no_fallback,
                 "No way through flat when the planner finds none in a quarter of --time: no spherical Carpenter path "
                 "(single vertex), no start -> flat -> goal plan (driving space, folded --start)");
+  writes(app->add_option("--experience", opt.experience,
+                         "Experience database (made when missing): recall and repair the stored path nearest to this "
+                         "query, plan from scratch when that fails, then store this plan's path in it"));
   writes(app->add_option("-o,--output", opt.output, "Output CMML"))->required();
   add_json(app, opt.json);
 }
@@ -131,6 +136,11 @@ void set_start_and_settings(const PlanArgs& opt, const geometry::CreasePattern& 
   options.fallback = !opt.no_fallback;
   options.objective = opt.objective;
   if (opt.cost_threshold_option->count() > 0) options.cost_threshold = opt.cost_threshold;
+  if (!opt.experience.empty()) {
+    std::error_code ec;
+    options.experience = planners::PlanOptions::Experience{
+        opt.experience, std::filesystem::exists(opt.experience, ec) ? io::read_file(opt.experience) : std::string()};
+  }
 }
 
 int report(const PlanArgs& opt, const planners::PlanResult& r) {
@@ -144,6 +154,11 @@ int report(const PlanArgs& opt, const planners::PlanResult& r) {
   if (r.status.ok()) {
     io::write_file_atomic(opt.output, io::write_cmml(r.sequence));
     std::cerr << "wrote " << opt.output << '\n';
+  }
+  if (r.experience && !r.experience->bytes.empty()) {
+    io::write_file_atomic(opt.experience, r.experience->bytes);
+    std::cerr << opt.experience << ": " << r.experience->paths << " paths (" << (r.experience->recalled ? "recalled and repaired" : "planned from scratch")
+              << ")\n";
   }
   if (opt.json) {
     nlohmann::json j{{"solved", r.status.ok()},  // deprecated: status
@@ -160,6 +175,10 @@ int report(const PlanArgs& opt, const planners::PlanResult& r) {
                      {"cost_history", r.cost_history},
                      {"max_closure_error", r.max_closure_error},
                      {"waypoints", r.waypoints.size()}};
+    if (r.experience)
+      j["experience"] = {{"database", opt.experience},       {"recalled", r.experience->recalled},
+                         {"recall_seconds", r.experience->recall_seconds}, {"loaded", r.experience->loaded},
+                         {"paths", r.experience->paths},     {"bytes", r.experience->bytes.size()}};
     add_status(j, r.status);
     print_json(j);
   }
@@ -204,6 +223,8 @@ int run_plan(PlanArgs& opt) {
     if (e.end() == planners::PlanInputError::End::Start && !opt.start.empty())
       throw io::ParseError(opt.start, end_line(options.start_sequence), e.what());
     throw io::ParseError(opt.goal.empty() ? "--goal-angles" : opt.goal, opt.goal.empty() ? 0 : goal_line, e.what());
+  } catch (const planners::ExperienceError& e) {
+    throw io::ParseError(opt.experience, 0, e.reason());
   } catch (const planners::PlannerRefused& e) {
     throw UsageError(e.what());  // the planner asked for, not the goal, is what cannot be
   } catch (const std::invalid_argument& e) {

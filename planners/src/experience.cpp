@@ -112,7 +112,7 @@ ExperienceDatabase::~ExperienceDatabase() = default;
 
 void ExperienceDatabase::read(const std::string& bytes, const std::string& name) {
   if (bytes.empty()) return;
-  const auto fail = [&](const std::string& why) { throw ExperienceError(name + ": " + why); };
+  const auto fail = [&](const std::string& why) { throw ExperienceError(name, why); };
   std::istringstream in(bytes);
   Header h;
   if (const std::string why = read_header(in, h); !why.empty()) fail(why);

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -16,6 +17,7 @@
 #include "foldkit/geometry/closure_path.hpp"
 #include "foldkit/geometry/projection.hpp"
 #include "foldkit/planners/carpenter_fallback.hpp"
+#include "foldkit/planners/experience.hpp"
 #include "foldkit/planners/objectives.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "foldkit/planners/plan_space.hpp"
@@ -162,13 +164,20 @@ namespace {
 
 // Runs the options' planner (with the single-vertex fallback where it applies) until its first
 // exact solution or the time limit; the solution path, or nothing with result.status set.
-std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanOptions& options, PlanResult& result) {
+// With `db`, the planner is the experience planner around it (recall, then it from scratch).
+std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanOptions& options, PlanResult& result,
+                                       const ExperienceDatabase* db) {
   og::SimpleSetup ss(setup.si);
   if (const std::string why = objective_refusal(options.planner, parse_objective(options.objective)); !why.empty())
     throw PlannerRefused(canonical_planner(options.planner), why);
   ob::PlannerPtr planner = make_planner(options.planner, setup.si);
   set_planner_params(*planner, options.planner, options.params);
   const ob::PlannerPtr optimiser = planner;  // the one that reports its best cost, not the fallback around it
+  std::shared_ptr<ExperiencePlanner> experience;
+  if (db) {
+    experience = std::make_shared<ExperiencePlanner>(setup.si, db, planner, make_planner("RRTConnect", setup.si));
+    planner = experience;
+  }
   std::shared_ptr<CarpenterFallbackPlanner> fallback;
   if (setup.plan_space->fallback() == Fallback::Carpenter && options.fallback) {
     fallback = with_carpenter_fallback(setup, *setup.pattern, planner, options.time, options.waypoint_step);
@@ -185,6 +194,10 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanOptions
   result.seconds = elapsed(t0);
   costs.stop();
   result.fallback = fallback && fallback->used_fallback();
+  if (experience && result.experience) {
+    result.experience->recalled = experience->recalled() && !result.fallback;
+    result.experience->recall_seconds += experience->recall_seconds();
+  }
   if (status == ob::PlannerStatus::EXACT_SOLUTION) return ss.getSolutionPath();
   // The fallback failed (its reason), or the time ran out (OMPL's TIMEOUT, or only an approximate
   // path in that time); anything else OMPL reports is named as it says it.
@@ -216,6 +229,13 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
   result.planner = options.planner;
   result.objective = parse_objective(options.objective).name();
   result.space = setup.plan_space->name();
+  std::unique_ptr<ExperienceDatabase> db;
+  if (options.experience) {
+    db = std::make_unique<ExperienceDatabase>(setup.si, result.space, pattern_fingerprint(pattern));
+    db->read(options.experience->bytes, options.experience->name);
+    result.experience = ExperienceOutcome{};
+    result.experience->loaded = result.experience->paths = db->paths();
+  }
   if (!setup.blocked.empty()) {
     result.status = {geometry::StatusCode::Collision, setup.blocked};
     return result;
@@ -234,7 +254,7 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
   }
   PlanOptions direct = options;
   if (via_flat) direct.time = kSamplerShare * options.time;
-  std::optional<og::PathGeometric> path = solve(setup, direct, result);
+  std::optional<og::PathGeometric> path = solve(setup, direct, result, db.get());
   if (!path && via_flat)
     return detail::plan_via_flat(
         setup, options, result, options.planner + " found no direct plan in " + std::to_string(direct.time) + " s (" + result.status.message + ")");
@@ -255,10 +275,17 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
     result.status = {geometry::StatusCode::ClosureViolated, why};
     return result;
   }
-  return detail::finish_plan(setup, options, *dense, result,
-                             result.fallback ? "solved by the Carpenter fallback (" + options.planner + " found no plan in " +
-                                                   std::to_string(kSamplerShare * options.time) + " s)"
-                                             : std::string("solved"));
+  detail::finish_plan(setup, options, *dense, result,
+                      result.fallback ? "solved by the Carpenter fallback (" + options.planner + " found no plan in " +
+                                            std::to_string(kSamplerShare * options.time) + " s)"
+                                      : std::string("solved"));
+  // A plan that checks out is experience: the space's own states, as the planner left them.
+  if (db && result.status) {
+    if (!result.fallback) db->add(*path);
+    result.experience->paths = db->paths();
+    result.experience->bytes = db->bytes();
+  }
+  return result;
 }
 
 }  // namespace foldkit::planners

@@ -62,6 +62,7 @@ PlanResult& plan_via_flat(const PlanSetup& setup, const PlanOptions& options, Pl
   PlanOptions leg = options;
   leg.start.reset();
   leg.start_sequence = {};
+  leg.experience.reset();  // each leg is another query (from flat); the way through flat is not stored
   leg.replay = false;
   leg.progress = nullptr;
   const double left = std::max(0.0, options.time - result.seconds);

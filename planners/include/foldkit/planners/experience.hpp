@@ -33,7 +33,14 @@ namespace foldkit::planners {
 /// space. what() is "FILE: reason".
 class ExperienceError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  /// @param name    the database file's name
+  /// @param reason  what is wrong with it
+  ExperienceError(const std::string& name, const std::string& reason) : std::runtime_error(name + ": " + reason), reason_(reason) {}
+  /// What is wrong, without the file's name.
+  const std::string& reason() const { return reason_; }
+
+ private:
+  std::string reason_;
 };
 
 /// A fingerprint of a pattern's geometry and creases (FNV-1a over the vertex coordinates, the

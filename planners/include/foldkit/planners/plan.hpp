@@ -112,6 +112,28 @@ struct PlanOptions {
   /// Silence OMPL's console messages (sets OMPL's log level to none, for the whole process).
   bool quiet = true;
   geometry::ProgressFn progress;  ///< the replay's progress (the planner itself runs for `time` at most)
+  /// Planning from experience (docs/PLANNING.md, "Planning from experience"): when set, the
+  /// database file's bytes (empty: a new database) and its name for messages. The stored path
+  /// whose ends are nearest to this query's is recalled and repaired (OMPL's
+  /// LightningRetrieveRepair, repairs by RRTConnect); when that fails, `planner` plans from
+  /// scratch with the time left. PlanResult::experience gives the database back with this
+  /// plan's path added. The way through flat and the Carpenter fallback's path are not stored.
+  struct Experience {
+    std::string name;   ///< the database file's name (messages: "NAME: reason")
+    std::string bytes;  ///< its content; empty for a new database
+  };
+  std::optional<Experience> experience;  ///< none: no experience (the default)
+};
+
+/// What planning from experience did (PlanOptions::experience; planners/experience.hpp).
+struct ExperienceOutcome {
+  bool recalled = false;        ///< the path was recalled from the database and repaired (else from scratch)
+  double recall_seconds = 0.0;  ///< seconds spent recalling and repairing (also when it failed)
+  std::size_t loaded = 0;       ///< paths the database held when the plan began
+  std::size_t paths = 0;        ///< paths it holds now (the plan's own added when it succeeded)
+  /// The database file's new bytes, the plan's path added (write them back atomically); empty
+  /// when the plan failed (the file stays as it was).
+  std::string bytes;
 };
 
 /// What plan() found.
@@ -146,6 +168,7 @@ struct PlanResult {
   std::vector<geometry::FoldState> waypoints;  ///< start … goal, dense (at most waypoint_step apart per joint)
   geometry::FoldSequence sequence;             ///< from the flat sheet (start_sequence first)
   std::optional<simulation::SimulationReport> replay;  ///< the simulator's report; empty when not replayed
+  std::optional<ExperienceOutcome> experience;  ///< with PlanOptions::experience: what it did
 };
 
 /// The pipeline: space → planner → path → simplify → densify → CMML → simulator replay. A plan
@@ -159,6 +182,7 @@ struct PlanResult {
 ///         planner, a single-vertex space on a pattern that is not one vertex (or a goal singular
 ///         for it), or no closed way out of a singular start; an objective that does not parse
 ///         (parse_objective()) or a cost threshold that is negative or not finite
+/// @throws ExperienceError (a std::runtime_error) for an experience database that cannot be used
 /// @throws PlannerRefused (a std::invalid_argument) for a planner that cannot plan on the space
 ///         or cannot optimise the objective (objective_refusal())
 PlanResult plan(const geometry::CreasePattern& pattern, const geometry::FoldState& goal, const PlanOptions& options = {});

@@ -1,0 +1,110 @@
+// foldkit plan --experience DB (issue 38, item 4): the database is made by the first plan, used
+// by the next one (recalled and repaired) in another process, gives the same plan from the same
+// database and seed, and a damaged or foreign database is refused (exit 1) with nothing written.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+#include "foldkit/geometry/generators.hpp"
+#include "foldkit/io/pmml.hpp"
+
+namespace {
+
+using foldkit::test::foldkit;
+using foldkit::test::temp_dir;
+namespace fs = std::filesystem;
+namespace geo = foldkit::geometry;
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A Miura-ori 4×4 and its folds to 0.8 and 0.7 (foldkit fold, closure only).
+struct Case {
+  std::string dir = temp_dir() + "/plan-experience-cli", pattern = dir + "/m4.pmml", g8 = dir + "/g8.cmml", g7 = dir + "/g7.cmml";
+  Case() {
+    fs::create_directories(dir);
+    std::ofstream(pattern) << foldkit::io::write_pmml(geo::build_or_throw(geo::generators::miura(4, 4)).to_spec());
+    EXPECT_EQ(foldkit({"fold", pattern, "--fraction", "0.8", "--no-collision", "-o", g8}).exit, 0);
+    EXPECT_EQ(foldkit({"fold", pattern, "--fraction", "0.7", "--no-collision", "-o", g7}).exit, 0);
+  }
+  foldkit::test::CliResult plan(const std::string& goal, const std::string& db, const std::string& out, const char* seed = "1") const {
+    return foldkit({"plan", pattern, "--goal", goal, "--experience", db, "--seed", seed, "-o", out, "--json"});
+  }
+};
+
+TEST(PlanExperienceCli, FirstPlanMakesTheDatabaseTheNextRecallsFromIt) {
+  const Case c;
+  const std::string db = c.dir + "/first.db";
+  fs::remove(db);
+  const auto first = c.plan(c.g8, db, c.dir + "/p8.cmml");
+  ASSERT_EQ(first.exit, 0) << first.err;
+  const auto j1 = nlohmann::json::parse(first.out)["experience"];
+  EXPECT_FALSE(j1["recalled"].get<bool>());
+  EXPECT_EQ(j1["loaded"].get<int>(), 0);
+  EXPECT_EQ(j1["paths"].get<int>(), 1);
+  EXPECT_EQ(slurp(db).rfind("foldkit-experience 1\n", 0), 0u);
+  EXPECT_EQ(j1["bytes"].get<std::size_t>(), fs::file_size(db));
+
+  const auto second = c.plan(c.g7, db, c.dir + "/p7.cmml");
+  ASSERT_EQ(second.exit, 0) << second.err;
+  const auto j2 = nlohmann::json::parse(second.out)["experience"];
+  EXPECT_TRUE(j2["recalled"].get<bool>());
+  EXPECT_EQ(j2["loaded"].get<int>(), 1);
+  EXPECT_EQ(j2["paths"].get<int>(), 2);
+  // The recalled plan is checked by the simulator as any other: replayed again here.
+  EXPECT_EQ(foldkit({"simulate", c.pattern, c.dir + "/p7.cmml"}).exit, 0);
+}
+
+TEST(PlanExperienceCli, SameDatabaseAndSeedSamePlan) {
+  const Case c;
+  const std::string db = c.dir + "/seeded.db";
+  fs::remove(db);
+  ASSERT_EQ(c.plan(c.g8, db, c.dir + "/s8.cmml").exit, 0);
+  const std::string stored = slurp(db);
+  std::string outs[2];
+  for (int run = 0; run < 2; ++run) {
+    std::ofstream(db, std::ios::binary) << stored;
+    const std::string out = c.dir + "/s7-" + std::to_string(run) + ".cmml";
+    ASSERT_EQ(c.plan(c.g7, db, out, "4").exit, 0);
+    outs[run] = slurp(out);
+  }
+  EXPECT_FALSE(outs[0].empty());
+  EXPECT_EQ(outs[0], outs[1]);
+}
+
+TEST(PlanExperienceCli, DamagedOrForeignDatabaseIsRefusedWithNothingWritten) {
+  const Case c;
+  const std::string db = c.dir + "/damaged.db", out = c.dir + "/never.cmml";
+  fs::remove(db);
+  ASSERT_EQ(c.plan(c.g8, db, c.dir + "/d8.cmml").exit, 0);
+  std::string bytes = slurp(db);
+  bytes[bytes.size() - 3] = static_cast<char>(bytes[bytes.size() - 3] ^ 0x10);
+  std::ofstream(db, std::ios::binary) << bytes;
+  fs::remove(out);
+  const auto damaged = c.plan(c.g7, db, out);
+  EXPECT_EQ(damaged.exit, 1);
+  EXPECT_NE(damaged.err.find(db + ": damaged: the records do not match their CRC-32"), std::string::npos) << damaged.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(slurp(db), bytes);  // left as it was
+
+  // A database of another pattern (a Miura 6×6's) for this one.
+  const std::string m6 = c.dir + "/m6.pmml", g6 = c.dir + "/g6.cmml", other = c.dir + "/m6.db";
+  std::ofstream(m6) << foldkit::io::write_pmml(geo::build_or_throw(geo::generators::miura(6, 6)).to_spec());
+  ASSERT_EQ(foldkit({"fold", m6, "--fraction", "0.8", "--no-collision", "-o", g6}).exit, 0);
+  fs::remove(other);
+  ASSERT_EQ(foldkit({"plan", m6, "--goal", g6, "--experience", other, "-o", c.dir + "/p6.cmml"}).exit, 0);
+  const auto foreign = c.plan(c.g7, other, out);
+  EXPECT_EQ(foreign.exit, 1);
+  EXPECT_NE(foreign.err.find(other + ": written for"), std::string::npos) << foreign.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
