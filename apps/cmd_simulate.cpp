@@ -1,70 +1,160 @@
 // foldkit simulate: replay a CMML on a pattern and say whether it is physically possible.
+#include <cmath>
+#include <filesystem>
 #include <iostream>
+#include <sstream>
 
 #include "cli_common.hpp"
 #include "progress_line.hpp"
+#include "foldkit/dynamics/dynamic_simulate.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
 #include "simulation_report.hpp"
 
 namespace foldkit::apps {
+namespace {
+
+struct SimulateOptions {
+  std::string pattern, sequence, model = simulation::to_string(simulation::SimulationOptions{}.model), frames, svg;
+  simulation::SimulationOptions sim;
+  dynamics::DynamicOptions dyn;
+  std::string gravity, drive = dynamics::to_string(dynamics::DynamicOptions{}.drive), series;
+  int fixed = 0;
+  bool no_collision = false;
+  std::size_t max_frames = 1000;
+  bool json = false;
+};
+
+// "X,Y,Z": three finite numbers (m/s²).
+Eigen::Vector3d parse_gravity(const std::string& text) {
+  std::istringstream in(text);
+  Eigen::Vector3d g;
+  char comma1 = 0, comma2 = 0;
+  if (!(in >> g.x() >> comma1 >> g.y() >> comma2 >> g.z()) || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() ||
+      !g.allFinite())
+    throw UsageError("--gravity needs three finite numbers X,Y,Z (m/s²), not '" + text + "'");
+  return g;
+}
+
+// The physical model (foldkit::dynamics): the kinematic options that also apply to it carry over
+// when given; its own defaults otherwise.
+int run_dynamic(const CLI::App& app, const SimulateOptions& opt, const geometry::CreasePattern& pattern,
+                const geometry::FoldSequence& seq) {
+  dynamics::DynamicOptions o = opt.dyn;
+  if (app.count("--time-step")) o.time_step = opt.sim.time_step;
+  if (app.count("--closure-tolerance")) o.closure_tolerance = opt.sim.closure_tolerance;
+  if (app.count("--max-event-time")) o.max_event_time = opt.sim.max_event_time;
+  if (!opt.gravity.empty()) o.gravity = parse_gravity(opt.gravity);
+  if (app.count("--fixed")) {
+    if (!pattern.actor_index(opt.fixed)) throw UsageError("--fixed: the pattern has no actor " + std::to_string(opt.fixed));
+    o.fixed_actor = opt.fixed;
+  }
+  o.drive = dynamics::parse_drive(opt.drive);
+  o.record_frames = !opt.frames.empty() || !opt.series.empty();
+  dynamics::DynamicReport report;
+  try {
+    ProgressLine progress("simulate");
+    o.progress = progress.callback();
+    report = dynamics::simulate_dynamic(pattern, seq, o);
+  } catch (const simulation::SequenceError& e) {
+    throw io::ParseError(opt.sequence, e.line, e.what());
+  }
+  print_dynamic_summary(opt.sequence, report);
+  if (!opt.series.empty()) {
+    io::write_file_atomic(opt.series, dynamic_series_csv(pattern, report));
+    std::cerr << "wrote " << opt.series << '\n';
+  }
+  const simulation::SimulationReport view = frames_view(report);
+  if (!opt.frames.empty()) {
+    io::write_file_atomic(opt.frames, trajectory_fold(pattern, view, opt.max_frames));
+    std::cerr << "wrote " << opt.frames << '\n';
+  }
+  if (!opt.svg.empty()) {
+    const auto files = write_snapshots(pattern, view, opt.svg);
+    std::cerr << "wrote " << files.size() << " snapshots to " << opt.svg << '\n';
+  }
+  if (opt.json) print_json(dynamic_report_json(pattern, report, o));
+  return report.status.ok() ? kOk : kInvalidSequence;
+}
+
+int run_kinematic(const SimulateOptions& opt, const geometry::CreasePattern& pattern, const geometry::FoldSequence& seq) {
+  simulation::SimulationOptions sim = opt.sim;
+  sim.model = simulation::parse_actuation(opt.model);
+  sim.collisions = !opt.no_collision;
+  sim.record_frames = !opt.frames.empty();
+  simulation::SimulationReport report;
+  try {
+    ProgressLine progress("simulate");
+    sim.progress = progress.callback();
+    report = simulation::simulate(pattern, seq, sim);
+  } catch (const simulation::SequenceError& e) {
+    throw io::ParseError(opt.sequence, e.line, e.what());
+  }
+  print_summary(opt.sequence, report);
+  if (!opt.frames.empty()) {
+    io::write_file_atomic(opt.frames, trajectory_fold(pattern, report, opt.max_frames));
+    std::cerr << "wrote " << opt.frames << '\n';
+  }
+  if (!opt.svg.empty()) {
+    const auto files = write_snapshots(pattern, report, opt.svg);
+    std::cerr << "wrote " << files.size() << " snapshots to " << opt.svg << '\n';
+  }
+  if (opt.json) print_json(report_json(pattern, report));
+  return report.status.ok() ? kOk : kInvalidSequence;
+}
+
+// The physical model's options (docs/SIMULATION.md, "Dynamic simulation"); their defaults are
+// dynamics::DynamicOptions'.
+void add_dynamic_options(CLI::App* app, SimulateOptions& opt) {
+  app->add_option("--gravity", opt.gravity, "Dynamic model: gravity X,Y,Z in m/s² (default none)");
+  positive(app->add_option("--density", opt.dyn.density, "Dynamic model: areal density of the sheet, kg/m²"));
+  positive(app->add_option("--max-torque", opt.dyn.max_torque, "Dynamic model: torque limit of every motor, N·m"));
+  app->add_option("--fixed", opt.fixed, "Dynamic model: ID of the actor held in place (default: the first actor)");
+  positive(app->add_option("--scale", opt.dyn.scale, "Dynamic model: metres per pattern unit"));
+  app->add_option("--drive", opt.drive, "Dynamic model: what drives an event's joints: motor (CMML speed, --max-torque) or "
+                                        "spring (PMML SpringConst, DampConst)")
+      ->check(CLI::IsMember({dynamics::to_string(dynamics::Drive::Motor), dynamics::to_string(dynamics::Drive::Spring)}))
+      ->capture_default_str();
+  writes(app->add_option("--series", opt.series,
+                         "Dynamic model: write each joint's angle (degrees) and torque (N·m) every 0.01 s as CSV (.csv)"));
+}
+
+}  // namespace
 
 Command add_simulate(CLI::App& root) {
-  struct Options {
-    std::string pattern, sequence, model = simulation::to_string(simulation::SimulationOptions{}.model), frames, svg;
-    simulation::SimulationOptions sim;
-    bool no_collision = false;
-    std::size_t max_frames = 1000;
-    bool json = false;
-  };
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<SimulateOptions>();
   CLI::App* app = root.add_subcommand("simulate", "Replay a CMML fold sequence: closure error and self-collision at every step");
   add_pattern(app, opt->pattern);
   reads(app->add_option("sequence", opt->sequence, "Fold sequence (.cmml)"))->required();
-  app->add_option("--model", opt->model, "Actuation: motor (CMML speeds), spring (PMML constants), sync (joints arrive together)")
-      ->check(CLI::IsMember({"motor", "spring", "sync"}))
+  app->add_option("--model", opt->model,
+                  "Actuation: motor (CMML speeds), spring (PMML constants), sync (joints arrive together), dynamic "
+                  "(a physics engine: masses, torque-limited motors, gravity; no contacts)")
+      ->check(CLI::IsMember(dynamics::model_names()))
       ->capture_default_str();
-  positive(app->add_option("--time-step", opt->sim.time_step, "Seconds per step"));
+  positive(app->add_option("--time-step", opt->sim.time_step, "Seconds per step (dynamic model: default 0.001)"));
   positive(app->add_option("--closure-tolerance", opt->sim.closure_tolerance, "Largest loop error accepted, radians"));
   app->add_option("--collision-tolerance", opt->sim.collision.tolerance,
                   "Touching distance, relative to the sheet's bounding-box diagonal")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app->add_flag("--no-collision", opt->no_collision, "Check closure only (no collision world is built)");
-  positive(app->add_option("--max-event-time", opt->sim.max_event_time, "Spring model: seconds an event may take to settle"));
+  positive(app->add_option("--max-event-time", opt->sim.max_event_time,
+                           "Spring model: seconds an event may take to settle (dynamic model: any event; default 60)"));
+  add_dynamic_options(app, *opt);
   writes(app->add_option("--frames", opt->frames, "Write the trajectory as FOLD file_frames (.fold)"));
   positive(app->add_option("--max-frames", opt->max_frames, "Frames kept in --frames, evenly thinned"));
   writes_into(app->add_option("--svg", opt->svg, "Folder for SVG snapshots: each event's end and the first collisions"));
   add_json(app, opt->json);
-  return {app, [opt] {
+  return {app, [opt, app] {
             if (!opt->frames.empty() && !is_kind(opt->frames, FileKind::Fold))
               throw UsageError("--frames needs a .fold file name, not '" + opt->frames + "'");
+            if (!opt->series.empty() && (opt->model != dynamics::kModelName || std::filesystem::path(opt->series).extension() != ".csv"))
+              throw UsageError("--series needs --model dynamic and a .csv file name, not '" + opt->series + "'");
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
             const geometry::FoldSequence seq = load_sequence(pattern, opt->sequence);
-            simulation::SimulationOptions sim = opt->sim;
-            sim.model = simulation::parse_actuation(opt->model);
-            sim.collisions = !opt->no_collision;
-            sim.record_frames = !opt->frames.empty();
-            simulation::SimulationReport report;
-            try {
-              ProgressLine progress("simulate");
-              sim.progress = progress.callback();
-              report = simulation::simulate(pattern, seq, sim);
-            } catch (const simulation::SequenceError& e) {
-              throw io::ParseError(opt->sequence, e.line, e.what());
-            }
-            print_summary(opt->sequence, report);
-            if (!opt->frames.empty()) {
-              io::write_file_atomic(opt->frames, trajectory_fold(pattern, report, opt->max_frames));
-              std::cerr << "wrote " << opt->frames << '\n';
-            }
-            if (!opt->svg.empty()) {
-              const auto files = write_snapshots(pattern, report, opt->svg);
-              std::cerr << "wrote " << files.size() << " snapshots to " << opt->svg << '\n';
-            }
-            if (opt->json) print_json(report_json(pattern, report));
-            return report.status.ok() ? kOk : kInvalidSequence;
+            if (opt->model == dynamics::kModelName) return run_dynamic(*app, *opt, pattern, seq);
+            return run_kinematic(*opt, pattern, seq);
           }};
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/io/atomic_write.hpp"
@@ -114,6 +115,84 @@ std::vector<std::string> write_snapshots(const geometry::CreasePattern& pattern,
     draw("collision-" + std::to_string(k + 1) + ".svg", c.state, o);
   }
   return written;
+}
+
+nlohmann::json dynamic_report_json(const geometry::CreasePattern& pattern, const dynamics::DynamicReport& r,
+                                   const dynamics::DynamicOptions& o) {
+  constexpr double deg = 180.0 / M_PI;
+  nlohmann::json events = nlohmann::json::array(), stalls = nlohmann::json::array(), joints = nlohmann::json::array();
+  for (const auto& e : r.events)
+    events.push_back({{"number", e.number}, {"start", e.start}, {"end", e.end}, {"reached", e.reached},
+                      {"max_closure_error", e.max_closure_error}, {"energy", e.energy}});
+  for (const auto& s : r.stalls)
+    stalls.push_back({{"joint", s.joint}, {"event", s.event}, {"time", s.time}, {"angle", s.angle * deg},
+                      {"target", s.target * deg}, {"needed_torque", s.needed_torque}, {"available_torque", s.available_torque}});
+  for (const auto& j : r.joints) joints.push_back({{"joint", j.id}, {"peak_torque", j.peak_torque}, {"angle", j.angle * deg}});
+  nlohmann::json angles = nlohmann::json::array();
+  for (std::size_t j = 0; j < pattern.joints().size(); ++j)
+    angles.push_back({{"joint", pattern.joints()[j].id},
+                      {"angle", r.final_state.angles[static_cast<Eigen::Index>(j)] * deg}});
+  return {{"ok", r.status.ok()},  // deprecated: status
+          {"status", geometry::to_string(r.status.code)},
+          {"message", r.status.message},
+          {"model", dynamics::kModelName},
+          {"drive", dynamics::to_string(o.drive)},
+          {"gravity", {o.gravity.x(), o.gravity.y(), o.gravity.z()}},
+          {"density", o.density},
+          {"max_torque", o.max_torque},
+          {"scale", o.scale},
+          {"time_step", r.time_step},
+          {"duration", r.duration},
+          {"seconds", r.seconds},
+          {"real_time_factor", r.seconds > 0.0 ? r.duration / r.seconds : 0.0},
+          {"steps", r.steps},
+          {"max_closure_error", r.max_closure_error},
+          {"closure_tolerance", r.closure_tolerance},
+          {"events", events},
+          {"stalls", stalls},
+          {"joints", joints},
+          {"energy", {{"kinetic", r.kinetic_energy}, {"potential", r.potential_energy}, {"spring", r.spring_energy},
+                      {"peak_kinetic", r.peak_kinetic_energy}}},
+          {"problems", r.problems},
+          {"final_angles", angles}};
+}
+
+void print_dynamic_summary(const std::string& name, const dynamics::DynamicReport& r) {
+  std::size_t reached = 0;
+  for (const auto& e : r.events) reached += e.reached ? 1 : 0;
+  std::cerr << name << ": " << reached << " of " << r.events.size() << " events reached, " << r.duration << " s simulated in "
+            << r.seconds << " s (" << r.steps << " steps, model dynamic), closure drift " << r.max_closure_error
+            << " rad, energy " << r.kinetic_energy + r.potential_energy + r.spring_energy << " J: "
+            << (r.status.ok() ? "valid" : "INVALID") << '\n';
+  for (const auto& p : r.problems) std::cerr << "  " << p << '\n';
+}
+
+std::string dynamic_series_csv(const geometry::CreasePattern& pattern, const dynamics::DynamicReport& r) {
+  std::ostringstream out;
+  out.precision(10);
+  out << "time,event";
+  for (const auto& j : pattern.joints()) out << ",angle_" << j.id;
+  for (const auto& j : pattern.joints()) out << ",torque_" << j.id;
+  out << '\n';
+  for (std::size_t k = 0; k < r.frames.size(); ++k) {
+    const auto& f = r.frames[k];
+    out << f.time << ',' << f.event;
+    for (Eigen::Index j = 0; j < f.state.angles.size(); ++j) out << ',' << f.state.angles[j] * 180.0 / M_PI;
+    for (Eigen::Index j = 0; j < r.frame_torques[k].size(); ++j) out << ',' << r.frame_torques[k][j];
+    out << '\n';
+  }
+  return out.str();
+}
+
+simulation::SimulationReport frames_view(const dynamics::DynamicReport& r) {
+  simulation::SimulationReport view;
+  view.status = r.status;
+  view.duration = r.duration;
+  view.max_closure_error = r.max_closure_error;
+  for (const auto& e : r.events) view.events.push_back({e.number, e.start, e.end, e.max_closure_error, e.reached});
+  view.frames = r.frames;
+  view.final_state = r.final_state;
+  return view;
 }
 
 }  // namespace foldkit::apps

@@ -8,7 +8,7 @@ if(DOXYGEN_FOUND)
 
   # Each library folder's public headers; folders still being written may not exist yet.
   set(FOLDKIT_DOCS_INPUT "")
-  foreach(folder geometry io simulation analysis folding statespaces planners bench)
+  foreach(folder geometry io simulation dynamics analysis folding statespaces planners bench)
     if(IS_DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/include)
       string(APPEND FOLDKIT_DOCS_INPUT " \"${PROJECT_SOURCE_DIR}/${folder}/include\"")
     endif()

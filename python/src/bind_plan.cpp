@@ -47,10 +47,10 @@ void bind_result(py::module_& m) {
       .def_property_readonly(
           "cost_history",
           [](const PlanResult& r) {
-            Eigen::MatrixX2d m(static_cast<Eigen::Index>(r.cost_history.size()), 2);
+            Eigen::MatrixX2d history(static_cast<Eigen::Index>(r.cost_history.size()), 2);
             for (std::size_t i = 0; i < r.cost_history.size(); ++i)
-              m.row(static_cast<Eigen::Index>(i)) << r.cost_history[i].first, r.cost_history[i].second;
-            return m;
+              history.row(static_cast<Eigen::Index>(i)) << r.cost_history[i].first, r.cost_history[i].second;
+            return history;
           },
           "The planner's best cost over its search (OMPL's progress property), shape (changes, 2): seconds since the "
           "search began, cost; empty for planners that do not optimise.")

@@ -1,5 +1,9 @@
-// foldkit.simulate: the kinematic replay of a fold sequence, with its report, frames and poses.
+// foldkit.simulate: the kinematic replay of a fold sequence, with its report, frames and poses;
+// model="dynamic": the physical replay of foldkit::dynamics, with its DynamicReport.
+#include <optional>
+
 #include "bindings.hpp"
+#include "foldkit/dynamics/dynamic_simulate.hpp"
 #include "foldkit/io/parse_error.hpp"
 #include "foldkit/simulation/simulate.hpp"
 
@@ -79,28 +83,139 @@ void bind_report(py::module_& m) {
       });
 }
 
+void bind_dynamic_report(py::module_& m) {
+  using dynamics::DynamicReport;
+  py::class_<dynamics::Stall>(m, "Stall", "A joint that did not reach its angle in the dynamic model.")
+      .def_readonly("joint", &dynamics::Stall::joint, "Joint ID.")
+      .def_readonly("event", &dynamics::Stall::event, "EventNumber.")
+      .def_readonly("time", &dynamics::Stall::time, "When, seconds from the start.")
+      .def_readonly("angle", &dynamics::Stall::angle, "Its angle then, radians.")
+      .def_readonly("target", &dynamics::Stall::target, "The angle it was driven to, radians.")
+      .def_readonly("needed_torque", &dynamics::Stall::needed_torque, "Torque to hold the sheet there at rest, N·m.")
+      .def_readonly("available_torque", &dynamics::Stall::available_torque, "The motor's limit (a spring's k·|θ*−θ|), N·m.");
+  py::class_<dynamics::DynamicEventReport>(m, "DynamicEventReport", "One event of a dynamic run.")
+      .def_readonly("number", &dynamics::DynamicEventReport::number, "EventNumber.")
+      .def_readonly("start", &dynamics::DynamicEventReport::start, "Seconds.")
+      .def_readonly("end", &dynamics::DynamicEventReport::end, "Seconds.")
+      .def_readonly("reached", &dynamics::DynamicEventReport::reached, "Whether every joint it names reached its angle.")
+      .def_readonly("max_closure_error", &dynamics::DynamicEventReport::max_closure_error, "Radians.")
+      .def_readonly("energy", &dynamics::DynamicEventReport::energy, "Kinetic + gravitational + spring energy at its end, J.");
+  py::class_<dynamics::JointReport>(m, "JointReport", "One joint over a dynamic run.")
+      .def_readonly("id", &dynamics::JointReport::id, "Joint ID.")
+      .def_readonly("peak_torque", &dynamics::JointReport::peak_torque, "Largest |torque| of its motor or spring, N·m.")
+      .def_readonly("angle", &dynamics::JointReport::angle, "Final angle, radians.");
+  py::class_<DynamicReport>(m, "DynamicReport", py::dynamic_attr(),
+                            "What simulate(model='dynamic') found: status, stalls, peak torques, closure drift, energy, frames.")
+      .def_readonly("status", &DynamicReport::status, "'success', or 'no-progress' (a stall), 'limit-reached', 'closure-violated', 'singular'.")
+      .def_property_readonly("valid", [](const DynamicReport& r) { return r.status.ok(); }, "Whether every event reached its angles.")
+      .def_property_readonly("model", [](const DynamicReport&) { return std::string(dynamics::kModelName); }, "'dynamic'.")
+      .def_readonly("time_step", &DynamicReport::time_step, "Seconds per engine step.")
+      .def_readonly("duration", &DynamicReport::duration, "Simulated seconds.")
+      .def_readonly("seconds", &DynamicReport::seconds, "Wall-clock seconds the engine ran.")
+      .def_readonly("steps", &DynamicReport::steps, "Engine steps.")
+      .def_readonly("max_closure_error", &DynamicReport::max_closure_error, "Closure drift of the engine's poses, radians.")
+      .def_readonly("closure_tolerance", &DynamicReport::closure_tolerance, "Radians.")
+      .def_readonly("events", &DynamicReport::events, "One DynamicEventReport per event run.")
+      .def_readonly("stalls", &DynamicReport::stalls, "Stalls.")
+      .def_readonly("joints", &DynamicReport::joints, "One JointReport per joint.")
+      .def_readonly("kinetic_energy", &DynamicReport::kinetic_energy, "At the end, J.")
+      .def_readonly("potential_energy", &DynamicReport::potential_energy, "Gravitational, relative to flat, at the end, J.")
+      .def_readonly("spring_energy", &DynamicReport::spring_energy, "At the end, J.")
+      .def_readonly("peak_kinetic_energy", &DynamicReport::peak_kinetic_energy, "J.")
+      .def_readonly("problems", &DynamicReport::problems, "Why the run failed, in words.")
+      .def_property_readonly(
+          "frame_times", [](const DynamicReport& r) {
+            std::vector<double> t;
+            for (const auto& f : r.frames) t.push_back(f.time);
+            return py::array(py::cast(t));
+          },
+          "Time of each recorded frame, seconds.")
+      .def_property_readonly(
+          "frames", [](const DynamicReport& r) {
+            std::vector<geometry::FoldState> s;
+            for (const auto& f : r.frames) s.push_back(f.state);
+            return states_array(s, r.final_state.angles.size());
+          },
+          "Recorded states, shape (frames, joints), radians.")
+      .def_property_readonly(
+          "frame_torques", [](const DynamicReport& r) {
+            std::vector<geometry::FoldState> t;
+            for (const auto& v : r.frame_torques) t.push_back({v});
+            return states_array(t, r.final_state.angles.size());
+          },
+          "Each joint's motor or spring torque at each frame, shape (frames, joints), N·m (0: free hinge).")
+      .def_property_readonly("final_state", [](const DynamicReport& r) { return r.final_state.angles; }, "The engine's final angles.")
+      .def("__repr__", [](const DynamicReport& r) {
+        return "DynamicReport(" + std::string(geometry::to_string(r.status.code)) + ", " + std::to_string(r.steps) + " steps, " +
+               std::to_string(r.stalls.size()) + " stalls)";
+      });
+}
+
+// The physical options, each defaulting to dynamics::DynamicOptions' member.
+struct PhysicsArgs {
+  std::optional<Eigen::Vector3d> gravity;
+  double density, max_torque, scale;
+  std::optional<int> fixed;
+  std::string drive;
+};
+
+py::object simulate_dynamic(const geometry::CreasePattern& p, const geometry::FoldSequence& sequence, const std::string& source,
+                            const PhysicsArgs& a, std::optional<double> time_step, std::optional<double> closure_tolerance,
+                            std::optional<double> max_event_time, bool record_frames) {
+  dynamics::DynamicOptions o;
+  require_positive(a.density, "density");
+  require_positive(a.max_torque, "max_torque");
+  require_positive(a.scale, "scale");
+  o.density = a.density;
+  o.max_torque = a.max_torque;
+  o.scale = a.scale;
+  if (a.gravity) o.gravity = *a.gravity;
+  require(o.gravity.allFinite(), "gravity", "finite", o.gravity.sum());
+  if (a.fixed) require(p.actor_index(*a.fixed).has_value(), "fixed", "an actor ID of the pattern", *a.fixed);
+  o.fixed_actor = a.fixed;
+  o.drive = dynamics::parse_drive(a.drive);
+  o.time_step = time_step.value_or(o.time_step);
+  o.closure_tolerance = closure_tolerance.value_or(o.closure_tolerance);
+  o.max_event_time = max_event_time.value_or(o.max_event_time);
+  o.record_frames = record_frames;
+  dynamics::DynamicReport report;
+  try {
+    py::gil_scoped_release release;
+    report = dynamics::simulate_dynamic(p, sequence, o);
+  } catch (const simulation::SequenceError& e) {
+    throw io::ParseError(source, e.line, e.what());
+  }
+  return py::cast(std::move(report));
+}
+
 }  // namespace
 
 void bind_simulate(py::module_& m) {
+  bind_dynamic_report(m);
   bind_report_parts(m);
   bind_report(m);
   m.def(
       "simulate",
-      [](const geometry::CreasePattern& p, const py::object& sequence_object, const std::string& model, double time_step,
-         double closure_tolerance, bool collisions, bool record_frames, bool poses, double max_event_time) {
+      [](const geometry::CreasePattern& p, const py::object& sequence_object, const std::string& model,
+         std::optional<double> time_step, std::optional<double> closure_tolerance, bool collisions, bool record_frames, bool poses,
+         std::optional<double> max_event_time, std::optional<Eigen::Vector3d> gravity, double density, double max_torque,
+         std::optional<int> fixed, double scale, const std::string& drive) -> py::object {
         const auto& sequence = sequence_object.cast<const geometry::FoldSequence&>();
         const std::string source = source_of(sequence_object);
         require_valid(p, sequence, source);
-        require_positive(time_step, "time_step");
-        require_positive(closure_tolerance, "closure_tolerance");
-        require_positive(max_event_time, "max_event_time");
+        for (const auto& [value, name] : {std::pair{time_step, "time_step"}, {closure_tolerance, "closure_tolerance"},
+                                          {max_event_time, "max_event_time"}})
+          if (value) require_positive(*value, name);
+        if (model == dynamics::kModelName)
+          return simulate_dynamic(p, sequence, source, {gravity, density, max_torque, scale, fixed, drive}, time_step,
+                                  closure_tolerance, max_event_time, record_frames);
         simulation::SimulationOptions o;
         o.model = simulation::parse_actuation(model);
-        o.time_step = time_step;
-        o.closure_tolerance = closure_tolerance;
+        o.time_step = time_step.value_or(o.time_step);
+        o.closure_tolerance = closure_tolerance.value_or(o.closure_tolerance);
         o.collisions = collisions;
         o.record_frames = record_frames || poses;
-        o.max_event_time = max_event_time;
+        o.max_event_time = max_event_time.value_or(o.max_event_time);
         SimulationReport report;
         try {
           py::gil_scoped_release release;
@@ -120,11 +235,18 @@ void bind_simulate(py::module_& m) {
       },
       // SimulationOptions' defaults, but record_frames: the frames are what a notebook plots.
       py::arg("pattern"), py::arg("sequence"), py::arg("model") = std::string(simulation::to_string(simulation::SimulationOptions{}.model)),
-      py::arg("time_step") = simulation::SimulationOptions{}.time_step,
-      py::arg("closure_tolerance") = simulation::SimulationOptions{}.closure_tolerance,
+      // time_step, closure_tolerance, max_event_time: None takes the model's own default
+      // (SimulationOptions' or DynamicOptions').
+      py::arg("time_step") = py::none(), py::arg("closure_tolerance") = py::none(),
       py::arg("collisions") = simulation::SimulationOptions{}.collisions, py::arg("record_frames") = true, py::arg("poses") = false,
-      py::arg("max_event_time") = simulation::SimulationOptions{}.max_event_time,
-      "Replays `sequence` on `pattern` as `foldkit simulate`: model 'motor' (CMML speeds), 'spring' or 'sync'. "
+      py::arg("max_event_time") = py::none(), py::arg("gravity") = py::none(),
+      py::arg("density") = dynamics::DynamicOptions{}.density, py::arg("max_torque") = dynamics::DynamicOptions{}.max_torque,
+      py::arg("fixed") = py::none(), py::arg("scale") = dynamics::DynamicOptions{}.scale,
+      py::arg("drive") = std::string(dynamics::to_string(dynamics::DynamicOptions{}.drive)),
+      "Replays `sequence` on `pattern` as `foldkit simulate`: model 'motor' (CMML speeds), 'spring', 'sync', or 'dynamic' "
+      "(a physics engine: returns a DynamicReport; gravity (x, y, z) m/s², density kg/m², max_torque N·m, fixed actor ID, "
+      "scale metres per pattern unit, drive 'motor' or 'spring'; docs/SIMULATION.md). time_step, closure_tolerance and "
+      "max_event_time default to the model's own (None). "
       "Returns a SimulationReport; with poses=True its `poses` holds each actor's 4×4 pose at every frame, shape "
       "(frames, actors, 4, 4). A sequence naming joints the pattern lacks raises ParseError at its line.");
 }

@@ -1,0 +1,163 @@
+#pragma once
+/// @file
+/// Dynamic replay of a fold sequence on a physics engine (ODE, private to this library): each
+/// actor a rigid lamina, each joint a hinge, events driven by torque-limited motors or torsion
+/// springs, under gravity (docs/SIMULATION.md, "Dynamic simulation").
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "foldkit/geometry/crease_pattern.hpp"
+#include "foldkit/geometry/fold_sequence.hpp"
+#include "foldkit/geometry/fold_state.hpp"
+#include "foldkit/geometry/progress.hpp"
+#include "foldkit/geometry/status.hpp"
+#include "foldkit/simulation/simulate.hpp"
+
+/// Dynamic fold simulation. Units: SI. Lengths in the pattern are multiplied by
+/// DynamicOptions::scale to give metres; masses kilograms, times seconds, torques N·m, angles
+/// radians (0 flat, positive mountain, as everywhere in foldkit).
+namespace foldkit::dynamics {
+
+/// The model's name as `foldkit simulate --model` and Python's `model=` spell it: "dynamic".
+/// simulation::parse_actuation() knows only the kinematic models; callers test for this name
+/// first (simulation does not depend on this library).
+inline constexpr const char* kModelName = "dynamic";
+/// Every model `foldkit simulate --model` (and Python's `model=`) takes, in the order help lists
+/// them: simulation's actuation models (simulation::to_string()), then kModelName.
+std::vector<std::string> model_names();
+
+/// What drives the joints an event names.
+enum class Drive {
+  /// A velocity-controlled motor (the paper's Sec. 4.3): it turns its joint toward the CMML angle
+  /// at the CMML speed with at most DynamicOptions::max_torque, and holds the angle afterwards.
+  Motor,
+  /// A torsion spring −k(θ−θ*) − cθ̇ with the PMML SpringConst k (N·m/rad) and DampConst c
+  /// (N·m·s/rad), θ* the CMML angle; integrated implicitly (stable for every k).
+  Spring,
+};
+/// "motor" or "spring".
+const char* to_string(Drive drive);
+/// The drive named "motor" or "spring".
+/// @throws std::invalid_argument for any other name
+Drive parse_drive(const std::string& name);
+
+/// How the engine solves the joint constraints at each step.
+enum class Solver {
+  Iterative,  ///< ODE's dWorldQuickStep (projected Gauss–Seidel, DynamicOptions::iterations sweeps)
+  Direct,     ///< ODE's dWorldStep (dense LCP: exact, cubic in the constraint rows)
+};
+
+/// Options of simulate_dynamic(): every default of the dynamic model, once.
+struct DynamicOptions {
+  double density = 1.0;      ///< areal density of the sheet, kg/m² (positive, finite)
+  double max_torque = 1.0;   ///< torque limit of every motor, N·m (positive, finite)
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< m/s², world axes of the flat sheet (default none)
+  /// Actor ID of the actor held in place (kinematic: it never moves); empty: the first actor.
+  std::optional<int> fixed_actor;
+  double scale = 1.0;        ///< metres per pattern unit (positive, finite)
+  /// The state the sheet starts from, at rest (one angle per joint, radians, closed: its loop
+  /// error at most closure_tolerance); empty: flat. The flat sheet is a bifurcation point where
+  /// one motor does not decide which way the other creases go; a state past it does.
+  Eigen::VectorXd start;
+  Drive drive = Drive::Motor;  ///< what drives the joints an event names
+  double time_step = 1e-3;   ///< seconds per engine step (positive; at most approach_time and stall_time)
+  Solver solver = Solver::Direct;  ///< how the engine solves the constraints
+  int iterations = 100;      ///< Gauss–Seidel sweeps per step of Solver::Iterative (≥ 1)
+  /// Share of the joints' position error the engine corrects per step (ODE's ERP, in (0, 1]):
+  /// what keeps the hinges, and so the closed loops, from drifting.
+  double erp = 0.2;
+  double cfm = 1e-10;        ///< constraint force mixing (ODE's CFM, ≥ 0): softness of the hinges
+  /// A motor commands speed min(CMML speed, |θ* − θ| / approach_time) toward its angle, seconds:
+  /// it slows down exponentially over the last approach_time·speed radians and holds there.
+  double approach_time = 0.02;
+  double reach_tolerance = 1e-4;  ///< radians: a motor within this of its angle has reached it
+  /// Spring drive: an event ends when every joint turns slower than this (rad/s) …
+  double settle_speed = 1e-3;
+  double settle_time = 0.1;       ///< … for this long (seconds)
+  /// A motor that is not within reach_tolerance, makes less than a hundredth of its speed of
+  /// progress and uses its full torque for this long (seconds) has stalled, when holding the
+  /// sheet at rest where it is would need more than its torque (else it was a transient, such as
+  /// braking an overshoot, and it goes on).
+  double stall_time = 0.1;
+  double max_event_time = 60.0;   ///< seconds an event may take before it fails (LimitReached)
+  double closure_tolerance = 1e-3;  ///< radians; a larger loop error of the engine's poses fails the sequence
+  double check_interval = 0.01;   ///< seconds between closure checks (and frames)
+  bool record_frames = false;     ///< keep the state every check_interval (for FOLD file_frames)
+  /// Called at every check: events done (before the current one) of all, unit "events", and the
+  /// closure error of the state checked.
+  geometry::ProgressFn progress;
+};
+
+/// A joint that did not reach its angle.
+struct Stall {
+  int joint = 0;               ///< joint ID
+  int event = 0;               ///< EventNumber
+  double time = 0.0;           ///< when it was found, seconds from the start
+  double angle = 0.0;          ///< the joint's angle then, radians
+  double target = 0.0;         ///< the angle it was driven to, radians
+  /// Torque the joint needs to hold its current pose (N·m, absolute): the engine's answer with
+  /// the joint's limit lifted, the sheet at rest and every other motor holding still.
+  double needed_torque = 0.0;
+  double available_torque = 0.0;  ///< the motor's limit (spring drive: k·|θ* − θ|), N·m
+};
+
+/// What happened in one event.
+struct DynamicEventReport {
+  int number = 0;               ///< its EventNumber
+  double start = 0.0;           ///< seconds
+  double end = 0.0;             ///< seconds
+  bool reached = true;          ///< whether every joint it names reached its angle
+  double max_closure_error = 0.0;  ///< largest loop error of the engine's poses checked in it, radians
+  double energy = 0.0;          ///< kinetic + gravitational + spring energy at its end, joules
+};
+
+/// Per joint over the whole run.
+struct JointReport {
+  int id = 0;                   ///< joint ID
+  double peak_torque = 0.0;     ///< largest |torque| its motor or spring exerted, N·m (0: free hinge)
+  double angle = 0.0;           ///< final angle, radians
+};
+
+/// What simulate_dynamic() found.
+struct DynamicReport {
+  /// Success when every event reached its angles and the loops stayed closed within the
+  /// tolerance; otherwise NoProgress (a stall), LimitReached (max_event_time), ClosureViolated
+  /// or Singular (the engine's state blew up: the message names a smaller time step).
+  geometry::Status status;
+  double time_step = 0.0;          ///< seconds
+  double duration = 0.0;           ///< simulated seconds
+  double seconds = 0.0;            ///< wall-clock seconds the engine ran
+  std::size_t steps = 0;           ///< engine steps
+  double max_closure_error = 0.0;  ///< largest loop error of the engine's poses (ClosureSystem), radians
+  double closure_tolerance = 0.0;  ///< radians
+  std::vector<DynamicEventReport> events;  ///< one per event run, in order
+  std::vector<Stall> stalls;       ///< joints that stalled (the run stops at the first event with any)
+  std::vector<JointReport> joints;  ///< one per joint, in pattern order
+  double kinetic_energy = 0.0;     ///< at the end, joules
+  double potential_energy = 0.0;   ///< gravitational, at the end, relative to the flat sheet, joules
+  double spring_energy = 0.0;      ///< ½k(θ−θ*)² of the spring-driven joints at the end, joules
+  double peak_kinetic_energy = 0.0;  ///< joules
+  std::vector<std::string> problems;  ///< why the sequence failed, in words; empty on success
+  /// The flat state at time 0, then every check_interval when record_frames, else each event's end.
+  std::vector<simulation::Frame> frames;
+  /// Per frame, the torque each joint's motor or spring exerted in the step before it (N·m, signed
+  /// like the fold angle; 0 for free hinges and at time 0): one vector per entry of frames.
+  std::vector<Eigen::VectorXd> frame_torques;
+  geometry::FoldState final_state;   ///< the engine's angles at the end
+};
+
+/// Runs `sequence` on `pattern` in the physics engine from the resting sheet at options.start.
+/// @throws std::invalid_argument for options out of range (a density, torque, scale, time or
+///         tolerance that is not positive and finite, a time step above approach_time or
+///         stall_time, gravity not finite, an unknown fixed
+///         actor, iterations < 1, erp outside (0, 1], a start state of the wrong size, not finite
+///         or not closed) or a sequence naming joints the pattern lacks
+/// @throws simulation::SequenceError for a fold whose speed is not positive and finite, or (spring
+///         drive) a joint with neither spring nor damping constant
+DynamicReport simulate_dynamic(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence,
+                               const DynamicOptions& options = {});
+
+}  // namespace foldkit::dynamics

@@ -1,0 +1,296 @@
+#include "foldkit/dynamics/dynamic_simulate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "foldkit/geometry/closure.hpp"
+#include "ode_sheet.hpp"
+
+namespace foldkit::dynamics {
+
+std::vector<std::string> model_names() {
+  using simulation::Actuation;
+  return {simulation::to_string(Actuation::Motor), simulation::to_string(Actuation::Spring),
+          simulation::to_string(Actuation::Synchronised), kModelName};
+}
+
+const char* to_string(Drive drive) { return drive == Drive::Motor ? "motor" : "spring"; }
+
+Drive parse_drive(const std::string& name) {
+  if (name == "motor") return Drive::Motor;
+  if (name == "spring") return Drive::Spring;
+  throw std::invalid_argument("unknown drive '" + name + "' (motor or spring)");
+}
+
+namespace {
+
+void check_options(const geometry::CreasePattern& pattern, const DynamicOptions& o) {
+  auto positive = [](double v, const char* name) {
+    if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument(std::string(name) + " must be positive and finite");
+  };
+  positive(o.density, "density");
+  positive(o.max_torque, "max_torque");
+  positive(o.scale, "scale");
+  positive(o.time_step, "time_step");
+  positive(o.approach_time, "approach_time");
+  positive(o.reach_tolerance, "reach_tolerance");
+  positive(o.settle_speed, "settle_speed");
+  positive(o.settle_time, "settle_time");
+  positive(o.stall_time, "stall_time");
+  positive(o.max_event_time, "max_event_time");
+  positive(o.closure_tolerance, "closure_tolerance");
+  positive(o.check_interval, "check_interval");
+  // A motor closes approach_time's worth of its error per second: a longer step overshoots and
+  // oscillates, and a stall could be called on one step.
+  if (o.time_step > std::min(o.approach_time, o.stall_time))
+    throw std::invalid_argument("time_step " + std::to_string(o.time_step) + " s is too long for the motors: at most " +
+                                std::to_string(std::min(o.approach_time, o.stall_time)) + " s (approach_time, stall_time)");
+  if (!o.gravity.allFinite()) throw std::invalid_argument("gravity must be finite");
+  if (o.iterations < 1) throw std::invalid_argument("iterations must be at least 1");
+  if (!(o.erp > 0.0 && o.erp <= 1.0)) throw std::invalid_argument("erp must be in (0, 1]");
+  if (!(o.cfm >= 0.0) || !std::isfinite(o.cfm)) throw std::invalid_argument("cfm must be non-negative and finite");
+  if (o.start.size() > 0) {
+    if (o.start.size() != static_cast<Eigen::Index>(pattern.joints().size()) || !o.start.allFinite())
+      throw std::invalid_argument("start must hold one finite angle per joint");
+    const int root = o.fixed_actor && pattern.actor_index(*o.fixed_actor) ? *pattern.actor_index(*o.fixed_actor) : 0;
+    const geometry::ClosureSystem closure(pattern, root);
+    if (closure.max_error(geometry::FoldState{o.start}) > o.closure_tolerance)
+      throw std::invalid_argument("the start state does not close (loop error above closure_tolerance)");
+  }
+  if (o.fixed_actor && !pattern.actor_index(*o.fixed_actor))
+    throw std::invalid_argument("no actor " + std::to_string(*o.fixed_actor) + " to hold fixed");
+}
+
+// One run of a sequence: the engine, the closure measure and the report being filled.
+class Runner {
+ public:
+  Runner(const geometry::CreasePattern& pattern, const DynamicOptions& options, int fixed)
+      : pattern_(pattern), o_(options), sheet_(pattern, options, fixed), closure_(pattern, fixed),
+        stalled_for_(pattern.joints().size(), 0.0) {
+    report_.status = {geometry::StatusCode::Success, "every event reached its angles"};
+    report_.time_step = o_.time_step;
+    report_.closure_tolerance = o_.closure_tolerance;
+    for (const auto& j : pattern.joints()) report_.joints.push_back({j.id, 0.0, 0.0});
+    report_.frames.push_back({0.0, -1, sheet_.state()});
+    report_.frame_torques.push_back(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(pattern.joints().size())));
+  }
+
+  // Runs one event; false when the sequence must stop (a stall, a time-out, a blow-up).
+  bool run(const geometry::FoldEvent& event, std::size_t done, std::size_t total) {
+    std::vector<int> named = drive_event(event);
+    DynamicEventReport er{event.number, time_, time_, true, 0.0, 0.0};
+    double quiet = 0.0, next_check = time_ + o_.check_interval;
+    bool ok = true;
+    for (;;) {
+      try {
+        sheet_.step();
+      } catch (const detail::EngineError& e) {
+        return blow_up(er, e.what());
+      }
+      ++report_.steps;
+      time_ = static_cast<double>(report_.steps) * o_.time_step;  // no rounding drift over many steps
+      if (!sheet_.sane()) return blow_up(er, "a body moved faster than 1e6 m/s or rad/s");
+      record_torques();
+      if (time_ >= next_check) {
+        check(er, event.number, done, total);
+        next_check += o_.check_interval;
+      }
+      if (finished(named, quiet)) break;
+      if (find_stalls(named, event.number)) { ok = false; break; }
+      if (time_ - er.start >= o_.max_event_time) {
+        fail(geometry::StatusCode::LimitReached,
+             "event " + std::to_string(event.number) + " did not finish within " + std::to_string(o_.max_event_time) + " s");
+        ok = false;
+        break;
+      }
+    }
+    if (!ok) er.reached = false;
+    close_event(er);  // a spring that settled short of its angle fails the event here
+    return er.reached;
+  }
+
+  DynamicReport finish(double seconds) {
+    const geometry::FoldState s = sheet_.state();
+    report_.duration = time_;
+    report_.seconds = seconds;
+    report_.final_state = s;
+    for (std::size_t j = 0; j < report_.joints.size(); ++j) report_.joints[j].angle = s.angles[static_cast<Eigen::Index>(j)];
+    report_.kinetic_energy = sheet_.kinetic_energy();
+    report_.potential_energy = sheet_.potential_energy();
+    report_.spring_energy = sheet_.spring_energy();
+    if (report_.status.ok() && report_.max_closure_error > o_.closure_tolerance)
+      fail(geometry::StatusCode::ClosureViolated, "the engine's loops opened by " + std::to_string(report_.max_closure_error) +
+                                                      " rad, beyond the tolerance " + std::to_string(o_.closure_tolerance));
+    return std::move(report_);
+  }
+
+ private:
+  // Gives each joint the event names its drive; joints of earlier events keep theirs (a motor
+  // holds its angle, a spring pulls toward it), joints never named stay free hinges.
+  std::vector<int> drive_event(const geometry::FoldEvent& event) {
+    std::vector<int> named;
+    for (const auto& fold : event.folds) {
+      const int j = *pattern_.joint_index(fold.joint_id);
+      const auto& joint = pattern_.joints()[j];
+      detail::JointDrive d;
+      d.target = fold.angle;
+      if (o_.drive == Drive::Motor) {
+        d.kind = detail::JointDrive::Motor;
+        d.speed = fold.speed;
+        d.max_torque = o_.max_torque;
+      } else {
+        d.kind = detail::JointDrive::Spring;
+        d.spring = joint.spring;
+        d.damping = joint.damping;
+      }
+      sheet_.set_drive(j, d);
+      stalled_for_[j] = 0.0;
+      named.push_back(j);
+    }
+    return named;
+  }
+
+  void add_frame(int event, const geometry::FoldState& state) {
+    report_.frames.push_back({time_, event, state});
+    Eigen::VectorXd torques(state.angles.size());
+    for (Eigen::Index j = 0; j < torques.size(); ++j) torques[j] = sheet_.torque(static_cast<int>(j));
+    report_.frame_torques.push_back(std::move(torques));
+  }
+
+  void record_torques() {
+    for (std::size_t j = 0; j < report_.joints.size(); ++j)
+      report_.joints[j].peak_torque = std::max(report_.joints[j].peak_torque, std::abs(sheet_.torque(static_cast<int>(j))));
+    report_.peak_kinetic_energy = std::max(report_.peak_kinetic_energy, sheet_.kinetic_energy());
+  }
+
+  void check(DynamicEventReport& er, int event, std::size_t done, std::size_t total) {
+    const geometry::FoldState s = sheet_.state();
+    const double e = closure_.max_error(s);
+    er.max_closure_error = std::max(er.max_closure_error, e);
+    report_.max_closure_error = std::max(report_.max_closure_error, e);
+    if (o_.record_frames) add_frame(event, s);
+    if (o_.progress) o_.progress({static_cast<double>(done), static_cast<double>(total), "events", e});
+  }
+
+  // Motors: every named joint within reach_tolerance. Springs: the whole sheet still for settle_time.
+  bool finished(const std::vector<int>& named, double& quiet) const {
+    if (o_.drive == Drive::Motor)
+      return std::all_of(named.begin(), named.end(), [&](int j) {
+        return std::abs(sheet_.angle(j) - sheet_.drive(j).target) <= o_.reach_tolerance;
+      });
+    quiet = sheet_.max_rate() <= o_.settle_speed ? quiet + o_.time_step : 0.0;
+    return quiet >= o_.settle_time;
+  }
+
+  // A motor short of its angle, at its torque limit, making no progress for stall_time, and too
+  // weak to hold the sheet where it is; a spring drive never stalls here (it settles, and
+  // close_event() judges where).
+  bool find_stalls(const std::vector<int>& named, int event) {
+    if (o_.drive != Drive::Motor) return false;
+    bool any = false;
+    for (int j : named) {
+      const auto& d = sheet_.drive(j);
+      const double error = d.target - sheet_.angle(j);
+      const bool stuck = std::abs(error) > o_.reach_tolerance && std::copysign(1.0, error) * sheet_.rate(j) < 0.01 * d.speed &&
+                         std::abs(sheet_.torque(j)) >= 0.999 * d.max_torque;
+      stalled_for_[j] = stuck ? stalled_for_[j] + o_.time_step : 0.0;
+      if (stalled_for_[j] < o_.stall_time) continue;
+      // Saturated and losing for stall_time may be a transient (an overshoot braked, the sheet
+      // accelerated): it is a stall only when the motor could not even hold the sheet here at rest.
+      stalled_for_[j] = 0.0;
+      if (sheet_.hold_torque(j) > d.max_torque) {
+        add_stall(j, event, d.max_torque);
+        any = true;
+      }
+    }
+    return any;
+  }
+
+  void add_stall(int j, int event, double available) {
+    const auto& d = sheet_.drive(j);
+    Stall st{pattern_.joints()[j].id, event, time_, sheet_.angle(j), d.target, 0.0, available};
+    st.needed_torque = sheet_.hold_torque(j);
+    std::ostringstream msg;
+    msg << "joint " << st.joint << " stalled in event " << event << " at " << st.angle * 180.0 / M_PI << " deg (t = " << time_
+        << " s): it needs " << st.needed_torque << " N·m, has " << st.available_torque << " N·m";
+    report_.stalls.push_back(st);
+    fail(geometry::StatusCode::NoProgress, msg.str());
+  }
+
+  void close_event(DynamicEventReport& er) {
+    er.end = time_;
+    const geometry::FoldState end = sheet_.state();
+    const double e = closure_.max_error(end);
+    er.max_closure_error = std::max(er.max_closure_error, e);
+    report_.max_closure_error = std::max(report_.max_closure_error, e);
+    er.energy = sheet_.kinetic_energy() + sheet_.potential_energy() + sheet_.spring_energy();
+    if (o_.drive == Drive::Spring && report_.stalls.empty()) {
+      for (std::size_t j = 0; j < report_.joints.size(); ++j) {
+        const int ji = static_cast<int>(j);
+        const auto& d = sheet_.drive(ji);
+        if (d.kind != detail::JointDrive::Spring || std::abs(sheet_.angle(ji) - d.target) <= o_.reach_tolerance) continue;
+        er.reached = false;
+        add_stall(ji, er.number, d.spring * std::abs(d.target - sheet_.angle(ji)));
+      }
+    }
+    if (report_.frames.back().time < time_) add_frame(er.number, end);
+    report_.events.push_back(er);
+  }
+
+  bool blow_up(DynamicEventReport& er, const std::string& why) {
+    std::ostringstream msg;
+    msg << "the engine's state blew up at t = " << time_ << " s in event " << er.number << " (" << why << "): time step "
+        << o_.time_step << " s is too large for this sheet; try " << o_.time_step / 10.0 << " s";
+    fail(geometry::StatusCode::Singular, msg.str());
+    er.reached = false;
+    er.end = time_;
+    report_.events.push_back(er);
+    return false;
+  }
+
+  void fail(geometry::StatusCode code, const std::string& message) {
+    if (report_.status.ok()) report_.status = {code, message};
+    report_.problems.push_back(message);
+  }
+
+  const geometry::CreasePattern& pattern_;
+  const DynamicOptions& o_;
+  detail::OdeSheet sheet_;
+  geometry::ClosureSystem closure_;
+  std::vector<double> stalled_for_;
+  DynamicReport report_;
+  double time_ = 0.0;
+};
+
+void check_sequence(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence, Drive drive) {
+  for (const auto& event : sequence.events)
+    for (const auto& fold : event.folds) {
+      const auto j = pattern.joint_index(fold.joint_id);
+      if (!j) throw std::invalid_argument("event " + std::to_string(event.number) + ": no joint " + std::to_string(fold.joint_id));
+      if (!std::isfinite(fold.angle)) throw simulation::SequenceError(fold.line, "fold angle is not finite");
+      if (drive == Drive::Motor && (!(fold.speed > 0.0) || !std::isfinite(fold.speed)))
+        throw simulation::SequenceError(fold.line, "speed must be positive and finite");
+      const auto& joint = pattern.joints()[*j];
+      if (drive == Drive::Spring && !(joint.spring > 0.0 || joint.damping > 0.0))
+        throw simulation::SequenceError(fold.line, "joint " + std::to_string(joint.id) + " has neither SpringConst nor DampConst: no spring drives it");
+    }
+}
+
+}  // namespace
+
+DynamicReport simulate_dynamic(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence,
+                               const DynamicOptions& options) {
+  check_options(pattern, options);
+  check_sequence(pattern, sequence, options.drive);
+  const int fixed = options.fixed_actor ? *pattern.actor_index(*options.fixed_actor) : 0;
+  const auto start = std::chrono::steady_clock::now();
+  Runner runner(pattern, options, fixed);
+  for (std::size_t e = 0; e < sequence.events.size(); ++e)
+    if (!runner.run(sequence.events[e], e, sequence.events.size())) break;
+  return runner.finish(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
+}  // namespace foldkit::dynamics

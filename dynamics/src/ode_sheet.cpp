@@ -1,0 +1,287 @@
+#include "ode_sheet.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <mutex>
+
+#include <ode/ode.h>
+
+#include "foldkit/geometry/kinematics.hpp"
+
+namespace foldkit::dynamics::detail {
+namespace {
+
+Eigen::Vector3d vec(const dReal* v) { return {v[0], v[1], v[2]}; }
+Eigen::Quaterniond quat(const dReal* q) { return {q[0], q[1], q[2], q[3]}; }  // ODE: w, x, y, z
+
+// A rigid motion seen by every body: what hold_torque() restores after its probe step.
+struct BodyState {
+  Eigen::Vector3d position, linear, angular;
+  Eigen::Quaterniond orientation;
+};
+
+// ODE's default error and debug handlers abort the process; foldkit reports instead.
+[[noreturn]] void throw_engine_error(int number, const char* format, va_list args) {
+  char text[512];
+  std::vsnprintf(text, sizeof text, format, args);
+  throw EngineError("ODE error " + std::to_string(number) + ": " + text);
+}
+
+void ignore_message(int, const char*, va_list) {}
+
+}  // namespace
+
+struct OdeSheet::Impl {
+  const geometry::CreasePattern* pattern = nullptr;
+  DynamicOptions options;
+  int fixed = 0;
+  dWorldID world = nullptr;
+  std::vector<dBodyID> bodies;
+  std::vector<MassProperties> mass;
+  std::vector<dJointID> hinges;
+  std::vector<dJointFeedback> feedback;
+  std::vector<int> left, right;          // per joint: actor indices on either side of its axis
+  std::vector<Eigen::Vector3d> axis;     // per joint: flat unit direction v[0] → v[1]
+
+  Eigen::Quaterniond orientation(int actor) const {
+    return actor == fixed ? Eigen::Quaterniond::Identity() : quat(dBodyGetQuaternion(bodies[actor]));
+  }
+  Eigen::Vector3d spin(int actor) const {
+    return actor == fixed ? Eigen::Vector3d::Zero() : vec(dBodyGetAngularVel(bodies[actor]));
+  }
+};
+
+OdeSheet::OdeSheet(const geometry::CreasePattern& pattern, const DynamicOptions& options, int fixed)
+    : impl_(std::make_unique<Impl>()), drives_(pattern.joints().size()) {
+  static std::once_flag init;
+  std::call_once(init, [] {
+    dInitODE2(0);
+    dSetErrorHandler(throw_engine_error);
+    dSetDebugHandler(throw_engine_error);
+    dSetMessageHandler(ignore_message);
+  });
+  dAllocateODEDataForThread(dAllocateMaskAll);  // ODE's per-thread scratch; a no-op once done
+  Impl& s = *impl_;
+  s.pattern = &pattern;
+  s.options = options;
+  s.fixed = fixed;
+  s.world = dWorldCreate();
+  dWorldSetGravity(s.world, options.gravity.x(), options.gravity.y(), options.gravity.z());
+  dWorldSetERP(s.world, options.erp);
+  dWorldSetCFM(s.world, options.cfm);
+  dWorldSetQuickStepNumIterations(s.world, options.iterations);
+  dWorldSetAutoDisableFlag(s.world, 0);
+  const int actors = static_cast<int>(pattern.actors().size());
+  for (int a = 0; a < actors; ++a) {
+    const MassProperties m = mass_properties(pattern, a, options.density, options.scale);
+    dBodyID b = dBodyCreate(s.world);
+    dBodySetPosition(b, m.centroid.x(), m.centroid.y(), m.centroid.z());
+    dMass dm;
+    const Eigen::Matrix3d& I = m.inertia;
+    dMassSetParameters(&dm, m.mass, 0, 0, 0, I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2));
+    dBodySetMass(b, &dm);
+    if (a == fixed) dBodySetKinematic(b);
+    s.bodies.push_back(b);
+    s.mass.push_back(m);
+  }
+  const int joints = static_cast<int>(pattern.joints().size());
+  s.feedback.resize(joints);
+  for (int j = 0; j < joints; ++j) {
+    const auto& joint = pattern.joints()[j];
+    const geometry::JointAxis ax = geometry::joint_axis(pattern, j);
+    const bool first_right = geometry::side_of(pattern, j, joint.actors[0]) > 0;
+    s.right.push_back(first_right ? joint.actors[0] : joint.actors[1]);
+    s.left.push_back(first_right ? joint.actors[1] : joint.actors[0]);
+    s.axis.push_back(ax.direction);
+    // ODE's hinge angle is body 1's turn relative to body 2 about the axis: the right actor's
+    // about +direction, or (when the right actor is the fixed one, which must not be body 1 for
+    // its feedback) the left actor's about −direction, the same angle.
+    const bool swap = s.right[j] == fixed;
+    dJointID h = dJointCreateHinge(s.world, nullptr);
+    dJointAttach(h, s.bodies[swap ? s.left[j] : s.right[j]], s.bodies[swap ? s.right[j] : s.left[j]]);
+    const Eigen::Vector3d p = options.scale * ax.point, d = swap ? Eigen::Vector3d(-ax.direction) : ax.direction;
+    dJointSetHingeAnchor(h, p.x(), p.y(), p.z());
+    dJointSetHingeAxis(h, d.x(), d.y(), d.z());
+    dJointSetFeedback(h, &s.feedback[j]);
+    s.hinges.push_back(h);
+  }
+  // Hinges are attached on the flat sheet (ODE measures hinge angles from the pose they were
+  // attached at), then the bodies move to the start state.
+  if (options.start.size() > 0) {
+    const auto pose = geometry::facet_poses(pattern, geometry::make_tree(pattern, fixed), geometry::FoldState{options.start});
+    for (int a = 0; a < actors; ++a) {
+      Eigen::Isometry3d m = pose[a];
+      m.translation() *= options.scale;
+      const Eigen::Vector3d c = m * s.mass[a].centroid;
+      const Eigen::Quaterniond q(m.linear());
+      const dQuaternion dq = {q.w(), q.x(), q.y(), q.z()};
+      dBodySetPosition(s.bodies[a], c.x(), c.y(), c.z());
+      dBodySetQuaternion(s.bodies[a], dq);
+    }
+  }
+}
+
+OdeSheet::~OdeSheet() { dWorldDestroy(impl_->world); }
+
+void OdeSheet::set_drive(int j, const JointDrive& drive) {
+  drives_[j] = drive;
+  dJointID h = impl_->hinges[j];
+  // Stops first opened wide (ODE ignores a low stop above the high one). ODE tests a hinge's
+  // stops, and clears a stop it found active, only while one of them lies within [−π, π]: a low
+  // stop at −π (never passed, the hinge angle being in [−π, π]) keeps that test, so that a
+  // spring's stop, once removed, does not stay active.
+  dJointSetHingeParam(h, dParamLoStop, -M_PI);
+  dJointSetHingeParam(h, dParamHiStop, dInfinity);
+  dJointSetHingeParam(h, dParamFMax, drive.kind == JointDrive::Motor ? drive.max_torque : 0.0);
+  dJointSetHingeParam(h, dParamVel, 0.0);
+  if (drive.kind == JointDrive::Spring) {
+    // A stop with equal low and high ends is a two-sided soft constraint: with these ERP and CFM
+    // ODE integrates −k(θ−θ*) − cθ̇ implicitly (its manual, "Joint parameters"), stable for any k.
+    const double h_k = impl_->options.time_step * drive.spring;
+    dJointSetHingeParam(h, dParamLoStop, drive.target);
+    dJointSetHingeParam(h, dParamHiStop, drive.target);
+    dJointSetHingeParam(h, dParamStopERP, h_k / (h_k + drive.damping));
+    dJointSetHingeParam(h, dParamStopCFM, 1.0 / (h_k + drive.damping));
+    dJointSetHingeParam(h, dParamBounce, 0.0);
+  }
+}
+
+void OdeSheet::step() {
+  const DynamicOptions& o = impl_->options;
+  for (std::size_t j = 0; j < drives_.size(); ++j) {
+    const JointDrive& d = drives_[j];
+    if (d.kind != JointDrive::Motor) continue;
+    const double error = d.target - angle(static_cast<int>(j));
+    const double command = std::clamp(error / o.approach_time, -d.speed, d.speed);
+    dJointSetHingeParam(impl_->hinges[j], dParamVel, command);
+  }
+  if (o.solver == Solver::Direct) dWorldStep(impl_->world, o.time_step);
+  else dWorldQuickStep(impl_->world, o.time_step);
+}
+
+double OdeSheet::angle(int j) const {
+  const Impl& s = *impl_;
+  const Eigen::Quaterniond q = s.orientation(s.left[j]).conjugate() * s.orientation(s.right[j]);
+  // The twist of the relative rotation about the flat axis (the swing is the hinge's error).
+  double a = 2.0 * std::atan2(q.vec().dot(s.axis[j]), q.w());
+  if (a > M_PI) a -= 2.0 * M_PI;
+  if (a <= -M_PI) a += 2.0 * M_PI;
+  return a;
+}
+
+double OdeSheet::rate(int j) const {
+  const Impl& s = *impl_;
+  const Eigen::Vector3d axis = s.orientation(s.left[j]) * s.axis[j];
+  return (s.spin(s.right[j]) - s.spin(s.left[j])).dot(axis);
+}
+
+geometry::FoldState OdeSheet::state() const {
+  geometry::FoldState st = geometry::FoldState::flat(*impl_->pattern);
+  for (Eigen::Index j = 0; j < st.angles.size(); ++j) st.angles[j] = angle(static_cast<int>(j));
+  return st;
+}
+
+double OdeSheet::torque(int j) const {
+  const Impl& s = *impl_;
+  if (drives_[j].kind == JointDrive::Free) return 0.0;
+  dJointID h = s.hinges[j];
+  const dJointFeedback& f = s.feedback[j];
+  dVector3 p, a;
+  dJointGetHingeAnchor(h, p);
+  dJointGetHingeAxis(h, a);
+  // The joint's wrench on body 1 moved from its centre of mass to the axis: what is left about
+  // the axis is the motor's (or the stop's) torque, the hinge itself transmitting none.
+  const Eigen::Vector3d c1 = vec(dBodyGetPosition(dJointGetBody(h, 0)));
+  const Eigen::Vector3d moment = vec(f.t1) + (c1 - vec(p)).cross(vec(f.f1));
+  return moment.dot(vec(a));
+}
+
+double OdeSheet::hold_torque(int j) {
+  Impl& s = *impl_;
+  std::vector<BodyState> saved;
+  for (dBodyID b : s.bodies) {
+    saved.push_back({vec(dBodyGetPosition(b)), vec(dBodyGetLinearVel(b)), vec(dBodyGetAngularVel(b)),
+                     quat(dBodyGetQuaternion(b))});
+    dBodySetLinearVel(b, 0, 0, 0);
+    dBodySetAngularVel(b, 0, 0, 0);
+  }
+  // Every other motor holds still too (step() sets their speeds again before the next step).
+  for (std::size_t k = 0; k < drives_.size(); ++k)
+    if (drives_[k].kind == JointDrive::Motor) dJointSetHingeParam(s.hinges[k], dParamVel, 0.0);
+  const JointDrive kept = drives_[j];
+  JointDrive hold{JointDrive::Motor, angle(j), 1.0, dInfinity};  // an equality row: no limit
+  set_drive(j, hold);
+  dJointSetHingeParam(s.hinges[j], dParamVel, 0.0);
+  if (s.options.solver == Solver::Direct) dWorldStep(s.world, s.options.time_step);
+  else dWorldQuickStep(s.world, s.options.time_step);
+  const double needed = std::abs(torque(j));
+  for (std::size_t a = 0; a < s.bodies.size(); ++a) {
+    const BodyState& b = saved[a];
+    const dQuaternion q = {b.orientation.w(), b.orientation.x(), b.orientation.y(), b.orientation.z()};
+    dBodySetPosition(s.bodies[a], b.position.x(), b.position.y(), b.position.z());
+    dBodySetQuaternion(s.bodies[a], q);
+    dBodySetLinearVel(s.bodies[a], b.linear.x(), b.linear.y(), b.linear.z());
+    dBodySetAngularVel(s.bodies[a], b.angular.x(), b.angular.y(), b.angular.z());
+  }
+  set_drive(j, kept);
+  return needed;
+}
+
+std::vector<Eigen::Isometry3d> OdeSheet::poses() const {
+  const Impl& s = *impl_;
+  std::vector<Eigen::Isometry3d> out;
+  for (std::size_t a = 0; a < s.bodies.size(); ++a) {
+    const Eigen::Vector3d c = vec(dBodyGetPosition(s.bodies[a]));
+    Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
+    m.linear() = s.orientation(static_cast<int>(a)).toRotationMatrix();
+    m.translation() = c - m.linear() * s.mass[a].centroid;
+    out.push_back(m);
+  }
+  return out;
+}
+
+double OdeSheet::kinetic_energy() const {
+  const Impl& s = *impl_;
+  double e = 0.0;
+  for (std::size_t a = 0; a < s.bodies.size(); ++a) {
+    if (static_cast<int>(a) == s.fixed) continue;
+    const Eigen::Vector3d v = vec(dBodyGetLinearVel(s.bodies[a])), w = s.spin(static_cast<int>(a));
+    const Eigen::Matrix3d R = s.orientation(static_cast<int>(a)).toRotationMatrix();
+    e += 0.5 * s.mass[a].mass * v.squaredNorm() + 0.5 * w.dot(R * s.mass[a].inertia * R.transpose() * w);
+  }
+  return e;
+}
+
+double OdeSheet::potential_energy() const {
+  const Impl& s = *impl_;
+  double e = 0.0;
+  for (std::size_t a = 0; a < s.bodies.size(); ++a)
+    e -= s.mass[a].mass * s.options.gravity.dot(vec(dBodyGetPosition(s.bodies[a])) - s.mass[a].centroid);
+  return e;
+}
+
+double OdeSheet::spring_energy() const {
+  double e = 0.0;
+  for (std::size_t j = 0; j < drives_.size(); ++j)
+    if (drives_[j].kind == JointDrive::Spring) e += 0.5 * drives_[j].spring * std::pow(angle(static_cast<int>(j)) - drives_[j].target, 2);
+  return e;
+}
+
+bool OdeSheet::sane() const {
+  constexpr double limit = 1e6;  // m/s or rad/s: far beyond anything a folding sheet does
+  for (dBodyID b : impl_->bodies) {
+    const Eigen::Vector3d p = vec(dBodyGetPosition(b)), v = vec(dBodyGetLinearVel(b)), w = vec(dBodyGetAngularVel(b));
+    if (!p.allFinite() || !(v.norm() < limit) || !(w.norm() < limit)) return false;
+  }
+  return true;
+}
+
+double OdeSheet::max_rate() const {
+  double m = 0.0;
+  for (std::size_t j = 0; j < drives_.size(); ++j) m = std::max(m, std::abs(rate(static_cast<int>(j))));
+  return m;
+}
+
+}  // namespace foldkit::dynamics::detail

@@ -1,0 +1,70 @@
+#pragma once
+// The sheet as ODE bodies and hinges (private: no header outside this library sees ODE).
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "foldkit/dynamics/dynamic_simulate.hpp"
+#include "foldkit/dynamics/mass_properties.hpp"
+
+namespace foldkit::dynamics::detail {
+
+// ODE reported an internal error (its error and debug handlers throw this instead of aborting).
+struct EngineError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// How one joint is driven at the moment.
+struct JointDrive {
+  enum Kind { Free, Motor, Spring } kind = Free;
+  double target = 0.0;      // radians
+  double speed = 0.0;       // motor: rad/s
+  double max_torque = 0.0;  // motor: N·m
+  double spring = 0.0;      // N·m/rad
+  double damping = 0.0;     // N·m·s/rad
+};
+
+// One ODE world holding the sheet: a body per actor (the fixed one kinematic), a hinge per joint,
+// attached so that ODE's hinge angle is foldkit's fold angle (right actor relative to left).
+class OdeSheet {
+ public:
+  OdeSheet(const geometry::CreasePattern& pattern, const DynamicOptions& options, int fixed);
+  ~OdeSheet();
+  OdeSheet(const OdeSheet&) = delete;
+  OdeSheet& operator=(const OdeSheet&) = delete;
+
+  // Sets joint index `j`'s drive (applied from the next step).
+  void set_drive(int j, const JointDrive& drive);
+  const JointDrive& drive(int j) const { return drives_[j]; }
+  // One engine step: motor speeds from the current errors, then the solver.
+  // Throws EngineError when ODE reports an internal error (a NaN, a singular body).
+  void step();
+  // Fold angle and its rate of joint index j, from the bodies' poses (radians, rad/s).
+  double angle(int j) const;
+  double rate(int j) const;
+  geometry::FoldState state() const;
+  // Torque the joint's motor or spring exerted in the last step, about its axis, N·m.
+  double torque(int j) const;
+  // Torque joint j needs to hold the current pose with the sheet at rest and every motor holding
+  // still (a probe step with its limit lifted; every body's state is restored afterwards), N·m,
+  // absolute.
+  double hold_torque(int j);
+  // Pose of each actor from its flat position (metres).
+  std::vector<Eigen::Isometry3d> poses() const;
+  double kinetic_energy() const;
+  double potential_energy() const;  // relative to the flat sheet
+  double spring_energy() const;
+  // Whether every body's state is finite and slower than a blow-up.
+  bool sane() const;
+  // Largest |rate| over all joints.
+  double max_rate() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::vector<JointDrive> drives_;
+};
+
+}  // namespace foldkit::dynamics::detail

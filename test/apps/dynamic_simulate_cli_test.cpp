@@ -1,0 +1,126 @@
+// `foldkit simulate --model dynamic`: the verdict, the stall report and the refusals, on a flap
+// whose lifting torque is known in closed form (m·g·d).
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using foldkit::test::foldkit;
+using foldkit::test::temp_dir;
+
+// A two-panel strip (unit squares, panel 1 held) and a CMML lifting panel 2 to −60° at 30°/s.
+struct FlapCase {
+  std::string dir, pmml, cmml;
+};
+
+FlapCase flap_case(const std::string& joint = "1") {
+  FlapCase c{temp_dir(), "", ""};
+  c.pmml = c.dir + "/flap.pmml";
+  c.cmml = c.dir + "/lift.cmml";
+  EXPECT_EQ(foldkit({"generate", "strip", "--panels", "2", "-o", c.pmml}).exit, 0);
+  std::ofstream(c.cmml) << "<CMML>\n  <Title>lift</Title>\n  <Fold><EventNumber>1</EventNumber><ID>" << joint
+                        << "</ID><FoldAngle>-60</FoldAngle><Velocity>30</Velocity></Fold>\n</CMML>\n";
+  return c;
+}
+
+// m·g·d of panel 2 at density 2 kg/m², scale 0.5 m per unit, g = 9.81: m = 0.5 kg, d = 0.25 m.
+constexpr double kLift = 0.5 * 9.81 * 0.25;
+
+std::vector<std::string> dynamic_args(const FlapCase& c, double torque) {
+  return {"simulate", c.pmml,   c.cmml,       "--model", "dynamic", "--gravity", "0,0,-9.81", "--density", "2",
+          "--scale",  "0.5",    "--max-torque", std::to_string(torque), "--json"};
+}
+
+TEST(DynamicSimulateCli, EnoughTorqueLiftsTheFlap) {
+  const FlapCase c = flap_case();
+  const std::string frames = c.dir + "/lift.fold", series = c.dir + "/lift.csv";
+  auto args = dynamic_args(c, 1.05 * kLift);
+  args.insert(args.end(), {"--frames", frames, "--series", series});
+  const auto r = foldkit(args);
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "success");
+  EXPECT_EQ(j["model"], "dynamic");
+  ASSERT_EQ(j["events"].size(), 1u);
+  EXPECT_TRUE(j["events"][0]["reached"].get<bool>());
+  EXPECT_NEAR(j["final_angles"][0]["angle"].get<double>(), -60.0, 0.01);
+  EXPECT_GE(j["joints"][0]["peak_torque"].get<double>(), 0.99 * kLift);
+  EXPECT_LE(j["joints"][0]["peak_torque"].get<double>(), 1.05 * kLift * (1 + 1e-3));
+  EXPECT_EQ(j["stalls"].size(), 0u);
+  EXPECT_TRUE(j["energy"]["potential"].is_number());
+  // Lifted by 60°: the centre of mass rose d·sin 60°.
+  EXPECT_NEAR(j["energy"]["potential"].get<double>(), kLift * std::sin(M_PI / 3), 1e-3 * kLift);
+  EXPECT_TRUE(fs::exists(frames));
+  // The series: a header, then time, event, angle (degrees), torque (N·m) every 0.01 s; at 30°
+  // lifted and turning steadily the motor carries m·g·d·cos 30°.
+  std::ifstream csv(series);
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  EXPECT_EQ(line, "time,event,angle_1,torque_1");
+  int rows = 0, steady = 0;
+  while (std::getline(csv, line)) {
+    double t = 0, angle = 0, torque = 0;
+    int event = 0;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%d,%lf,%lf", &t, &event, &angle, &torque), 4) << line;
+    ++rows;
+    if (angle < -25 && angle > -35) {
+      EXPECT_NEAR(-torque, kLift * std::cos(angle * M_PI / 180), 0.01 * kLift) << line;
+      ++steady;
+    }
+  }
+  EXPECT_GT(rows, 100);
+  EXPECT_GT(steady, 10);
+}
+
+TEST(DynamicSimulateCli, TooLittleTorqueStallsExitsThreeNamingTheJoint) {
+  const FlapCase c = flap_case();
+  const auto r = foldkit(dynamic_args(c, 0.95 * kLift));
+  ASSERT_EQ(r.exit, 3) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "no-progress");
+  ASSERT_EQ(j["stalls"].size(), 1u);
+  const auto& s = j["stalls"][0];
+  EXPECT_EQ(s["joint"], 1);
+  EXPECT_EQ(s["event"], 1);
+  EXPECT_NEAR(s["available_torque"].get<double>(), 0.95 * kLift, 1e-6);
+  EXPECT_NEAR(s["needed_torque"].get<double>(), kLift, 0.01 * kLift);
+  EXPECT_NEAR(s["target"].get<double>(), -60.0, 1e-9);
+  EXPECT_GT(s["time"].get<double>(), 0.0);
+  EXPECT_FALSE(j["events"][0]["reached"].get<bool>());
+  EXPECT_NE(r.err.find("joint 1 stalled"), std::string::npos) << r.err;
+}
+
+TEST(DynamicSimulateCli, BadInputIsRefusedWithoutOutput) {
+  const FlapCase c = flap_case();
+  const std::string frames = c.dir + "/never.fold";
+  const std::vector<std::vector<std::string>> bad = {
+      {"--density", "-1"}, {"--max-torque", "nan"}, {"--max-torque", "-2"}, {"--gravity", "0,0,nan"},
+      {"--gravity", "1,2"}, {"--fixed", "99"},      {"--scale", "0"},       {"--drive", "rocket"},
+      {"--time-step", "0.5"}};
+  for (const auto& extra : bad) {
+    std::vector<std::string> args = {"simulate", c.pmml, c.cmml, "--model", "dynamic", "--frames", frames};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = foldkit(args);
+    EXPECT_EQ(r.exit, 2) << extra[0] << " " << extra[1] << ": " << r.err;
+    EXPECT_FALSE(fs::exists(frames));
+  }
+  // --series is the dynamic model's, and CSV.
+  EXPECT_EQ(foldkit({"simulate", c.pmml, c.cmml, "--series", c.dir + "/s.csv"}).exit, 2);
+  EXPECT_EQ(foldkit({"simulate", c.pmml, c.cmml, "--model", "dynamic", "--series", c.dir + "/s.txt"}).exit, 2);
+  // A fold of a joint the pattern lacks: invalid input at the CMML's line.
+  const FlapCase unknown = flap_case("7");
+  const auto r = foldkit({"simulate", unknown.pmml, unknown.cmml, "--model", "dynamic", "--frames", frames});
+  EXPECT_EQ(r.exit, 1) << r.err;
+  EXPECT_NE(r.err.find("lift.cmml:3"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(frames));
+}
+
+}  // namespace
