@@ -35,7 +35,7 @@ while [ $# -gt 0 ]; do
 done
 out="${out:-$build/microbench}"
 
-programs=(bench_fk bench_closure bench_projection bench_constraint_projection bench_simulation bench_stiffness bench_hamiltonian bench_pattern)
+programs=(bench_fk bench_closure bench_projection bench_constraint_projection bench_simulation bench_stiffness bench_hamiltonian bench_pattern bench_dynamics)
 if [ ${#only[@]} -gt 0 ]; then programs=("${only[@]}"); fi
 
 if [ ! -f "$build/CMakeCache.txt" ]; then
