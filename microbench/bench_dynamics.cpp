@@ -12,52 +12,22 @@
 #include <benchmark/benchmark.h>
 
 #include "foldkit/dynamics/dynamic_simulate.hpp"
-#include "foldkit/folding/projected_folding.hpp"
-#include "foldkit/geometry/generators.hpp"
+#include "one_motor_miura.hpp"
 
 namespace {
 
 using namespace foldkit;
 
-// The sheet, the kinematic fold to half way and the one-motor sequence toward its end, per size.
-struct Scene {
-  geometry::CreasePattern pattern;
-  folding::ProjectedFoldingResult kinematic;
-  geometry::FoldSequence one_motor;
-  Eigen::VectorXd start;
-};
-
-const Scene& scene(int n) {
-  static std::map<int, std::unique_ptr<Scene>> cache;
+// The scene per size (one_motor_miura.hpp), made once.
+const microbench::OneMotorMiura& scene(int n) {
+  static std::map<int, std::unique_ptr<microbench::OneMotorMiura>> cache;
   auto& slot = cache[n];
-  if (slot) return *slot;
-  geometry::CreasePattern p = geometry::build_or_throw(geometry::generators::miura(n, n));
-  folding::ProjectedFoldingOptions fo;
-  fo.target_fraction = 0.5;
-  fo.replay = false;
-  fo.collisions = false;
-  fo.speed = 0.5;
-  auto kin = folding::fold_projected(p, fo);
-  const geometry::FoldState& goal = kin.states.back();
-  int drive = -1;
-  for (int j = 0; j < static_cast<int>(p.joints().size()); ++j) {
-    const auto& a = p.joints()[j].actors;
-    if ((a[0] == 0 || a[1] == 0) && (drive < 0 || std::abs(goal.angles[j]) > std::abs(goal.angles[drive]))) drive = j;
-  }
-  geometry::FoldSequence seq;
-  seq.events.push_back({1, {{p.joints()[drive].id, goal.angles[drive], 0.5, 0}}});
-  Eigen::VectorXd start;
-  for (const auto& s : kin.states)
-    if (s.angles.cwiseAbs().maxCoeff() >= 0.2) {
-      start = s.angles;
-      break;
-    }
-  slot = std::make_unique<Scene>(Scene{std::move(p), std::move(kin), std::move(seq), std::move(start)});
+  if (!slot) slot = std::make_unique<microbench::OneMotorMiura>(microbench::one_motor_miura(n));
   return *slot;
 }
 
 void run_dynamic(benchmark::State& st, dynamics::Solver solver) {
-  const Scene& sc = scene(static_cast<int>(st.range(0)));
+  const microbench::OneMotorMiura& sc = scene(static_cast<int>(st.range(0)));
   dynamics::DynamicOptions o;
   o.solver = solver;
   o.iterations = 20;
@@ -66,7 +36,7 @@ void run_dynamic(benchmark::State& st, dynamics::Solver solver) {
   o.start = sc.start;
   double simulated = 0.0, wall = 0.0, drift = 0.0;
   for (auto _ : st) {
-    const auto r = dynamics::simulate_dynamic(sc.pattern, sc.one_motor, o);
+    const auto r = dynamics::simulate_dynamic(sc.pattern, sc.sequence, o);
     simulated += r.duration;
     wall += r.seconds;
     drift = r.max_closure_error;
@@ -80,7 +50,7 @@ void BM_Dynamic_Direct(benchmark::State& st) { run_dynamic(st, dynamics::Solver:
 void BM_Dynamic_Iterative(benchmark::State& st) { run_dynamic(st, dynamics::Solver::Iterative); }
 
 void BM_Kinematic(benchmark::State& st) {
-  const Scene& sc = scene(static_cast<int>(st.range(0)));
+  const microbench::OneMotorMiura& sc = scene(static_cast<int>(st.range(0)));
   simulation::SimulationOptions o;
   o.collisions = false;
   double simulated = 0.0;

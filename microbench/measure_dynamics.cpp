@@ -12,8 +12,8 @@
 #include <string>
 
 #include "foldkit/dynamics/dynamic_simulate.hpp"
-#include "foldkit/folding/projected_folding.hpp"
 #include "foldkit/geometry/generators.hpp"
+#include "one_motor_miura.hpp"
 
 using namespace foldkit;
 
@@ -62,28 +62,12 @@ int main(int argc, char** argv) {
   if (argc > 4) o.time_step = std::atof(argv[4]);
   const double speed = argc > 5 ? std::atof(argv[5]) : 0.5;
   o.max_torque = 1e6;  // the spike measures the engine, not the motor
-  const geometry::CreasePattern p = geometry::build_or_throw(geometry::generators::miura(n, n));
-  folding::ProjectedFoldingOptions fo;
-  fo.target_fraction = 0.5;
-  fo.replay = false;
-  fo.collisions = false;
-  const auto kin = folding::fold_projected(p, fo);
-  const geometry::FoldState& K = kin.states.back();
-  // The motor drives the most folded crease of the fixed actor (index 0).
-  int drive = argc > 6 ? std::atoi(argv[6]) : -1;
-  for (int j = 0; j < static_cast<int>(p.joints().size()); ++j) {
-    const auto& a = p.joints()[j].actors;
-    if (argc <= 6 && (a[0] == 0 || a[1] == 0) && (drive < 0 || std::abs(K.angles[j]) > std::abs(K.angles[drive]))) drive = j;
-  }
-  // From the kinematic path's first state folded 0.2 rad or more: past the flat sheet's
-  // bifurcation, where one motor decides the way.
-  for (const auto& s : kin.states)
-    if (s.angles.cwiseAbs().maxCoeff() >= 0.2) {
-      o.start = s.angles;
-      break;
-    }
-  geometry::FoldSequence seq;
-  seq.events.push_back({1, {{p.joints()[drive].id, K.angles[drive], speed, 0}}});
+  const microbench::OneMotorMiura scene = microbench::one_motor_miura(n, speed, argc > 6 ? std::atoi(argv[6]) : -1);
+  const geometry::CreasePattern& p = scene.pattern;
+  const geometry::FoldState& K = scene.kinematic.states.back();
+  const int drive = scene.drive;
+  o.start = scene.start;
+  const geometry::FoldSequence& seq = scene.sequence;
   const auto r = dynamics::simulate_dynamic(p, seq, o);
   const double diff = (r.final_state.angles - K.angles).cwiseAbs().maxCoeff();
   std::printf("miura %dx%d joints %zu solver %s iterations %d dt %g: status %s, %g s simulated in %g s (RTF %.3g), "

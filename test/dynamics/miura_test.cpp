@@ -3,40 +3,22 @@
 #include <gtest/gtest.h>
 
 #include "foldkit/dynamics/dynamic_simulate.hpp"
-#include "foldkit/folding/projected_folding.hpp"
-#include "foldkit/geometry/generators.hpp"
+#include "one_motor_miura.hpp"
 
 using namespace foldkit;
 
 namespace {
 
 void fold_by_one_motor(int n, double time_step) {
-  const auto p = geometry::build_or_throw(geometry::generators::miura(n, n));
-  folding::ProjectedFoldingOptions fo;
-  fo.target_fraction = 0.5;
-  fo.replay = false;
-  fo.collisions = false;
-  const auto kin = folding::fold_projected(p, fo);
-  ASSERT_TRUE(kin.status.ok()) << kin.status.message;
-  const geometry::FoldState& goal = kin.states.back();
+  const microbench::OneMotorMiura scene = microbench::one_motor_miura(n);
+  const geometry::CreasePattern& p = scene.pattern;
+  const geometry::FoldState& goal = scene.kinematic.states.back();
+  const int drive = scene.drive;
   dynamics::DynamicOptions o;
-  // The flat sheet is a bifurcation (one motor does not choose the branch): start 0.2 rad into
-  // the kinematic path, at rest.
-  for (const auto& s : kin.states)
-    if (s.angles.cwiseAbs().maxCoeff() >= 0.2) {
-      o.start = s.angles;
-      break;
-    }
+  o.start = scene.start;  // past the flat sheet's bifurcation, at rest
   o.max_torque = 1e3;
   o.time_step = time_step;
-  // The motor: the fixed actor's most folded crease.
-  int drive = -1;
-  for (int j = 0; j < static_cast<int>(p.joints().size()); ++j) {
-    const auto& a = p.joints()[j].actors;
-    if ((a[0] == 0 || a[1] == 0) && (drive < 0 || std::abs(goal.angles[j]) > std::abs(goal.angles[drive]))) drive = j;
-  }
-  geometry::FoldSequence seq;
-  seq.events.push_back({1, {{p.joints()[drive].id, goal.angles[drive], 0.5, 0}}});
+  const geometry::FoldSequence& seq = scene.sequence;  // the fixed actor's most folded crease
   const auto r = dynamics::simulate_dynamic(p, seq, o);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_LE(r.max_closure_error, 1e-4);
