@@ -49,7 +49,7 @@ int run_spherical(const CarpenterArgs& opt) {
   }();
   if (!opt.output.empty()) {
     if (!is_output(opt.output, ".cmml")) throw UsageError(opt.output + ": a single vertex's output is CMML (.cmml or .cmml.gz)");
-    io::write_file_atomic(opt.output, io::write_cmml(r.folding));
+    io::write_cmml_file(opt.output, r.folding);
   }
   std::cerr << opt.chain << ": " << (r.status.ok() ? "flattened" : "not flattened") << " in " << r.steps << " steps: " << r.status.message
             << '\n';

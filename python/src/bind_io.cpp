@@ -242,7 +242,7 @@ void bind_cmml(py::module_& m) {
   m.def(
       "cmml_text", [](const FoldSequence& s) { return io::write_cmml(s); }, py::arg("sequence"), "The sequence as CMML text (degrees).");
   m.def(
-      "write_cmml", [](const std::string& path, const FoldSequence& s) { io::write_file_atomic(path, io::write_cmml(s)); },
+      "write_cmml", [](const std::string& path, const FoldSequence& s) { io::write_cmml_file(path, s); },
       py::arg("path"), py::arg("sequence"), "Writes the sequence as CMML (atomically).");
   m.def(
       "read_state",

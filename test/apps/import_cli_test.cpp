@@ -85,13 +85,13 @@ TEST(ImportCli, RigidlyFoldableDrawingsFoldTowardTheirTargetsAndTheOthersAreSaid
   // not rigidly foldable, exit 4, with the assignment's signs or their targets as the direction.
   for (const char* name : {"singlesquaretwist", "miura-ori", "huffmanWaterbomb", "traditionalCrane"}) {
     SCOPED_TRACE(name);
-    const std::string out = foldkit::test::write_temp(std::string(name) + "-folded.cmml", "");
-    for (const std::vector<std::string> how : {std::vector<std::string>{"--fraction", "0.5"}, {"--toward", fixture(name)}}) {
-      std::filesystem::remove(out);
-      std::vector<std::string> args{"fold", fixture(name), "-o", out, "--json"};
+    const std::string folded = foldkit::test::write_temp(std::string(name) + "-folded.cmml", "");
+    for (const std::vector<std::string>& how : {std::vector<std::string>{"--fraction", "0.5"}, {"--toward", fixture(name)}}) {
+      std::filesystem::remove(folded);
+      std::vector<std::string> args{"fold", fixture(name), "-o", folded, "--json"};
       args.insert(args.end(), how.begin(), how.end());
       EXPECT_EQ(fold_json(args, 4)["status"].get<std::string>(), "not-rigidly-foldable");
-      EXPECT_FALSE(std::filesystem::exists(out));
+      EXPECT_FALSE(std::filesystem::exists(folded));
     }
   }
 }

@@ -136,7 +136,9 @@ TEST(LeastNormSolver, DecideRankMatchesJacobiSvd) {
       if (d.method == std::string("sparse-qr")) {
         EXPECT_LE(d.smallest_kept, 1.02 * s[rank - 1]) << trial;
         EXPECT_GT(d.smallest_kept, 10.0 * tol) << trial;
-        if (rank < s.size()) EXPECT_GE(d.largest_zero + 1e-14 * s[0], s[rank]) << trial;
+        if (rank < s.size()) {
+          EXPECT_GE(d.largest_zero + 1e-14 * s[0], s[rank]) << trial;
+        }
       } else {
         EXPECT_NEAR(d.smallest_kept, s[rank - 1], 1e-4 * s[rank - 1]) << trial << " " << d.method;
       }
