@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <boost/crc.hpp>
+#include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/PlannerDataStorage.h>
 #include <ompl/geometric/planners/experience/LightningRetrieveRepair.h>
@@ -173,9 +174,11 @@ std::size_t ExperienceDatabase::paths() const { return db_->getExperiencesCount(
 std::size_t ExperienceDatabase::states() const { return db_->getStatesCount(); }
 
 ExperiencePlanner::ExperiencePlanner(const ob::SpaceInformationPtr& si, const ExperienceDatabase* db, ob::PlannerPtr scratch,
-                                     ob::PlannerPtr repair)
-    : ob::Planner(si, scratch ? scratch->getName() + "+Lightning" : std::string("Lightning")), db_(db), scratch_(std::move(scratch)) {
+                                     ob::PlannerPtr repair, double recall_time)
+    : ob::Planner(si, scratch ? scratch->getName() + "+Lightning" : std::string("Lightning")), db_(db), scratch_(std::move(scratch)),
+      recall_time_(recall_time) {
   if (!db_ || !scratch_ || !repair) throw std::invalid_argument("ExperiencePlanner: the database and both planners are required");
+  if (!(recall_time_ > 0.0)) throw std::invalid_argument("ExperiencePlanner: the recall time must be positive");
   auto recall = std::make_shared<og::LightningRetrieveRepair>(si, db_->lightning());
   recall->setRepairPlanner(repair);
   recall_ = recall;
@@ -203,7 +206,8 @@ ob::PlannerStatus ExperiencePlanner::solve(const ob::PlannerTerminationCondition
   recall_seconds_ = 0.0;
   if (db_->paths() > 0) {
     const auto t0 = std::chrono::steady_clock::now();
-    const ob::PlannerStatus status = recall_->solve(ptc);
+    const ob::PlannerStatus status =
+        recall_->solve(ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(recall_time_)));
     recall_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (status == ob::PlannerStatus::EXACT_SOLUTION) {
       recalled_ = true;

@@ -175,7 +175,8 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanOptions
   const ob::PlannerPtr optimiser = planner;  // the one that reports its best cost, not the fallback around it
   std::shared_ptr<ExperiencePlanner> experience;
   if (db) {
-    experience = std::make_shared<ExperiencePlanner>(setup.si, db, planner, make_planner("RRTConnect", setup.si));
+    experience =
+        std::make_shared<ExperiencePlanner>(setup.si, db, planner, make_planner("RRTConnect", setup.si), kRecallShare * options.time);
     planner = experience;
   }
   std::shared_ptr<CarpenterFallbackPlanner> fallback;

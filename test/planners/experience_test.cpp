@@ -45,7 +45,8 @@ Solved solve(const PlanSetup& setup, ExperienceDatabase* db, unsigned seed, og::
   ob::PlannerPtr scratch = foldkit::planners::make_planner("RRTConnect", setup.si);
   std::shared_ptr<ExperiencePlanner> experience;
   if (db) {
-    experience = std::make_shared<ExperiencePlanner>(setup.si, db, scratch, foldkit::planners::make_planner("RRTConnect", setup.si));
+    experience =
+        std::make_shared<ExperiencePlanner>(setup.si, db, scratch, foldkit::planners::make_planner("RRTConnect", setup.si), 1.0);
     ss.setPlanner(experience);
   } else {
     ss.setPlanner(scratch);

@@ -89,19 +89,27 @@ class ExperienceDatabase {
   std::shared_ptr<ompl::tools::LightningDB> db_;
 };
 
-/// Recall, then scratch: og::LightningRetrieveRepair on the database (its repairs by `repair`),
-/// and, when the database is empty or recall finds no exact path, the `scratch` planner with the
-/// time left. The planner's name is the scratch planner's followed by "+Lightning"; recalled()
-/// says which of the two solved.
+/// The share of a plan's time limit that recall and repair may take before the planner from
+/// scratch gets the rest. A repair that cannot succeed (the recalled path runs on another branch,
+/// or through a state that now collides) would otherwise spend all of it: measured on the Resch
+/// pattern, where RRTConnect alone solves a query in about 10 ms, a failed repair ran out a 10 s
+/// limit and left nothing for the search from scratch.
+constexpr double kRecallShare = 0.1;
+
+/// Recall, then scratch: og::LightningRetrieveRepair on the database (its repairs by `repair`)
+/// for at most `recall_time` seconds, and, when the database is empty or recall finds no exact
+/// path, the `scratch` planner with the time left. The planner's name is the scratch planner's
+/// followed by "+Lightning"; recalled() says which of the two solved.
 class ExperiencePlanner : public ompl::base::Planner {
  public:
-  /// @param si       the plan's space information (validity checker and motion validator set)
-  /// @param db       the database to recall from (must outlive the planner)
-  /// @param scratch  the planner from scratch, made for `si`
-  /// @param repair   the planner that repairs recalled paths, made for `si`
-  /// @throws std::invalid_argument when db, scratch or repair is null
+  /// @param si           the plan's space information (validity checker and motion validator set)
+  /// @param db           the database to recall from (must outlive the planner)
+  /// @param scratch      the planner from scratch, made for `si`
+  /// @param repair       the planner that repairs recalled paths, made for `si`
+  /// @param recall_time  seconds recall and repair may take at most (positive)
+  /// @throws std::invalid_argument when db, scratch or repair is null, or recall_time is not positive
   ExperiencePlanner(const ompl::base::SpaceInformationPtr& si, const ExperienceDatabase* db, ompl::base::PlannerPtr scratch,
-                    ompl::base::PlannerPtr repair);
+                    ompl::base::PlannerPtr repair, double recall_time);
   /// Recall (when the database holds paths), then scratch; see the class comment.
   /// @return EXACT_SOLUTION from either, else the scratch planner's status
   ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition& ptc) override;
@@ -117,6 +125,7 @@ class ExperiencePlanner : public ompl::base::Planner {
  private:
   const ExperienceDatabase* db_;
   ompl::base::PlannerPtr scratch_, recall_;
+  double recall_time_;
   bool recalled_ = false;
   double recall_seconds_ = 0.0;
 };
