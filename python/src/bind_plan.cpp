@@ -1,5 +1,10 @@
 // foldkit.plan: sampling-based planning on the crease pattern's closure manifold (OMPL).
 #include "bindings.hpp"
+#include <filesystem>
+
+#include "foldkit/io/atomic_write.hpp"
+#include "foldkit/io/parse_error.hpp"
+#include "foldkit/planners/experience.hpp"
 #include "foldkit/planners/objectives.hpp"
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/planner_factory.hpp"
@@ -60,6 +65,19 @@ void bind_result(py::module_& m) {
           "Start … goal, shape (waypoints, joints), radians; at most waypoint_step apart per joint.")
       .def_readonly("sequence", &PlanResult::sequence, "The plan as a FoldSequence from the flat sheet.")
       .def_readonly("replay", &PlanResult::replay, "The simulator's SimulationReport of the sequence, or None when not replayed.")
+      .def_property_readonly(
+          "experience",
+          [](const PlanResult& r) -> py::object {
+            if (!r.experience) return py::none();
+            py::dict d;
+            d["recalled"] = r.experience->recalled;
+            d["recall_seconds"] = r.experience->recall_seconds;
+            d["loaded"] = r.experience->loaded;
+            d["paths"] = r.experience->paths;
+            d["bytes"] = r.experience->bytes.size();
+            return d;
+          },
+          "With `experience`: a dict as the CLI's JSON `experience` (recalled, recall_seconds, loaded, paths, bytes); else None.")
       .def("__repr__", [](const PlanResult& r) {
         return "PlanResult(" + std::string(geometry::to_string(r.status.code)) + ", " + r.planner + " in " + r.space + ", " +
                std::to_string(r.waypoints.size()) + " waypoints)";
@@ -88,7 +106,8 @@ void bind_plan(py::module_& m) {
       [](const geometry::CreasePattern& p, const py::object& goal, const py::object& start, const std::string& space,
          const std::string& planner, double time, unsigned seed, bool collisions, bool use_assignment, bool simplify,
          double search_margin, double waypoint_step, double speed, bool replay, const std::map<std::string, std::string>& params,
-         bool fallback, const py::object& velocity, const std::string& objective, const std::optional<double>& cost_threshold) {
+         bool fallback, const py::object& velocity, const std::string& objective, const std::optional<double>& cost_threshold,
+         const std::optional<std::string>& experience) {
         speed = renamed(speed, planners::PlanOptions{}.speed, velocity, "velocity", "speed");  // `velocity`: fold()'s desired velocity
         require_positive(time, "time");
         require_positive(waypoint_step, "waypoint_step");
@@ -120,8 +139,21 @@ void bind_plan(py::module_& m) {
         options.objective = planners::parse_objective(objective).name();  // ValueError before any work
         if (cost_threshold) planners::check_cost_threshold(*cost_threshold, "cost_threshold");
         options.cost_threshold = cost_threshold;
+        if (experience) {
+          std::error_code ec;
+          options.experience = planners::PlanOptions::Experience{
+              *experience, std::filesystem::exists(*experience, ec) ? io::read_file(*experience) : std::string()};
+        }
         py::gil_scoped_release release;
-        return planners::plan(p, goal_state, options);
+        planners::PlanResult r;
+        try {
+          r = planners::plan(p, goal_state, options);
+        } catch (const planners::ExperienceError& e) {
+          throw io::ParseError(*experience, 0, e.reason());  // as the CLI's --experience: "DB: reason"
+        }
+        // The database written back as the CLI writes it: atomically, after a plan that checks out.
+        if (r.experience && !r.experience->bytes.empty()) io::write_file_atomic(*experience, r.experience->bytes);
+        return r;
       },
       // The defaults are PlanOptions'.
       py::arg("pattern"), py::arg("goal"), py::arg("start") = py::none(), py::arg("space") = std::string(planners::to_string(planners::PlanOptions{}.space)),
@@ -132,7 +164,7 @@ void bind_plan(py::module_& m) {
       py::arg("speed") = planners::PlanOptions{}.speed, py::arg("replay") = planners::PlanOptions{}.replay,
       py::arg("params") = std::map<std::string, std::string>{}, py::arg("fallback") = planners::PlanOptions{}.fallback,
       py::arg("velocity") = py::none(), py::arg("objective") = planners::PlanOptions{}.objective,
-      py::arg("cost_threshold") = planners::PlanOptions{}.cost_threshold,
+      py::arg("cost_threshold") = planners::PlanOptions{}.cost_threshold, py::arg("experience") = py::none(),
       ("Plans from `start` to the closed state `goal`: an array of angles (radians) or a FoldSequence (its end state, as "
        "the CLI's --goal CMML). `start` is None (flat), a FoldSequence (its end state is the start; "
       "the plan's sequence begins with it, as the CLI's --start CMML), or a closed state: then the plan's sequence reaches "
@@ -146,7 +178,9 @@ void bind_plan(py::module_& m) {
       "`via_flat` say so. `speed` is the fastest crease's speed in each CMML event, rad/s (`velocity`: its deprecated "
       "name). `objective` is what the planner optimises, as `foldkit plan --objective`: " + quoted_objectives() +
       ", or a weighted sum 'NAME:WEIGHT,…' of the additive ones (objectives()); `cost_threshold` stops an optimising "
-      "planner once its path costs less (clearance: more), None for never. Returns a PlanResult (check `status`).")
+      "planner once its path costs less (clearance: more), None for never. `experience` is a database file, as "
+      "`foldkit plan --experience`: the stored path nearest to this query is recalled and repaired first, and this "
+      "plan's path is stored (ParseError for a damaged or foreign database). Returns a PlanResult (check `status`).")
           .c_str());
   m.def("planners", &planners::planner_names, "The planner names plan() accepts.");
   m.def("spaces", &planners::space_names, "The space names plan() accepts ('auto' first).");
