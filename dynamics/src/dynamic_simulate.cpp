@@ -179,7 +179,7 @@ class Runner {
   bool finished(const std::vector<int>& named, double& quiet) const {
     if (o_.drive == Drive::Motor)
       return std::all_of(named.begin(), named.end(), [&](int j) {
-        return std::abs(sheet_.angle(j) - sheet_.drive(j).target) <= o_.reach_tolerance;
+        return std::abs(sheet_.angle_to(j, sheet_.drive(j).target)) <= o_.reach_tolerance;
       });
     quiet = sheet_.max_rate() <= o_.settle_speed ? quiet + o_.time_step : 0.0;
     return quiet >= o_.settle_time;
@@ -193,7 +193,7 @@ class Runner {
     bool any = false;
     for (int j : named) {
       const auto& d = sheet_.drive(j);
-      const double error = d.target - sheet_.angle(j);
+      const double error = sheet_.angle_to(j, d.target);
       const bool stuck = std::abs(error) > o_.reach_tolerance && std::copysign(1.0, error) * sheet_.rate(j) < 0.01 * d.speed &&
                          std::abs(sheet_.torque(j)) >= 0.999 * d.max_torque;
       stalled_for_[j] = stuck ? stalled_for_[j] + o_.time_step : 0.0;
@@ -231,9 +231,9 @@ class Runner {
       for (std::size_t j = 0; j < report_.joints.size(); ++j) {
         const int ji = static_cast<int>(j);
         const auto& d = sheet_.drive(ji);
-        if (d.kind != detail::JointDrive::Spring || std::abs(sheet_.angle(ji) - d.target) <= o_.reach_tolerance) continue;
+        if (d.kind != detail::JointDrive::Spring || std::abs(sheet_.angle_to(ji, d.target)) <= o_.reach_tolerance) continue;
         er.reached = false;
-        add_stall(ji, er.number, d.spring * std::abs(d.target - sheet_.angle(ji)));
+        add_stall(ji, er.number, d.spring * std::abs(sheet_.angle_to(ji, d.target)));
       }
     }
     if (report_.frames.back().time < time_) add_frame(er.number, end);
@@ -271,11 +271,14 @@ void check_sequence(const geometry::CreasePattern& pattern, const geometry::Fold
       const auto j = pattern.joint_index(fold.joint_id);
       if (!j) throw std::invalid_argument("event " + std::to_string(event.number) + ": no joint " + std::to_string(fold.joint_id));
       if (!std::isfinite(fold.angle)) throw simulation::SequenceError(fold.line, "fold angle is not finite");
+      // A hinge reads its angle in (−π, π], and ODE ignores a spring's stop beyond ±π.
+      if (std::abs(fold.angle) > M_PI) throw simulation::SequenceError(fold.line, "fold angle beyond ±180°");
       if (drive == Drive::Motor && (!(fold.speed > 0.0) || !std::isfinite(fold.speed)))
         throw simulation::SequenceError(fold.line, "speed must be positive and finite");
       const auto& joint = pattern.joints()[*j];
-      if (drive == Drive::Spring && !(joint.spring > 0.0 || joint.damping > 0.0))
-        throw simulation::SequenceError(fold.line, "joint " + std::to_string(joint.id) + " has neither SpringConst nor DampConst: no spring drives it");
+      // A damper alone (SpringConst 0) exerts nothing toward the angle: the event could only stall.
+      if (drive == Drive::Spring && !(joint.spring > 0.0))
+        throw simulation::SequenceError(fold.line, "joint " + std::to_string(joint.id) + " has no SpringConst: no spring drives it");
     }
 }
 

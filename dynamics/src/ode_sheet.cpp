@@ -153,7 +153,7 @@ void OdeSheet::step() {
   for (std::size_t j = 0; j < drives_.size(); ++j) {
     const JointDrive& d = drives_[j];
     if (d.kind != JointDrive::Motor) continue;
-    const double error = d.target - angle(static_cast<int>(j));
+    const double error = angle_to(static_cast<int>(j), d.target);
     const double command = std::clamp(error / o.approach_time, -d.speed, d.speed);
     dJointSetHingeParam(impl_->hinges[j], dParamVel, command);
   }
@@ -169,6 +169,12 @@ double OdeSheet::angle(int j) const {
   if (a > M_PI) a -= 2.0 * M_PI;
   if (a <= -M_PI) a += 2.0 * M_PI;
   return a;
+}
+
+double OdeSheet::angle_to(int j, double target) const {
+  // The angle reads in (−π, π]: the way to ±π (a complete fold) is the short one around, not
+  // back through flat, once the joint has passed π and reads −π + ε.
+  return std::remainder(target - angle(j), 2.0 * M_PI);
 }
 
 double OdeSheet::rate(int j) const {
@@ -210,6 +216,9 @@ double OdeSheet::hold_torque(int j) {
   // Every other motor holds still too (step() sets their speeds again before the next step).
   for (std::size_t k = 0; k < drives_.size(); ++k)
     if (drives_[k].kind == JointDrive::Motor) dJointSetHingeParam(s.hinges[k], dParamVel, 0.0);
+  // The probe step writes every joint's feedback: kept, so that the torques read after the probe
+  // (frames, --series, the other motors' stall tests) are the real step's.
+  const std::vector<dJointFeedback> feedback(s.feedback.begin(), s.feedback.end());
   const JointDrive kept = drives_[j];
   JointDrive hold{JointDrive::Motor, angle(j), 1.0, dInfinity};  // an equality row: no limit
   set_drive(j, hold);
@@ -226,6 +235,7 @@ double OdeSheet::hold_torque(int j) {
     dBodySetAngularVel(s.bodies[a], b.angular.x(), b.angular.y(), b.angular.z());
   }
   set_drive(j, kept);
+  std::copy(feedback.begin(), feedback.end(), s.feedback.begin());
   return needed;
 }
 

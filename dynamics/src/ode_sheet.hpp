@@ -43,6 +43,8 @@ class OdeSheet {
   void step();
   // Fold angle and its rate of joint index j, from the bodies' poses (radians, rad/s).
   double angle(int j) const;
+  // The signed angle from joint j's angle to `target` the short way round, in [−π, π] (radians).
+  double angle_to(int j, double target) const;
   double rate(int j) const;
   geometry::FoldState state() const;
   // Torque the joint's motor or spring exerted in the last step, about its axis, N·m.

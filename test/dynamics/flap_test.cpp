@@ -139,3 +139,21 @@ TEST(DynamicFlap, SpringSettlesWhereItBalancesGravity) {
     EXPECT_NEAR(r.stalls[0].available_torque, k * (theta - target), 0.01 * mgd);
   }
 }
+
+// A complete fold (±180°), the last event of much origami: the angle reads in (−π, π], and the
+// motor must stop at ±π rather than turn back through flat once it reads −π + ε. Without gravity
+// a motor folds the flap onto the base and holds it; beyond ±180° is refused.
+TEST(DynamicFlap, MotorFoldsTheFlapCompletelyFlatOntoTheBase) {
+  const auto pattern = geometry::build_or_throw(test::flap_spec(test::flap_shapes().front()));
+  for (double target : {M_PI, -M_PI}) {
+    SCOPED_TRACE(target);
+    dynamics::DynamicOptions o;
+    o.max_torque = 10.0;
+    o.max_event_time = 20.0;
+    const auto r = dynamics::simulate_dynamic(pattern, one_fold(1, target, 1.0), o);
+    EXPECT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_LE(std::abs(std::remainder(r.final_state.angles[0] - target, 2.0 * M_PI)), 2e-4);
+    EXPECT_LT(r.duration, 5.0);  // π rad at 1 rad/s, not a turn back the long way
+  }
+  EXPECT_THROW(dynamics::simulate_dynamic(pattern, one_fold(1, 3.2, 1.0), dynamics::DynamicOptions{}), std::invalid_argument);
+}

@@ -100,7 +100,6 @@ class PassiveSolver {
   Eigen::VectorXd r_;
   Eigen::SparseMatrix<double> J_, Jd_;  // J_ passive columns only; Jd_ the full Jacobian
   std::vector<char> is_driving_;
-  Eigen::VectorXd factored_at_;  // the state J_, Jd_ and the factorisation belong to
   bool factored_ = false;
   long iterations_ = 0;
 };
