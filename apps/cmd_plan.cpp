@@ -60,7 +60,7 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
       ->capture_default_str();
   opt.cost_threshold_option = app->add_option(
       "--cost-threshold", opt.cost_threshold,
-      "Stop at the first path whose cost is below this (clearance: above it); 0: optimise for all of --time");
+      "Stop at the first path whose cost is below this (clearance: above it); 0: optimise for all of --time (not for clearance)");
   app->add_option("--param", opt.params, "NAME=VALUE: a planner parameter by OMPL's name (repeatable), e.g. range=0.3");
   positive(app->add_option("--time", opt.time,
                   "Seconds the search may take: sampling, the Carpenter fallback and the way through flat (not the replay)"));
@@ -137,9 +137,12 @@ void set_start_and_settings(const PlanArgs& opt, const geometry::CreasePattern& 
   options.objective = opt.objective;
   if (opt.cost_threshold_option->count() > 0) options.cost_threshold = opt.cost_threshold;
   if (!opt.experience.empty()) {
+    // Only a file that is not there is a new database; one that cannot be looked at is an error
+    // (not a new database that the plan would then write over it).
     std::error_code ec;
-    options.experience = planners::PlanOptions::Experience{
-        opt.experience, std::filesystem::exists(opt.experience, ec) ? io::read_file(opt.experience) : std::string()};
+    const bool exists = std::filesystem::exists(opt.experience, ec);
+    if (ec) throw io::ParseError(opt.experience, 0, "cannot be read: " + ec.message());
+    options.experience = planners::PlanOptions::Experience{opt.experience, exists ? io::read_file(opt.experience) : std::string()};
   }
 }
 
@@ -202,6 +205,9 @@ int run_plan(PlanArgs& opt) {
     if (const std::string why = planners::objective_refusal(opt.planner, objective); !why.empty())
       throw planners::PlannerRefused(opt.planner, why);
     if (opt.cost_threshold_option->count() > 0) planners::check_cost_threshold(opt.cost_threshold, "--cost-threshold");
+    if (!opt.experience.empty() && (!objective.is_default() || opt.cost_threshold_option->count() > 0))
+      throw std::invalid_argument("--experience recalls by path length only: not with --objective " + objective.name() +
+                                  (opt.cost_threshold_option->count() > 0 ? " or --cost-threshold" : ""));
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }

@@ -1,6 +1,8 @@
 #include "foldkit/planners/experience.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <sstream>
 #include <utility>
@@ -9,7 +11,6 @@
 #include <boost/crc.hpp>
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/PlannerData.h>
-#include <ompl/base/PlannerDataStorage.h>
 #include <ompl/geometric/planners/experience/LightningRetrieveRepair.h>
 #include <ompl/tools/lightning/LightningDB.h>
 
@@ -128,32 +129,63 @@ void ExperienceDatabase::read(const std::string& bytes, const std::string& name)
     fail("damaged: " + std::to_string(bytes.size() - at) + " bytes of records where the header says " + std::to_string(h.bytes));
   const std::string body = bytes.substr(at);
   if (crc32(body) != h.crc) fail("damaged: the records do not match their CRC-32");
-  std::istringstream records(body);
-  ob::PlannerDataStorage storage;
   std::vector<og::PathGeometric> loaded;
+  std::size_t pos = 0;
   for (std::size_t i = 0; i < h.paths; ++i) {
-    ob::PlannerData data(si_);
-    try {
-      storage.load(records, data);
-    } catch (const std::exception& e) {
-      fail("damaged: path " + std::to_string(i + 1) + " cannot be read (" + e.what() + ")");
-    }
-    if (data.numVertices() < 2) fail("damaged: path " + std::to_string(i + 1) + " has fewer than two states");
-    og::PathGeometric path(si_);
-    for (unsigned int v = 0; v < data.numVertices(); ++v) path.append(data.getVertex(v).getState());
-    loaded.push_back(std::move(path));
+    const std::string which = "path " + std::to_string(i + 1);
+    std::uint64_t count = 0;
+    if (body.size() - pos < sizeof count) fail("damaged: " + which + " is cut short");
+    std::memcpy(&count, body.data() + pos, sizeof count);
+    pos += sizeof count;
+    if (count < 2) fail("damaged: " + which + " has fewer than two states");
+    if (count > (body.size() - pos) / state_bytes) fail("damaged: " + which + " holds more states than its bytes");
+    loaded.push_back(read_path(body.data() + pos, static_cast<std::size_t>(count), which, name));
+    pos += static_cast<std::size_t>(count) * state_bytes;
   }
-  if (records.peek() != std::char_traits<char>::eof()) fail("damaged: bytes after the last of its " + std::to_string(h.paths) + " paths");
+  if (pos != body.size()) fail("damaged: bytes after the last of its " + std::to_string(h.paths) + " paths");
   for (const auto& path : loaded) add(path);
 }
 
+// Each path's states, as the space serializes them, checked: finite angles within the space's
+// bounds (a record is read only after the header and the CRC agree, but a file can be made by hand).
+og::PathGeometric ExperienceDatabase::read_path(const char* data, std::size_t count, const std::string& which,
+                                                const std::string& name) const {
+  const ob::StateSpacePtr& space = si_->getStateSpace();
+  const std::size_t state_bytes = space->getSerializationLength();
+  og::PathGeometric path(si_);
+  ob::State* state = space->allocState();
+  std::vector<double> reals;
+  for (std::size_t k = 0; k < count; ++k) {
+    space->deserialize(state, data + k * state_bytes);
+    space->copyToReals(reals, state);
+    const bool finite = std::all_of(reals.begin(), reals.end(), [](double v) { return std::isfinite(v); });
+    if (!finite || !space->satisfiesBounds(state)) {
+      space->freeState(state);
+      throw ExperienceError(name, "damaged: " + which + ", state " + std::to_string(k + 1) + " is not a closed state within the bounds");
+    }
+    path.append(state);
+  }
+  space->freeState(state);
+  return path;
+}
+
+// The records: per path its number of states (8 bytes, this machine's byte order), then the
+// states as the space serializes them (getSerializationLength() bytes each). foldkit's own rather
+// than OMPL's PlannerDataStorage, which trusts its Boost archive (a hand-made file could make it
+// read past a state's buffer) and logs rather than reports what it cannot read.
 std::string ExperienceDatabase::bytes() const {
   std::vector<ob::PlannerDataPtr> all;
   db_->getAllPlannerDatas(all);
-  std::ostringstream records;
-  ob::PlannerDataStorage storage;
-  for (const auto& data : all) storage.store(*data, records);
-  const std::string body = records.str();
+  const ob::StateSpacePtr& space = si_->getStateSpace();
+  std::string body, state(space->getSerializationLength(), '\0');
+  for (const auto& data : all) {
+    const std::uint64_t count = data->numVertices();
+    body.append(reinterpret_cast<const char*>(&count), sizeof count);
+    for (unsigned int v = 0; v < data->numVertices(); ++v) {
+      space->serialize(state.data(), data->getVertex(v).getState());
+      body += state;
+    }
+  }
   std::ostringstream out;
   out << kMagic << ' ' << kVersion << "\nspace " << space_name_ << "\nstate-bytes " << si_->getStateSpace()->getSerializationLength() << "\npattern " << std::hex
       << fingerprint_ << std::dec << "\npaths " << all.size() << "\nbytes " << body.size() << "\ncrc " << std::hex << crc32(body)
@@ -183,6 +215,9 @@ ExperiencePlanner::ExperiencePlanner(const ob::SpaceInformationPtr& si, const Ex
   recall->setRepairPlanner(repair);
   recall_ = recall;
   specs_ = scratch_->getSpecs();
+  // The scratch planner's progress ("best cost", …) as this planner's, for what reads it: the
+  // Carpenter fallback's share, bench logs, plan's cost history.
+  for (const auto& [name, property] : scratch_->getPlannerProgressProperties()) addPlannerProgressProperty(name, property);
 }
 
 void ExperiencePlanner::setup() {

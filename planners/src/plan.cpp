@@ -231,6 +231,9 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
   result.objective = parse_objective(options.objective).name();
   result.space = setup.plan_space->name();
   std::unique_ptr<ExperienceDatabase> db;
+  if (options.experience && (!parse_objective(options.objective).is_default() || options.cost_threshold))
+    throw std::invalid_argument(
+        "plan: experience recalls by path length only: no other objective, no cost threshold (docs/PLANNING.md)");
   if (options.experience) {
     db = std::make_unique<ExperienceDatabase>(setup.si, result.space, pattern_fingerprint(pattern));
     db->read(options.experience->bytes, options.experience->name);

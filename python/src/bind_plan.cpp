@@ -141,8 +141,9 @@ void bind_plan(py::module_& m) {
         options.cost_threshold = cost_threshold;
         if (experience) {
           std::error_code ec;
-          options.experience = planners::PlanOptions::Experience{
-              *experience, std::filesystem::exists(*experience, ec) ? io::read_file(*experience) : std::string()};
+          const bool exists = std::filesystem::exists(*experience, ec);
+          if (ec) throw io::ParseError(*experience, 0, "cannot be read: " + ec.message());
+          options.experience = planners::PlanOptions::Experience{*experience, exists ? io::read_file(*experience) : std::string()};
         }
         py::gil_scoped_release release;
         planners::PlanResult r;

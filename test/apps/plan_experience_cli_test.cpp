@@ -36,7 +36,8 @@ struct Case {
     EXPECT_EQ(foldkit({"fold", pattern, "--fraction", "0.7", "--no-collision", "-o", g7}).exit, 0);
   }
   foldkit::test::CliResult plan(const std::string& goal, const std::string& db, const std::string& out, const char* seed = "1") const {
-    return foldkit({"plan", pattern, "--goal", goal, "--experience", db, "--seed", seed, "-o", out, "--json"});
+    // 20 s: recall gets a tenth (kRecallShare), ample even under the sanitizers.
+    return foldkit({"plan", pattern, "--goal", goal, "--experience", db, "--seed", seed, "--time", "20", "-o", out, "--json"});
   }
 };
 
@@ -73,7 +74,9 @@ TEST(PlanExperienceCli, SameDatabaseAndSeedSamePlan) {
   for (int run = 0; run < 2; ++run) {
     std::ofstream(db, std::ios::binary) << stored;
     const std::string out = c.dir + "/s7-" + std::to_string(run) + ".cmml";
-    ASSERT_EQ(c.plan(c.g7, db, out, "4").exit, 0);
+    const auto r = c.plan(c.g7, db, out, "4");
+    ASSERT_EQ(r.exit, 0) << r.err;
+    EXPECT_TRUE(nlohmann::json::parse(r.out)["experience"]["recalled"].get<bool>());  // the same way, by recall
     outs[run] = slurp(out);
   }
   EXPECT_FALSE(outs[0].empty());
@@ -94,6 +97,12 @@ TEST(PlanExperienceCli, DamagedOrForeignDatabaseIsRefusedWithNothingWritten) {
   EXPECT_NE(damaged.err.find(db + ": damaged: the records do not match their CRC-32"), std::string::npos) << damaged.err;
   EXPECT_FALSE(fs::exists(out));
   EXPECT_EQ(slurp(db), bytes);  // left as it was
+
+  // Experience recalls by length only: another objective or a threshold is a usage error.
+  const auto rotation = foldkit({"plan", c.pattern, "--goal", c.g7, "--experience", db, "--objective", "rotation", "-o", out});
+  EXPECT_EQ(rotation.exit, 2);
+  EXPECT_NE(rotation.err.find("--experience recalls by path length only"), std::string::npos) << rotation.err;
+  EXPECT_FALSE(fs::exists(out));
 
   // A database of another pattern (a Miura 6×6's) for this one.
   const std::string m6 = c.dir + "/m6.pmml", g6 = c.dir + "/g6.cmml", other = c.dir + "/m6.db";

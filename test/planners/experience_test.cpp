@@ -1,9 +1,12 @@
 // Planning from experience (issue 38, item 4): the database file round-trips its paths, refuses
 // what is not its own with the reason, and a stored path is recalled and repaired for a new query.
 #include <cmath>
+#include <cstring>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include <boost/crc.hpp>
 #include <gtest/gtest.h>
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/util/RandomNumbers.h>
@@ -133,6 +136,46 @@ TEST(Experience, ForeignOrDamagedDatabasesAreRefusedWithTheirReason) {
   EXPECT_NE(message_of(same_size, good).find("another pattern (its fingerprint"), std::string::npos);
   ExperienceDatabase other_space(setup.si, "projected", foldkit::planners::pattern_fingerprint(p));
   EXPECT_NE(message_of(other_space, good).find("written for the driving space"), std::string::npos);
+}
+
+// `good` with its records replaced by `body`, the header's byte count and CRC-32 made to match:
+// a file made by hand, which only the records' own checks can refuse.
+std::string with_records(const std::string& good, const std::string& body) {
+  const std::size_t paths_at = good.find("\nbytes ");
+  boost::crc_32_type crc;
+  crc.process_bytes(body.data(), body.size());
+  std::ostringstream out;
+  out << good.substr(0, paths_at) << "\nbytes " << body.size() << "\ncrc " << std::hex << crc.checksum() << '\n' << body;
+  return out.str();
+}
+
+TEST(Experience, HandMadeRecordsWithAValidCrcAreCheckedStateByState) {
+  const CreasePattern p = miura(4);
+  const PlanSetup setup = setup_for(p, 0.8);
+  ExperienceDatabase db = database_for(setup);
+  ASSERT_TRUE(solve(setup, &db, 1).ok);
+  const std::string good = db.bytes();
+  const std::string body = good.substr(good.find("\ncrc ") + 1);
+  const std::string records = body.substr(body.find('\n') + 1);
+  const std::size_t state_bytes = setup.space->getSerializationLength();
+  ASSERT_EQ((records.size() - 8) % state_bytes, 0u);
+  ExperienceDatabase fresh = database_for(setup);
+  ASSERT_EQ(message_of(fresh, with_records(good, records)), "");  // the oracle: rebuilt, it reads
+  std::string nan = records;
+  const double not_a_number = std::nan("");
+  std::memcpy(&nan[8 + state_bytes], &not_a_number, sizeof not_a_number);  // state 2's first angle
+  ExperienceDatabase a = database_for(setup);
+  EXPECT_NE(message_of(a, with_records(good, nan)).find("path 1, state 2 is not a closed state"), std::string::npos);
+  std::string huge = records;
+  const std::uint64_t many = std::uint64_t(1) << 60;
+  std::memcpy(&huge[0], &many, sizeof many);
+  ExperienceDatabase b = database_for(setup);
+  EXPECT_NE(message_of(b, with_records(good, huge)).find("path 1 holds more states than its bytes"), std::string::npos);
+  ExperienceDatabase c = database_for(setup);
+  EXPECT_NE(message_of(c, with_records(good, records.substr(0, 5))).find("path 1 is cut short"), std::string::npos);
+  ExperienceDatabase d = database_for(setup);
+  EXPECT_NE(message_of(d, with_records(good, records + "x")).find("bytes after the last"), std::string::npos);
+  EXPECT_EQ(a.paths() + b.paths() + c.paths() + d.paths(), 0u);
 }
 
 // The stored path of one query is recalled for a nearby one and repaired into a valid path to

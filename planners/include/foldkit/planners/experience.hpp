@@ -8,10 +8,11 @@
 /// ompl::tools::Lightning, recall and scratch run one after the other, not racing in two threads,
 /// so that a plan stays a function of its seed.
 ///
-/// The file is foldkit's own container around OMPL's PlannerDataStorage records: a text header
-/// that names the space, the size of its states, a fingerprint of the pattern and a CRC-32 of the
-/// records, so that a database of another pattern or space, or a damaged one, is refused with its
-/// reason before OMPL parses a byte of it (docs/PLANNING.md, "Planning from experience").
+/// The file is foldkit's own: a text header that names the space, the size of its states, a
+/// fingerprint of the pattern and a CRC-32 of the records, then per path its number of states and
+/// the states as the space serializes them; a database of another pattern or space, a damaged one,
+/// or states that are not finite and within the space's bounds, are refused with the reason
+/// (docs/PLANNING.md, "Planning from experience").
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
@@ -67,8 +68,8 @@ class ExperienceDatabase {
   /// @param bytes  the file's content
   /// @param name   the file's name, for messages
   /// @throws ExperienceError ("NAME: reason") when the bytes are not a foldkit experience
-  ///         database, are damaged (the CRC, the length, a record OMPL cannot read, a path of
-  ///         fewer than two states), or were written for another pattern or space
+  ///         database, are damaged (the CRC, the lengths, a path of fewer than two states, a state
+  ///         not finite or outside the space's bounds), or were written for another pattern or space
   void read(const std::string& bytes, const std::string& name);
   /// The database file's bytes: the header, then every path (write them atomically:
   /// io::write_file_atomic).
@@ -83,6 +84,9 @@ class ExperienceDatabase {
   const std::shared_ptr<ompl::tools::LightningDB>& lightning() const { return db_; }
 
  private:
+  ompl::geometric::PathGeometric read_path(const char* data, std::size_t count, const std::string& which,
+                                           const std::string& name) const;
+
   ompl::base::SpaceInformationPtr si_;
   std::string space_name_;
   std::uint64_t fingerprint_;
