@@ -97,6 +97,27 @@ geometry::FoldState goal_of(const geometry::CreasePattern& p, const py::object& 
   return to_state(p, angles, "goal");
 }
 
+// plan() with `experience`, a database file, read and written back as the CLI's --experience:
+// only a missing file is a new database; atomically, after a plan that checks out.
+planners::PlanResult plan_with_experience(const geometry::CreasePattern& p, const geometry::FoldState& goal,
+                                          planners::PlanOptions& options, const std::optional<std::string>& experience) {
+  if (experience) {
+    std::error_code ec;
+    const bool exists = std::filesystem::exists(*experience, ec);
+    if (ec) throw io::ParseError(*experience, 0, "cannot be read: " + ec.message());
+    options.experience = planners::PlanOptions::Experience{*experience, exists ? io::read_file(*experience) : std::string()};
+  }
+  py::gil_scoped_release release;
+  planners::PlanResult r;
+  try {
+    r = planners::plan(p, goal, options);
+  } catch (const planners::ExperienceError& e) {
+    throw io::ParseError(*experience, 0, e.reason());  // "DB: reason"
+  }
+  if (r.experience && !r.experience->bytes.empty()) io::write_file_atomic(*experience, r.experience->bytes);
+  return r;
+}
+
 }  // namespace
 
 void bind_plan(py::module_& m) {
@@ -139,22 +160,7 @@ void bind_plan(py::module_& m) {
         options.objective = planners::parse_objective(objective).name();  // ValueError before any work
         if (cost_threshold) planners::check_cost_threshold(*cost_threshold, "cost_threshold");
         options.cost_threshold = cost_threshold;
-        if (experience) {
-          std::error_code ec;
-          const bool exists = std::filesystem::exists(*experience, ec);
-          if (ec) throw io::ParseError(*experience, 0, "cannot be read: " + ec.message());
-          options.experience = planners::PlanOptions::Experience{*experience, exists ? io::read_file(*experience) : std::string()};
-        }
-        py::gil_scoped_release release;
-        planners::PlanResult r;
-        try {
-          r = planners::plan(p, goal_state, options);
-        } catch (const planners::ExperienceError& e) {
-          throw io::ParseError(*experience, 0, e.reason());  // as the CLI's --experience: "DB: reason"
-        }
-        // The database written back as the CLI writes it: atomically, after a plan that checks out.
-        if (r.experience && !r.experience->bytes.empty()) io::write_file_atomic(*experience, r.experience->bytes);
-        return r;
+        return plan_with_experience(p, goal_state, options, experience);
       },
       // The defaults are PlanOptions'.
       py::arg("pattern"), py::arg("goal"), py::arg("start") = py::none(), py::arg("space") = std::string(planners::to_string(planners::PlanOptions{}.space)),
