@@ -120,6 +120,16 @@ void add_dynamic_options(CLI::App* app, SimulateOptions& opt) {
                          "Dynamic model: write each joint's angle (degrees) and torque (N·m) every 0.01 s as CSV (.csv)"));
 }
 
+// An option of one model given to the other is a usage error, not ignored: `--gravity 0,0,-9.81
+// --max-torque 0.01` without `--model dynamic` would otherwise say "valid" for a kinematic replay.
+void check_model_options(const CLI::App& app, const std::string& model) {
+  const bool dynamic = model == dynamics::kModelName;
+  for (const char* name : {"--gravity", "--density", "--max-torque", "--fixed", "--scale", "--drive"})
+    if (!dynamic && app.count(name) > 0) throw UsageError(std::string(name) + " is an option of --model dynamic");
+  for (const char* name : {"--no-collision", "--collision-tolerance"})
+    if (dynamic && app.count(name) > 0) throw UsageError(std::string(name) + " is not an option of --model dynamic (it has no contacts yet)");
+}
+
 }  // namespace
 
 Command add_simulate(CLI::App& root) {
@@ -151,6 +161,7 @@ Command add_simulate(CLI::App& root) {
               throw UsageError("--frames needs a .fold file name, not '" + opt->frames + "'");
             if (!opt->series.empty() && (opt->model != dynamics::kModelName || std::filesystem::path(opt->series).extension() != ".csv"))
               throw UsageError("--series needs --model dynamic and a .csv file name, not '" + opt->series + "'");
+            check_model_options(*app, opt->model);
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
             const geometry::FoldSequence seq = load_sequence(pattern, opt->sequence);
             if (opt->model == dynamics::kModelName) return run_dynamic(*app, *opt, pattern, seq);

@@ -112,6 +112,12 @@ TEST(DynamicSimulateCli, BadInputIsRefusedWithoutOutput) {
     EXPECT_EQ(r.exit, 2) << extra[0] << " " << extra[1] << ": " << r.err;
     EXPECT_FALSE(fs::exists(frames));
   }
+  // One model's options given to the other are refused, not ignored: a kinematic replay with a
+  // torque limit would say "valid" whatever the torque.
+  const auto kinematic = foldkit({"simulate", c.pmml, c.cmml, "--gravity", "0,0,-9.81", "--max-torque", "0.01"});
+  EXPECT_EQ(kinematic.exit, 2);
+  EXPECT_NE(kinematic.err.find("--gravity is an option of --model dynamic"), std::string::npos) << kinematic.err;
+  EXPECT_EQ(foldkit({"simulate", c.pmml, c.cmml, "--model", "dynamic", "--no-collision"}).exit, 2);
   // --series is the dynamic model's, and CSV.
   EXPECT_EQ(foldkit({"simulate", c.pmml, c.cmml, "--series", c.dir + "/s.csv"}).exit, 2);
   EXPECT_EQ(foldkit({"simulate", c.pmml, c.cmml, "--model", "dynamic", "--series", c.dir + "/s.txt"}).exit, 2);
