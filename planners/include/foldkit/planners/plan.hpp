@@ -132,7 +132,8 @@ struct ExperienceOutcome {
   std::size_t loaded = 0;       ///< paths the database held when the plan began
   std::size_t paths = 0;        ///< paths it holds now (the plan's own added when it succeeded)
   /// The database file's new bytes, the plan's path added (write them back atomically); empty
-  /// when the plan failed (the file stays as it was).
+  /// when the plan failed or went through flat (the file stays as it was, or is not made). After
+  /// the Carpenter fallback they are the database as loaded (its path is not stored).
   std::string bytes;
 };
 
