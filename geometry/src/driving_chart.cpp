@@ -87,7 +87,7 @@ Status PassiveSolver::correct(FoldState& state) {
   const Eigen::VectorXd start = state.angles;
   evaluate_passive(state);
   double error = system_->residual_error(r_), previous = std::numeric_limits<double>::infinity();
-  bool evaluated = true;  // r_ and J_ belong to `state` (after a chord step only r_ does)
+  evaluated_ = true;  // r_ and J_ belong to `state` (after a chord step only r_ does)
   bool chord = false;     // the factorisation belongs to this correction
   Eigen::VectorXd step, saved;
   for (int newton = 0, turns = 0;; ++turns) {
@@ -105,10 +105,10 @@ Status PassiveSolver::correct(FoldState& state) {
       state.angles = saved;
     }
     chord = false;
-    if (!evaluated) {
+    if (!evaluated_) {
       evaluate_passive(state);
       error = system_->residual_error(r_);
-      evaluated = true;
+      evaluated_ = true;
       if (!std::isfinite(error) || error <= options_.tolerance) continue;
     }
     if (newton >= options_.max_iterations)
@@ -126,7 +126,7 @@ Status PassiveSolver::correct(FoldState& state) {
       return {StatusCode::NoProgress, "the correction jumps (another branch)"};
     r_ = system_->residual(state);
     error = system_->residual_error(r_);
-    evaluated = false;
+    evaluated_ = false;
   }
 }
 
@@ -150,13 +150,14 @@ Status PassiveSolver::follow(const FoldState& from, const Eigen::VectorXd& targe
     out = x;
     return {st.code, "the start does not close: " + st.message};
   }
-  // A fresh factorisation at the start, so that the first tangent is the start's own (correct()
-  // may have ended on chord steps, with J_ of an earlier point). Reusing the last correction's
+  // A fresh factorisation at the start, so that the first tangent is the start's own (J_ is
+  // evaluated again only when correct() ended on chord steps, with J_ of an earlier point).
+  // Reusing the last correction's
   // factorisation here, when it was made within a step of `from`, saved 5 % of a Miura 40×40
   // plan's wall time but sent the continuation onto another branch on a Resch goal that this
   // solves (scripts/experience-queries.py, goal 5: "the planned path jumps").
   Eigen::VectorXd unused;
-  evaluate_passive(x);
+  if (!evaluated_) evaluate_passive(x);
   factored_ = solver_.min_norm_step(J_, r_, unused) || factored_;
   if (path) path->push_back(x);
   const Eigen::VectorXd d0 = driving_of(x), D = target - d0;

@@ -101,6 +101,7 @@ class PassiveSolver {
   Eigen::SparseMatrix<double> J_, Jd_;  // J_ passive columns only; Jd_ the full Jacobian
   std::vector<char> is_driving_;
   bool factored_ = false;
+  bool evaluated_ = false;  // r_ and J_ belong to the state correct() last returned
   long iterations_ = 0;
 };
 
