@@ -1,7 +1,6 @@
 // foldkit plan: a collision-free, closed fold sequence from a start to a goal, by an OMPL planner.
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <limits>
 
@@ -136,14 +135,8 @@ void set_start_and_settings(const PlanArgs& opt, const geometry::CreasePattern& 
   options.fallback = !opt.no_fallback;
   options.objective = opt.objective;
   if (opt.cost_threshold_option->count() > 0) options.cost_threshold = opt.cost_threshold;
-  if (!opt.experience.empty()) {
-    // Only a file that is not there is a new database; one that cannot be looked at is an error
-    // (not a new database that the plan would then write over it).
-    std::error_code ec;
-    const bool exists = std::filesystem::exists(opt.experience, ec);
-    if (ec) throw io::ParseError(opt.experience, 0, "cannot be read: " + ec.message());
-    options.experience = planners::PlanOptions::Experience{opt.experience, exists ? io::read_file(opt.experience) : std::string()};
-  }
+  if (!opt.experience.empty())  // a missing file is a new database
+    options.experience = planners::PlanOptions::Experience{opt.experience, io::read_file_if_present(opt.experience).value_or("")};
 }
 
 int report(const PlanArgs& opt, const planners::PlanResult& r) {

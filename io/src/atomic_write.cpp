@@ -99,6 +99,14 @@ void write_file_atomic(const std::string& path, const std::string& content) {
   file.commit();
 }
 
+std::optional<std::string> read_file_if_present(const std::string& path) {
+  std::error_code ec;
+  const bool exists = std::filesystem::exists(path, ec);
+  if (ec) throw ParseError(path, 0, "cannot be read: " + ec.message());
+  if (!exists) return std::nullopt;
+  return read_file(path);
+}
+
 std::string read_file(const std::string& path) {
   detail::TextReader in(path);
   std::string text;

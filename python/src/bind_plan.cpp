@@ -1,7 +1,5 @@
 // foldkit.plan: sampling-based planning on the crease pattern's closure manifold (OMPL).
 #include "bindings.hpp"
-#include <filesystem>
-
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/parse_error.hpp"
 #include "foldkit/planners/experience.hpp"
@@ -101,12 +99,8 @@ geometry::FoldState goal_of(const geometry::CreasePattern& p, const py::object& 
 // only a missing file is a new database; atomically, after a plan that checks out.
 planners::PlanResult plan_with_experience(const geometry::CreasePattern& p, const geometry::FoldState& goal,
                                           planners::PlanOptions& options, const std::optional<std::string>& experience) {
-  if (experience) {
-    std::error_code ec;
-    const bool exists = std::filesystem::exists(*experience, ec);
-    if (ec) throw io::ParseError(*experience, 0, "cannot be read: " + ec.message());
-    options.experience = planners::PlanOptions::Experience{*experience, exists ? io::read_file(*experience) : std::string()};
-  }
+  if (experience)  // a missing file is a new database
+    options.experience = planners::PlanOptions::Experience{*experience, io::read_file_if_present(*experience).value_or("")};
   py::gil_scoped_release release;
   planners::PlanResult r;
   try {

@@ -67,4 +67,17 @@ TEST(ReadFile, MissingAndDirectory) {
   EXPECT_THROW(io::read_file(dir), io::ParseError);
 }
 
+// A missing file is nothing (a file the command makes); one that is there reads as read_file(),
+// a directory too (a ParseError), compressed or not.
+TEST(ReadFile, IfPresent) {
+  const std::string dir = test::temp_dir();
+  fs::remove(dir + "/absent.db");
+  EXPECT_FALSE(io::read_file_if_present(dir + "/absent.db").has_value());
+  io::write_file_atomic(dir + "/present.db", "abc");
+  EXPECT_EQ(io::read_file_if_present(dir + "/present.db").value_or("?"), "abc");
+  io::write_file_atomic(dir + "/present.db.gz", "abc");
+  EXPECT_EQ(io::read_file_if_present(dir + "/present.db.gz").value_or("?"), "abc");
+  EXPECT_THROW(io::read_file_if_present(dir), io::ParseError);
+}
+
 }  // namespace

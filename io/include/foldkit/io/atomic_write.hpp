@@ -2,6 +2,7 @@
 /// @file
 /// Whole-file reads, and writes that never leave a partial file behind.
 #include <stdexcept>
+#include <optional>
 #include <string>
 
 /// Reading and writing foldkit's file formats: PMML patterns, CMML fold sequences, FOLD 1.2
@@ -31,5 +32,11 @@ void write_file_atomic(const std::string& path, const std::string& content);
 ///         compressed data that is corrupt or cut short, at the line its text reached
 ///         ("FILE:LINE: truncated gzip data: …")
 std::string read_file(const std::string& path);
+
+/// read_file()'s bytes, or nothing when `path` does not exist: a file that a command makes when
+/// it is missing (`foldkit plan --experience DB`). A path that cannot be looked at is an error,
+/// not a missing file, so that nothing is written over a file that could not be read.
+/// @throws ParseError (path, line 0) as read_file(), and when its existence cannot be told
+std::optional<std::string> read_file_if_present(const std::string& path);
 
 }  // namespace foldkit::io
