@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <vector>
 
 #include "cli_common.hpp"
 #include "progress_line.hpp"
@@ -23,6 +24,8 @@ struct SimulateOptions {
   int fixed = 0;
   bool no_collision = false;
   std::size_t max_frames = 1000;
+  // The options of one model only, as declared: given to the other model they are refused.
+  std::vector<CLI::Option*> dynamic_only, kinematic_only;
   bool json = false;
 };
 
@@ -107,27 +110,29 @@ int run_kinematic(const SimulateOptions& opt, const geometry::CreasePattern& pat
 // The physical model's options (docs/SIMULATION.md, "Dynamic simulation"); their defaults are
 // dynamics::DynamicOptions'.
 void add_dynamic_options(CLI::App* app, SimulateOptions& opt) {
-  app->add_option("--gravity", opt.gravity, "Dynamic model: gravity X,Y,Z in m/s² (default none)");
-  positive(app->add_option("--density", opt.dyn.density, "Dynamic model: areal density of the sheet, kg/m²"));
-  positive(app->add_option("--max-torque", opt.dyn.max_torque, "Dynamic model: torque limit of every motor, N·m"));
-  app->add_option("--fixed", opt.fixed, "Dynamic model: ID of the actor held in place (default: the first actor)");
-  positive(app->add_option("--scale", opt.dyn.scale, "Dynamic model: metres per pattern unit"));
-  app->add_option("--drive", opt.drive, "Dynamic model: what drives an event's joints: motor (CMML speed, --max-torque) or "
-                                        "spring (PMML SpringConst, DampConst)")
-      ->check(CLI::IsMember({dynamics::to_string(dynamics::Drive::Motor), dynamics::to_string(dynamics::Drive::Spring)}))
-      ->capture_default_str();
+  opt.dynamic_only = {
+      app->add_option("--gravity", opt.gravity, "Dynamic model: gravity X,Y,Z in m/s² (default none)"),
+      positive(app->add_option("--density", opt.dyn.density, "Dynamic model: areal density of the sheet, kg/m²")),
+      positive(app->add_option("--max-torque", opt.dyn.max_torque, "Dynamic model: torque limit of every motor, N·m")),
+      app->add_option("--fixed", opt.fixed, "Dynamic model: ID of the actor held in place (default: the first actor)"),
+      positive(app->add_option("--scale", opt.dyn.scale, "Dynamic model: metres per pattern unit")),
+      app->add_option("--drive", opt.drive,
+                      "Dynamic model: what drives an event's joints: motor (CMML speed, --max-torque) or "
+                      "spring (PMML SpringConst, DampConst)")
+          ->check(CLI::IsMember({dynamics::to_string(dynamics::Drive::Motor), dynamics::to_string(dynamics::Drive::Spring)}))
+          ->capture_default_str()};
   writes(app->add_option("--series", opt.series,
                          "Dynamic model: write each joint's angle (degrees) and torque (N·m) every 0.01 s as CSV (.csv)"));
 }
 
 // An option of one model given to the other is a usage error, not ignored: `--gravity 0,0,-9.81
 // --max-torque 0.01` without `--model dynamic` would otherwise say "valid" for a kinematic replay.
-void check_model_options(const CLI::App& app, const std::string& model) {
-  const bool dynamic = model == dynamics::kModelName;
-  for (const char* name : {"--gravity", "--density", "--max-torque", "--fixed", "--scale", "--drive"})
-    if (!dynamic && app.count(name) > 0) throw UsageError(std::string(name) + " is an option of --model dynamic");
-  for (const char* name : {"--no-collision", "--collision-tolerance"})
-    if (dynamic && app.count(name) > 0) throw UsageError(std::string(name) + " is not an option of --model dynamic (it has no contacts yet)");
+void check_model_options(const SimulateOptions& opt) {
+  const bool dynamic = opt.model == dynamics::kModelName;
+  for (const CLI::Option* o : opt.dynamic_only)
+    if (!dynamic && o->count() > 0) throw UsageError(o->get_name() + " is an option of --model dynamic");
+  for (const CLI::Option* o : opt.kinematic_only)
+    if (dynamic && o->count() > 0) throw UsageError(o->get_name() + " is not an option of --model dynamic (it has no contacts yet)");
 }
 
 }  // namespace
@@ -144,11 +149,12 @@ Command add_simulate(CLI::App& root) {
       ->capture_default_str();
   positive(app->add_option("--time-step", opt->sim.time_step, "Seconds per step (dynamic model: default 0.001)"));
   positive(app->add_option("--closure-tolerance", opt->sim.closure_tolerance, "Largest loop error accepted, radians"));
-  app->add_option("--collision-tolerance", opt->sim.collision.tolerance,
-                  "Touching distance, relative to the sheet's bounding-box diagonal")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  app->add_flag("--no-collision", opt->no_collision, "Check closure only (no collision world is built)");
+  opt->kinematic_only = {
+      app->add_option("--collision-tolerance", opt->sim.collision.tolerance,
+                      "Touching distance, relative to the sheet's bounding-box diagonal")
+          ->check(CLI::NonNegativeNumber)
+          ->capture_default_str(),
+      app->add_flag("--no-collision", opt->no_collision, "Check closure only (no collision world is built)")};
   positive(app->add_option("--max-event-time", opt->sim.max_event_time,
                            "Spring model: seconds an event may take to settle (dynamic model: any event; default 60)"));
   add_dynamic_options(app, *opt);
@@ -161,7 +167,7 @@ Command add_simulate(CLI::App& root) {
               throw UsageError("--frames needs a .fold file name, not '" + opt->frames + "'");
             if (!opt->series.empty() && (opt->model != dynamics::kModelName || std::filesystem::path(opt->series).extension() != ".csv"))
               throw UsageError("--series needs --model dynamic and a .csv file name, not '" + opt->series + "'");
-            check_model_options(*app, opt->model);
+            check_model_options(*opt);
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
             const geometry::FoldSequence seq = load_sequence(pattern, opt->sequence);
             if (opt->model == dynamics::kModelName) return run_dynamic(*app, *opt, pattern, seq);
