@@ -8,47 +8,44 @@
 
 namespace foldkit::test {
 
-// The text of the gzip data `bytes` (every member, one after the other); throws when zlib refuses it.
-inline std::string gunzip(const std::string& bytes) {
+// Inflates the gzip data `bytes` into `text`, member after member, until they end or zlib refuses
+// them; zlib's last code: Z_STREAM_END when every byte decompressed.
+inline int inflate_members(const std::string& bytes, std::string& text) {
   z_stream z{};
   if (inflateInit2(&z, 15 + 16) != Z_OK) throw std::runtime_error("inflateInit2");
-  std::string text;
   char out[1 << 16];
   z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
   z.avail_in = static_cast<uInt>(bytes.size());
+  int rc = Z_OK;
   for (;;) {
     z.next_out = reinterpret_cast<Bytef*>(out);
     z.avail_out = sizeof out;
-    const int rc = inflate(&z, Z_NO_FLUSH);
+    rc = inflate(&z, Z_NO_FLUSH);
     text.append(out, sizeof out - z.avail_out);
     if (rc == Z_STREAM_END) {
       if (z.avail_in == 0) break;
       inflateReset(&z);
     } else if (rc != Z_OK) {
-      inflateEnd(&z);
-      throw std::runtime_error("zlib refuses the data: " + std::to_string(rc));
+      break;
     }
   }
   inflateEnd(&z);
+  return rc;
+}
+
+// The text of the gzip data `bytes` (every member, one after the other); throws when zlib refuses it.
+inline std::string gunzip(const std::string& bytes) {
+  std::string text;
+  if (const int rc = inflate_members(bytes, text); rc != Z_STREAM_END)
+    throw std::runtime_error("zlib refuses the data: " + std::to_string(rc));
   return text;
 }
 
 // What zlib can decompress of `bytes` before they end or go wrong: the text a reader of damaged
 // data has seen when it stops.
 inline std::string gunzip_prefix(const std::string& bytes) {
-  z_stream z{};
-  if (inflateInit2(&z, 15 + 16) != Z_OK) throw std::runtime_error("inflateInit2");
   std::string text;
-  char out[1 << 16];
-  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
-  z.avail_in = static_cast<uInt>(bytes.size());
-  for (int rc = Z_OK; rc == Z_OK;) {
-    z.next_out = reinterpret_cast<Bytef*>(out);
-    z.avail_out = sizeof out;
-    rc = inflate(&z, Z_NO_FLUSH);
-    text.append(out, sizeof out - z.avail_out);
-  }
-  inflateEnd(&z);
+  inflate_members(bytes, text);
   return text;
 }
 
