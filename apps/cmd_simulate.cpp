@@ -1,6 +1,7 @@
 // foldkit simulate: replay a CMML on a pattern and say whether it is physically possible.
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <iostream>
 #include <sstream>
 #include <vector>
@@ -8,6 +9,7 @@
 #include "cli_common.hpp"
 #include "progress_line.hpp"
 #include "foldkit/dynamics/dynamic_simulate.hpp"
+#include "foldkit/geometry/closure.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/parse_error.hpp"
@@ -20,8 +22,8 @@ struct SimulateOptions {
   std::string pattern, sequence, model = simulation::to_string(simulation::SimulationOptions{}.model), frames, svg;
   simulation::SimulationOptions sim;
   dynamics::DynamicOptions dyn;
-  std::string gravity, drive = dynamics::to_string(dynamics::DynamicOptions{}.drive), series;
-  int fixed = 0;
+  std::string gravity, drive = dynamics::to_string(dynamics::DynamicOptions{}.drive), series, fixed, start, joint_torque;
+  double ground = 0.0, thickness = 0.0;
   bool no_collision = false;
   std::size_t max_frames = 1000;
   // The options of one model only, as declared: given to the other model they are refused.
@@ -40,20 +42,74 @@ Eigen::Vector3d parse_gravity(const std::string& text) {
   return g;
 }
 
-// The physical model (foldkit::dynamics): the kinematic options that also apply to it carry over
-// when given; its own defaults otherwise.
-int run_dynamic(const CLI::App& app, const SimulateOptions& opt, const geometry::CreasePattern& pattern,
-                const geometry::FoldSequence& seq) {
+// "ID:N·m,…": torque limits of some joints, each a joint of the pattern, positive and finite.
+std::map<int, double> parse_joint_torques(const std::string& text, const geometry::CreasePattern& pattern) {
+  std::map<int, double> out;
+  std::istringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    std::istringstream one(item);
+    int id = 0;
+    double torque = 0.0;
+    char colon = 0;
+    if (!(one >> id >> colon >> torque) || colon != ':' || !(one >> std::ws).eof() || !(torque > 0.0) || !std::isfinite(torque))
+      throw UsageError("--joint-torque needs ID:N·m,… with positive finite torques, not '" + item + "'");
+    if (!pattern.joint_index(id)) throw UsageError("--joint-torque: the pattern has no joint " + std::to_string(id));
+    out[id] = torque;
+  }
+  return out;
+}
+
+// The end state of --start's CMML, closed within the tolerance (else FILE:LINE, exit 1).
+Eigen::VectorXd start_state(const std::string& cmml, const geometry::CreasePattern& pattern, int root, double tolerance) {
+  const geometry::FoldSequence seq = load_sequence(pattern, cmml);
+  const geometry::FoldState state = geometry::end_state(pattern, seq);
+  int line = 0;
+  if (!seq.events.empty())
+    for (const auto& f : seq.events.back().folds) line = std::max(line, f.line);
+  const double error = geometry::ClosureSystem(pattern, root).max_error(state);
+  if (error > tolerance)
+    throw io::ParseError(cmml, line, "its end state does not close (loop error " + std::to_string(error) +
+                                         " rad, above the closure tolerance): the sheet cannot start there");
+  return state.angles;
+}
+
+// The physical model's options (foldkit::dynamics): the kinematic options that also apply to it
+// carry over when given; its own defaults otherwise.
+dynamics::DynamicOptions dynamic_options(const CLI::App& app, const SimulateOptions& opt,
+                                         const geometry::CreasePattern& pattern) {
   dynamics::DynamicOptions o = opt.dyn;
   if (app.count("--time-step")) o.time_step = opt.sim.time_step;
   if (app.count("--closure-tolerance")) o.closure_tolerance = opt.sim.closure_tolerance;
   if (app.count("--max-event-time")) o.max_event_time = opt.sim.max_event_time;
   if (!opt.gravity.empty()) o.gravity = parse_gravity(opt.gravity);
-  if (app.count("--fixed")) {
-    if (!pattern.actor_index(opt.fixed)) throw UsageError("--fixed: the pattern has no actor " + std::to_string(opt.fixed));
-    o.fixed_actor = opt.fixed;
+  if (opt.fixed == "none") {
+    o.hold_fixed = false;
+  } else if (app.count("--fixed")) {
+    int id = 0;
+    std::istringstream in(opt.fixed);
+    if (!(in >> id) || !(in >> std::ws).eof() || !pattern.actor_index(id))
+      throw UsageError("--fixed: the pattern has no actor '" + opt.fixed + "' (an actor ID, or none)");
+    o.fixed_actor = id;
   }
+  if (app.count("--ground")) o.ground = opt.ground;
+  if (app.count("--thickness")) o.thickness = opt.thickness;
+  // Without anything to touch they would be ignored: refused, as one model's options are for the other.
+  for (const char* name : {"--friction", "--thickness"})
+    if (app.count(name) && !o.contacts && !o.ground) throw UsageError(std::string(name) + " needs --contacts or --ground");
+  if (!opt.joint_torque.empty()) o.joint_max_torque = parse_joint_torques(opt.joint_torque, pattern);
   o.drive = dynamics::parse_drive(opt.drive);
+  if (!opt.start.empty()) {
+    const int root = o.hold_fixed && o.fixed_actor ? *pattern.actor_index(*o.fixed_actor) : 0;
+    o.start = start_state(opt.start, pattern, root, o.closure_tolerance);
+  }
+  return o;
+}
+
+// The physical model (foldkit::dynamics).
+int run_dynamic(const CLI::App& app, const SimulateOptions& opt, const geometry::CreasePattern& pattern,
+                const geometry::FoldSequence& seq) {
+  dynamics::DynamicOptions o = dynamic_options(app, opt, pattern);
   o.record_frames = !opt.frames.empty() || !opt.series.empty();
   dynamics::DynamicReport report;
   try {
@@ -65,7 +121,7 @@ int run_dynamic(const CLI::App& app, const SimulateOptions& opt, const geometry:
   }
   print_dynamic_summary(opt.sequence, report);
   if (!opt.series.empty()) {
-    io::write_file_atomic(opt.series, dynamic_series_csv(pattern, report));
+    io::write_file_atomic(opt.series, dynamic_series(pattern, report, opt.series));
     std::cerr << "wrote " << opt.series << '\n';
   }
   const simulation::SimulationReport view = frames_view(report);
@@ -114,15 +170,36 @@ void add_dynamic_options(CLI::App* app, SimulateOptions& opt) {
       app->add_option("--gravity", opt.gravity, "Dynamic model: gravity X,Y,Z in m/s² (default none)"),
       positive(app->add_option("--density", opt.dyn.density, "Dynamic model: areal density of the sheet, kg/m²")),
       positive(app->add_option("--max-torque", opt.dyn.max_torque, "Dynamic model: torque limit of every motor, N·m")),
-      app->add_option("--fixed", opt.fixed, "Dynamic model: ID of the actor held in place (default: the first actor)"),
+      app->add_option("--fixed", opt.fixed,
+                      "Dynamic model: ID of the actor held in place (default: the first actor), or none (the whole "
+                      "sheet moves: on --ground, say)"),
       positive(app->add_option("--scale", opt.dyn.scale, "Dynamic model: metres per pattern unit")),
       app->add_option("--drive", opt.drive,
                       "Dynamic model: what drives an event's joints: motor (CMML speed, --max-torque) or "
                       "spring (PMML SpringConst, DampConst)")
           ->check(CLI::IsMember({dynamics::to_string(dynamics::Drive::Motor), dynamics::to_string(dynamics::Drive::Spring)}))
-          ->capture_default_str()};
+          ->capture_default_str(),
+      app->add_option("--ground", opt.ground,
+                      "Dynamic model: a ground plane at height Z (metres, normal +z; tilt --gravity for an incline) "
+                      "with contacts and friction"),
+      app->add_flag("--contacts", opt.dyn.contacts,
+                    "Dynamic model: facet-facet contacts with friction (facets not joined by a crease push each "
+                    "other apart; a motor they block is a collision)"),
+      app->add_option("--friction", opt.dyn.friction, "Dynamic model: Coulomb friction coefficient of every contact")
+          ->check(CLI::NonNegativeNumber)
+          ->capture_default_str(),
+      app->add_option("--thickness", opt.thickness,
+                      "Dynamic model: sheet thickness for contacts, metres (default: 1/1000 of the sheet's diagonal "
+                      "times --scale)")
+          ->check(CLI::PositiveNumber),
+      app->add_option("--joint-torque", opt.joint_torque,
+                      "Dynamic model: torque limits of some motors as ID:N·m,… (the others: --max-torque)"),
+      reads(app->add_option("--start", opt.start,
+                            "Dynamic model: CMML whose end state the sheet starts from, at rest (default: flat, where "
+                            "one motor does not choose the branch)"))};
   writes(app->add_option("--series", opt.series,
-                         "Dynamic model: write each joint's angle (degrees) and torque (N·m) every 0.01 s as CSV (.csv)"));
+                         "Dynamic model: write each joint's angle (degrees) and torque (N·m) every 0.01 s as CSV (.csv) "
+                         "or JSON (.json)"));
 }
 
 // An option of one model given to the other is a usage error, not ignored: `--gravity 0,0,-9.81
@@ -132,7 +209,8 @@ void check_model_options(const SimulateOptions& opt) {
   for (const CLI::Option* o : opt.dynamic_only)
     if (!dynamic && o->count() > 0) throw UsageError(o->get_name() + " is an option of --model dynamic");
   for (const CLI::Option* o : opt.kinematic_only)
-    if (dynamic && o->count() > 0) throw UsageError(o->get_name() + " is not an option of --model dynamic (it has no contacts yet)");
+    if (dynamic && o->count() > 0)
+      throw UsageError(o->get_name() + " is not an option of --model dynamic (its contacts are --contacts and --ground)");
 }
 
 }  // namespace
@@ -144,7 +222,7 @@ Command add_simulate(CLI::App& root) {
   reads(app->add_option("sequence", opt->sequence, "Fold sequence (.cmml)"))->required();
   app->add_option("--model", opt->model,
                   "Actuation: motor (CMML speeds), spring (PMML constants), sync (joints arrive together), dynamic "
-                  "(a physics engine: masses, torque-limited motors, gravity; no contacts)")
+                  "(a physics engine: masses, torque-limited motors, gravity, contacts)")
       ->check(CLI::IsMember(dynamics::model_names()))
       ->capture_default_str();
   positive(app->add_option("--time-step", opt->sim.time_step, "Seconds per step (dynamic model: default 0.001)"));
@@ -165,8 +243,8 @@ Command add_simulate(CLI::App& root) {
   return {app, [opt, app] {
             if (!opt->frames.empty() && !is_kind(opt->frames, FileKind::Fold))
               throw UsageError("--frames needs a .fold file name, not '" + opt->frames + "'");
-            if (!opt->series.empty() && (opt->model != dynamics::kModelName || std::filesystem::path(opt->series).extension() != ".csv"))
-              throw UsageError("--series needs --model dynamic and a .csv file name, not '" + opt->series + "'");
+            if (!opt->series.empty() && (opt->model != dynamics::kModelName || !is_series_file(opt->series)))
+              throw UsageError("--series needs --model dynamic and a .csv or .json file name, not '" + opt->series + "'");
             check_model_options(*opt);
             const geometry::CreasePattern pattern = load_pattern(opt->pattern).pattern;
             const geometry::FoldSequence seq = load_sequence(pattern, opt->sequence);

@@ -126,8 +126,13 @@ nlohmann::json dynamic_report_json(const geometry::CreasePattern& pattern, const
                       {"max_closure_error", e.max_closure_error}, {"energy", e.energy}});
   for (const auto& s : r.stalls)
     stalls.push_back({{"joint", s.joint}, {"event", s.event}, {"time", s.time}, {"angle", s.angle * deg},
-                      {"target", s.target * deg}, {"needed_torque", s.needed_torque}, {"available_torque", s.available_torque}});
+                      {"target", s.target * deg}, {"needed_torque", s.needed_torque}, {"available_torque", s.available_torque},
+                      {"blocked_by", s.blocked_by}});
   for (const auto& j : r.joints) joints.push_back({{"joint", j.id}, {"peak_torque", j.peak_torque}, {"angle", j.angle * deg}});
+  nlohmann::json contacts = nlohmann::json::array();
+  for (const auto& c : r.contacts)
+    contacts.push_back({{"actors", c.actors}, {"ground", c.ground}, {"event", c.event}, {"time", c.time},
+                        {"point", {c.point.x(), c.point.y(), c.point.z()}}, {"max_penetration", c.max_penetration}});
   nlohmann::json angles = nlohmann::json::array();
   for (std::size_t j = 0; j < pattern.joints().size(); ++j)
     angles.push_back({{"joint", pattern.joints()[j].id},
@@ -150,6 +155,9 @@ nlohmann::json dynamic_report_json(const geometry::CreasePattern& pattern, const
           {"closure_tolerance", r.closure_tolerance},
           {"events", events},
           {"stalls", stalls},
+          {"contacts", contacts},
+          {"max_penetration", r.max_penetration},
+          {"thickness", r.thickness > 0.0 ? nlohmann::json(r.thickness) : nlohmann::json(nullptr)},
           {"joints", joints},
           {"energy", {{"kinetic", r.kinetic_energy}, {"potential", r.potential_energy}, {"spring", r.spring_energy},
                       {"peak_kinetic", r.peak_kinetic_energy}}},
@@ -182,6 +190,34 @@ std::string dynamic_series_csv(const geometry::CreasePattern& pattern, const dyn
     out << '\n';
   }
   return out.str();
+}
+
+nlohmann::json dynamic_series_json(const geometry::CreasePattern& pattern, const dynamics::DynamicReport& r) {
+  nlohmann::json time = nlohmann::json::array(), event = nlohmann::json::array(), joints = nlohmann::json::array();
+  for (const auto& f : r.frames) {
+    time.push_back(f.time);
+    event.push_back(f.event);
+  }
+  for (std::size_t j = 0; j < pattern.joints().size(); ++j) {
+    const auto at = static_cast<Eigen::Index>(j);
+    nlohmann::json angle = nlohmann::json::array(), torque = nlohmann::json::array();
+    for (std::size_t k = 0; k < r.frames.size(); ++k) {
+      angle.push_back(r.frames[k].state.angles[at] * 180.0 / M_PI);
+      torque.push_back(r.frame_torques[k][at]);
+    }
+    joints.push_back({{"joint", pattern.joints()[j].id}, {"angle", std::move(angle)}, {"torque", std::move(torque)}});
+  }
+  return {{"time", std::move(time)}, {"event", std::move(event)}, {"joints", std::move(joints)}};
+}
+
+bool is_series_file(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  return ext == ".csv" || ext == ".json";
+}
+
+std::string dynamic_series(const geometry::CreasePattern& pattern, const dynamics::DynamicReport& r, const std::string& path) {
+  if (std::filesystem::path(path).extension() == ".json") return dynamic_series_json(pattern, r).dump() + "\n";
+  return dynamic_series_csv(pattern, r);
 }
 
 simulation::SimulationReport frames_view(const dynamics::DynamicReport& r) {

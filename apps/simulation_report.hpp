@@ -37,6 +37,18 @@ void print_dynamic_summary(const std::string& name, const dynamics::DynamicRepor
 // torque of its motor or spring (N·m), columns named angle_ID and torque_ID.
 std::string dynamic_series_csv(const geometry::CreasePattern& pattern, const dynamics::DynamicReport& report);
 
+// The same series as JSON, by column, for plotting (the browser app's torque plot):
+// {"time": [s…], "event": [n…], "joints": [{"joint": ID, "angle": [degrees…], "torque": [N·m…]}…]},
+// the joints in the pattern's order, every array one entry per frame.
+nlohmann::json dynamic_series_json(const geometry::CreasePattern& pattern, const dynamics::DynamicReport& report);
+
+// Whether `path` names a file --series writes: .csv or .json.
+bool is_series_file(const std::string& path);
+
+// The text --series writes into `path`: JSON for a .json name, else CSV.
+std::string dynamic_series(const geometry::CreasePattern& pattern, const dynamics::DynamicReport& report,
+                           const std::string& path);
+
 // The dynamic run as a kinematic report holding what --frames and --svg read (events, frames,
 // final state, status), so that both write it as they write the kinematic models' runs.
 simulation::SimulationReport frames_view(const dynamics::DynamicReport& report);

@@ -3,6 +3,8 @@
 //   BM_Dynamic_Direct/n     — ODE's direct solver (the default), 10 ms steps;
 //   BM_Dynamic_Iterative/n  — ODE's QuickStep, 20 sweeps, 10 ms steps (drifts more: see the
 //                             closure counter);
+//   BM_Dynamic_Contacts/n   — the iterative run with facet–facet contacts on (the fold touches
+//                             nothing: what the collision space alone costs);
 //   BM_Kinematic/n          — simulation::simulate (motor model, no collisions) of the CMML
 //                             fold_projected wrote for the same fold, every crease driven.
 // Counters: rtf = simulated seconds per wall second; drift = closure drift of the engine's poses.
@@ -26,7 +28,7 @@ const microbench::OneMotorMiura& scene(int n) {
   return *slot;
 }
 
-void run_dynamic(benchmark::State& st, dynamics::Solver solver) {
+void run_dynamic(benchmark::State& st, dynamics::Solver solver, bool contacts = false) {
   const microbench::OneMotorMiura& sc = scene(static_cast<int>(st.range(0)));
   dynamics::DynamicOptions o;
   o.solver = solver;
@@ -34,6 +36,7 @@ void run_dynamic(benchmark::State& st, dynamics::Solver solver) {
   o.time_step = 1e-2;
   o.max_torque = 1e6;
   o.start = sc.start;
+  o.contacts = contacts;
   double simulated = 0.0, wall = 0.0, drift = 0.0;
   for (auto _ : st) {
     const auto r = dynamics::simulate_dynamic(sc.pattern, sc.sequence, o);
@@ -48,6 +51,7 @@ void run_dynamic(benchmark::State& st, dynamics::Solver solver) {
 
 void BM_Dynamic_Direct(benchmark::State& st) { run_dynamic(st, dynamics::Solver::Direct); }
 void BM_Dynamic_Iterative(benchmark::State& st) { run_dynamic(st, dynamics::Solver::Iterative); }
+void BM_Dynamic_Contacts(benchmark::State& st) { run_dynamic(st, dynamics::Solver::Iterative, true); }
 
 void BM_Kinematic(benchmark::State& st) {
   const microbench::OneMotorMiura& sc = scene(static_cast<int>(st.range(0)));
@@ -63,5 +67,6 @@ void BM_Kinematic(benchmark::State& st) {
 
 BENCHMARK(BM_Dynamic_Direct)->Arg(4)->Arg(10)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Dynamic_Iterative)->Arg(4)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_Dynamic_Contacts)->Arg(4)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Kinematic)->Arg(4)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond)->UseRealTime();  // rtf per wall second, as above
 BENCHMARK_MAIN();

@@ -4,7 +4,9 @@
 // the same driving angle, and the real-time factor. The sheet starts 0.2 rad into the kinematic path.
 // `measure_dynamics pendulum`: instead, the period error of a free unit-square flap released
 // 0.4 rad below the horizontal (against 4√(I/mgd)·K(sin(θ₀/2))) for time steps 1e-2 … 1e-4 s.
-// Usage: measure_dynamics [n=10] [solver=iterative|direct] [iterations=100] [time_step=1e-3] [speed=0.5] [driving joint index]
+// `contacts` as the seventh argument: facet–facet contacts on (DynamicOptions::contacts), to
+// measure what they cost on a fold that touches nothing.
+// Usage: measure_dynamics [n=10] [solver=iterative|direct] [iterations=100] [time_step=1e-3] [speed=0.5] [driving joint index] [contacts]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -62,6 +64,7 @@ int main(int argc, char** argv) {
   if (argc > 4) o.time_step = std::atof(argv[4]);
   const double speed = argc > 5 ? std::atof(argv[5]) : 0.5;
   o.max_torque = 1e6;  // the spike measures the engine, not the motor
+  o.contacts = argc > 7 && std::string(argv[7]) == "contacts";
   const microbench::OneMotorMiura scene = microbench::one_motor_miura(n, speed, argc > 6 ? std::atoi(argv[6]) : -1);
   const geometry::CreasePattern& p = scene.pattern;
   const geometry::FoldState& K = scene.kinematic.states.back();
@@ -70,11 +73,12 @@ int main(int argc, char** argv) {
   const geometry::FoldSequence& seq = scene.sequence;
   const auto r = dynamics::simulate_dynamic(p, seq, o);
   const double diff = (r.final_state.angles - K.angles).cwiseAbs().maxCoeff();
-  std::printf("miura %dx%d joints %zu solver %s iterations %d dt %g: status %s, %g s simulated in %g s (RTF %.3g), "
-              "closure drift %.3g rad, max |angle - kinematic| %.3g rad, driving angle %.4f rad\n",
+  std::printf("miura %dx%d joints %zu solver %s iterations %d dt %g%s: status %s, %g s simulated in %g s (RTF %.3g), "
+              "closure drift %.3g rad, max |angle - kinematic| %.3g rad, driving angle %.4f rad, %zu contacts\n",
               n, n, p.joints().size(), o.solver == dynamics::Solver::Direct ? "direct" : "iterative", o.iterations, o.time_step,
+              o.contacts ? " contacts" : "",
               geometry::to_string(r.status.code), r.duration, r.seconds, r.duration / r.seconds, r.max_closure_error, diff,
-              K.angles[drive]);
+              K.angles[drive], r.contacts.size());
   if (!r.status.ok()) std::printf("  %s\n", r.status.message.c_str());
   if (std::getenv("DYN_VERBOSE"))
     for (int j = 0; j < static_cast<int>(p.joints().size()); ++j)

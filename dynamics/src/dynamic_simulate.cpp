@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "foldkit/geometry/closure.hpp"
 #include "ode_sheet.hpp"
@@ -55,11 +56,19 @@ void check_options(const geometry::CreasePattern& pattern, const DynamicOptions&
   if (o.start.size() > 0) {
     if (o.start.size() != static_cast<Eigen::Index>(pattern.joints().size()) || !o.start.allFinite())
       throw std::invalid_argument("start must hold one finite angle per joint");
-    const int root = o.fixed_actor && pattern.actor_index(*o.fixed_actor) ? *pattern.actor_index(*o.fixed_actor) : 0;
+    const bool held = o.hold_fixed && o.fixed_actor && pattern.actor_index(*o.fixed_actor);
+    const int root = held ? *pattern.actor_index(*o.fixed_actor) : 0;
     const geometry::ClosureSystem closure(pattern, root);
     if (closure.max_error(geometry::FoldState{o.start}) > o.closure_tolerance)
       throw std::invalid_argument("the start state does not close (loop error above closure_tolerance)");
   }
+  for (const auto& [id, torque] : o.joint_max_torque) {
+    if (!pattern.joint_index(id)) throw std::invalid_argument("joint_max_torque: no joint " + std::to_string(id));
+    positive(torque, "joint_max_torque");
+  }
+  if (o.ground && !std::isfinite(*o.ground)) throw std::invalid_argument("ground must be finite");
+  if (!(o.friction >= 0.0) || !std::isfinite(o.friction)) throw std::invalid_argument("friction must be non-negative and finite");
+  if (o.thickness) positive(*o.thickness, "thickness");
   if (o.fixed_actor && !pattern.actor_index(*o.fixed_actor))
     throw std::invalid_argument("no actor " + std::to_string(*o.fixed_actor) + " to hold fixed");
 }
@@ -67,48 +76,30 @@ void check_options(const geometry::CreasePattern& pattern, const DynamicOptions&
 // One run of a sequence: the engine, the closure measure and the report being filled.
 class Runner {
  public:
+  // `fixed`: the held actor's index, −1 for none (the closure is then measured from actor 0).
   Runner(const geometry::CreasePattern& pattern, const DynamicOptions& options, int fixed)
-      : pattern_(pattern), o_(options), sheet_(pattern, options, fixed), closure_(pattern, fixed),
+      : pattern_(pattern), o_(options), sheet_(pattern, options, fixed), closure_(pattern, std::max(fixed, 0)),
         stalled_for_(pattern.joints().size(), 0.0) {
     report_.status = {geometry::StatusCode::Success, "every event reached its angles"};
     report_.time_step = o_.time_step;
     report_.closure_tolerance = o_.closure_tolerance;
+    report_.thickness = sheet_.thickness();
     for (const auto& j : pattern.joints()) report_.joints.push_back({j.id, 0.0, 0.0});
     report_.frames.push_back({0.0, -1, sheet_.state()});
     report_.frame_torques.push_back(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(pattern.joints().size())));
   }
 
-  // Runs one event; false when the sequence must stop (a stall, a time-out, a blow-up).
+  // Runs one event; false when the sequence must stop (a stall, a collision, a time-out, a
+  // blow-up, an error the engine reported).
   bool run(const geometry::FoldEvent& event, std::size_t done, std::size_t total) {
     std::vector<int> named = drive_event(event);
     DynamicEventReport er{event.number, time_, time_, true, 0.0, 0.0};
-    double quiet = 0.0, next_check = time_ + o_.check_interval;
-    bool ok = true;
-    for (;;) {
-      try {
-        sheet_.step();
-      } catch (const detail::EngineError& e) {
-        return blow_up(er, e.what());
-      }
-      ++report_.steps;
-      time_ = static_cast<double>(report_.steps) * o_.time_step;  // no rounding drift over many steps
-      if (!sheet_.sane()) return blow_up(er, "a body moved faster than 1e6 m/s or rad/s");
-      record_torques();
-      if (time_ >= next_check) {
-        check(er, event.number, done, total);
-        next_check += o_.check_interval;
-      }
-      if (finished(named, quiet)) break;
-      if (find_stalls(named, event.number)) { ok = false; break; }
-      if (time_ - er.start >= o_.max_event_time) {
-        fail(geometry::StatusCode::LimitReached,
-             "event " + std::to_string(event.number) + " did not finish within " + std::to_string(o_.max_event_time) + " s");
-        ok = false;
-        break;
-      }
+    try {
+      if (!advance(named, er, done, total)) er.reached = false;
+      close_event(er);  // a spring that settled short of its angle fails the event here
+    } catch (const detail::EngineError& e) {
+      return blow_up(er, e.what());
     }
-    if (!ok) er.reached = false;
-    close_event(er);  // a spring that settled short of its angle fails the event here
     return er.reached;
   }
 
@@ -140,7 +131,8 @@ class Runner {
       if (o_.drive == Drive::Motor) {
         d.kind = detail::JointDrive::Motor;
         d.speed = fold.speed;
-        d.max_torque = o_.max_torque;
+        const auto own = o_.joint_max_torque.find(fold.joint_id);
+        d.max_torque = own != o_.joint_max_torque.end() ? own->second : o_.max_torque;
       } else {
         d.kind = detail::JointDrive::Spring;
         d.spring = joint.spring;
@@ -151,6 +143,71 @@ class Runner {
       named.push_back(j);
     }
     return named;
+  }
+
+  // Steps until the event's joints reach their angles (true) or the run must stop (false).
+  bool advance(const std::vector<int>& named, DynamicEventReport& er, std::size_t done, std::size_t total) {
+    double quiet = 0.0, next_check = time_ + o_.check_interval;
+    for (;;) {
+      sheet_.step();
+      ++report_.steps;
+      time_ = static_cast<double>(report_.steps) * o_.time_step;  // no rounding drift over many steps
+      if (!sheet_.sane()) throw detail::EngineError("a body moved faster than 1e6 m/s or rad/s");
+      record_torques();
+      if (!record_contacts(er.number)) return false;
+      if (time_ >= next_check) {
+        check(er, er.number, done, total);
+        next_check += o_.check_interval;
+      }
+      if (finished(named, quiet)) return true;
+      if (find_stalls(named, er.number)) return false;
+      if (time_ - er.start >= o_.max_event_time) {
+        fail(geometry::StatusCode::LimitReached,
+             "event " + std::to_string(er.number) + " did not finish within " + std::to_string(o_.max_event_time) + " s");
+        return false;
+      }
+    }
+  }
+
+  // Adds this step's contacts to the report; false when two facets' prisms overlap by more than
+  // the thickness (they passed through each other; the ground, a half-space, cannot be passed).
+  bool record_contacts(int event) {
+    const double t = sheet_.thickness();
+    for (const detail::ContactPoint& c : sheet_.contact_points()) {
+      const long long key = static_cast<long long>(c.a) * static_cast<long long>(pattern_.actors().size() + 1) + (c.b + 1);
+      const auto [it, fresh] = contact_index_.try_emplace(key, report_.contacts.size());
+      if (fresh) {
+        Contact first{{pattern_.actors()[c.a].id}, c.b < 0, event, time_, c.point, 0.0};
+        if (c.b >= 0) first.actors.push_back(pattern_.actors()[c.b].id);
+        report_.contacts.push_back(first);
+      }
+      Contact& rc = report_.contacts[it->second];
+      rc.max_penetration = std::max(rc.max_penetration, c.depth);
+      report_.max_penetration = std::max(report_.max_penetration, c.depth);
+      if (c.b >= 0 && c.depth > t) {
+        std::ostringstream msg;
+        msg << contact_words(c) << " overlap by " << c.depth << " m at t = " << time_ << " s in event " << event
+            << ", more than the sheet's thickness " << t << " m: they passed through each other (try a time step below "
+            << o_.time_step * t / (2.0 * c.depth) << " s, or a larger --thickness)";
+        fail(geometry::StatusCode::Collision, msg.str());
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // "actors 3 and 5" or "actor 3 and the ground".
+  std::string contact_words(const detail::ContactPoint& c) const {
+    const std::string a = std::to_string(pattern_.actors()[c.a].id);
+    return c.b < 0 ? "actor " + a + " and the ground" : "actors " + a + " and " + std::to_string(pattern_.actors()[c.b].id);
+  }
+
+  // The deepest contact of the last step, if any touches.
+  const detail::ContactPoint* deepest_contact() const {
+    const detail::ContactPoint* deepest = nullptr;
+    for (const auto& c : sheet_.contact_points())
+      if (!deepest || c.depth > deepest->depth) deepest = &c;
+    return deepest;
   }
 
   void add_frame(int event, const geometry::FoldState& state) {
@@ -175,19 +232,42 @@ class Runner {
     if (o_.progress) o_.progress({static_cast<double>(done), static_cast<double>(total), "events", e});
   }
 
-  // Motors: every named joint within reach_tolerance. Springs: the whole sheet still for settle_time.
-  bool finished(const std::vector<int>& named, double& quiet) const {
+  // Motors: every named joint within reach_tolerance. Springs: the whole sheet still for
+  // settle_time, and at rest there for good (balanced()).
+  bool finished(const std::vector<int>& named, double& quiet) {
     if (o_.drive == Drive::Motor)
       return std::all_of(named.begin(), named.end(), [&](int j) {
         return std::abs(sheet_.angle_to(j, sheet_.drive(j).target)) <= o_.reach_tolerance;
       });
     quiet = sheet_.max_rate() <= o_.settle_speed ? quiet + o_.time_step : 0.0;
-    return quiet >= o_.settle_time;
+    if (quiet < o_.settle_time) return false;
+    if (balanced()) return true;
+    quiet = 0.0;  // slow, but still accelerating: look again after another settle_time
+    return false;
+  }
+
+  // Whether every spring's static torque k(θ* − θ) is what holding the sheet at rest there needs
+  // (a probe step with the spring replaced by a holding motor), within the torque of the spring
+  // at the reach tolerance: the spring is within reach_tolerance of where it balances. A soft
+  // spring starts so slowly that it stays below settle_speed for settle_time far from its angle,
+  // and a damped one creeps in the end with its damper cancelling its spring: neither is settled
+  // while its static torque is unbalanced. Touching facets share the load with the springs in
+  // ways a probe does not split: a sheet at rest in contact is settled.
+  bool balanced() {
+    if (!sheet_.contact_points().empty()) return true;
+    for (std::size_t j = 0; j < report_.joints.size(); ++j) {
+      const int ji = static_cast<int>(j);
+      const auto& d = sheet_.drive(ji);
+      if (d.kind != detail::JointDrive::Spring) continue;
+      const double exerted = d.spring * sheet_.angle_to(ji, d.target), needed = sheet_.hold_torque_signed(ji);
+      if (std::abs(exerted - needed) > d.spring * o_.reach_tolerance) return false;
+    }
+    return true;
   }
 
   // A motor short of its angle, at its torque limit, making no progress for stall_time, and too
-  // weak to hold the sheet where it is; a spring drive never stalls here (it settles, and
-  // close_event() judges where).
+  // weak to hold the sheet where it is (a stall), or strong enough but held back by a contact (a
+  // collision); a spring drive never stalls here (it settles, and close_event() judges where).
   bool find_stalls(const std::vector<int>& named, int event) {
     if (o_.drive != Drive::Motor) return false;
     bool any = false;
@@ -201,7 +281,10 @@ class Runner {
       // Saturated and losing for stall_time may be a transient (an overshoot braked, the sheet
       // accelerated): it is a stall only when the motor could not even hold the sheet here at rest.
       stalled_for_[j] = 0.0;
-      if (sheet_.hold_torque(j) > d.max_torque) {
+      // Blocked: strong enough, but at rest against something (not turning away from its angle,
+      // as when braking an overshoot while some other facet happens to touch).
+      const bool weak = sheet_.hold_torque(j) > d.max_torque;
+      if (weak || (deepest_contact() && std::abs(sheet_.rate(j)) < 0.01 * d.speed)) {
         add_stall(j, event, d.max_torque);
         any = true;
       }
@@ -209,15 +292,25 @@ class Runner {
     return any;
   }
 
+  // A stall of joint index j; blocked (a collision) when something touches and holding the sheet
+  // there needs no more than `available`.
   void add_stall(int j, int event, double available) {
     const auto& d = sheet_.drive(j);
-    Stall st{pattern_.joints()[j].id, event, time_, sheet_.angle(j), d.target, 0.0, available};
+    Stall st{pattern_.joints()[j].id, event, time_, sheet_.angle(j), d.target, 0.0, available, {}};
     st.needed_torque = sheet_.hold_torque(j);
+    const detail::ContactPoint* touch = deepest_contact();
     std::ostringstream msg;
-    msg << "joint " << st.joint << " stalled in event " << event << " at " << st.angle * 180.0 / M_PI << " deg (t = " << time_
-        << " s): it needs " << st.needed_torque << " N·m, has " << st.available_torque << " N·m";
+    msg << "joint " << st.joint << (touch && st.needed_torque <= available ? " blocked" : " stalled") << " in event " << event
+        << " at " << st.angle * 180.0 / M_PI << " deg (t = " << time_ << " s): ";
+    if (touch && st.needed_torque <= available) {
+      st.blocked_by.push_back(pattern_.actors()[touch->a].id);
+      if (touch->b >= 0) st.blocked_by.push_back(pattern_.actors()[touch->b].id);
+      msg << contact_words(*touch) << " touch (penetration " << touch->depth << " m)";
+    } else {
+      msg << "it needs " << st.needed_torque << " N·m, has " << st.available_torque << " N·m";
+    }
     report_.stalls.push_back(st);
-    fail(geometry::StatusCode::NoProgress, msg.str());
+    fail(st.blocked_by.empty() ? geometry::StatusCode::NoProgress : geometry::StatusCode::Collision, msg.str());
   }
 
   void close_event(DynamicEventReport& er) {
@@ -262,6 +355,7 @@ class Runner {
   geometry::ClosureSystem closure_;
   std::vector<double> stalled_for_;
   DynamicReport report_;
+  std::unordered_map<long long, std::size_t> contact_index_;  // into report_.contacts, by pair
   double time_ = 0.0;
 };
 
@@ -288,12 +382,26 @@ DynamicReport simulate_dynamic(const geometry::CreasePattern& pattern, const geo
                                const DynamicOptions& options) {
   check_options(pattern, options);
   check_sequence(pattern, sequence, options.drive);
-  const int fixed = options.fixed_actor ? *pattern.actor_index(*options.fixed_actor) : 0;
+  const int fixed = !options.hold_fixed ? -1 : options.fixed_actor ? *pattern.actor_index(*options.fixed_actor) : 0;
   const auto start = std::chrono::steady_clock::now();
-  Runner runner(pattern, options, fixed);
+  std::optional<Runner> runner;
+  try {
+    runner.emplace(pattern, options, fixed);
+  } catch (const detail::EngineError& e) {
+    // The engine refused the sheet itself (a body it cannot take): a status, not an exception.
+    DynamicReport r;
+    r.status = {geometry::StatusCode::Singular, std::string("the engine refused the sheet: ") + e.what()};
+    r.problems.push_back(r.status.message);
+    r.time_step = options.time_step;
+    r.closure_tolerance = options.closure_tolerance;
+    r.final_state = options.start.size() > 0 ? geometry::FoldState{options.start} : geometry::FoldState::flat(pattern);
+    for (std::size_t j = 0; j < pattern.joints().size(); ++j)
+      r.joints.push_back({pattern.joints()[j].id, 0.0, r.final_state.angles[static_cast<Eigen::Index>(j)]});
+    return r;
+  }
   for (std::size_t e = 0; e < sequence.events.size(); ++e)
-    if (!runner.run(sequence.events[e], e, sequence.events.size())) break;
-  return runner.finish(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (!runner->run(sequence.events[e], e, sequence.events.size())) break;
+  return runner->finish(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
 }  // namespace foldkit::dynamics

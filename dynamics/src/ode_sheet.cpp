@@ -22,28 +22,88 @@ struct BodyState {
   Eigen::Quaterniond orientation;
 };
 
-// ODE's default error and debug handlers abort the process; foldkit reports instead.
+// ODE's error, debug and message handlers are process-wide. They are installed once (thread-safe)
+// and act for foldkit only on a thread inside one of OdeSheet's engine calls (EngineScope): there an
+// error or a failed debug check throws EngineError instead of aborting, and messages are dropped.
+// Elsewhere — another part of the process using ODE — they do what was there before: the handler
+// installed earlier, or ODE's own default (print; ODE then exits on an error, aborts on a failed
+// debug check). Another library that replaces them later takes that choice from foldkit too: an
+// engine error then ends the process as ODE's default does.
+thread_local int engine_depth = 0;
+dMessageFunction* previous_error = nullptr;
+dMessageFunction* previous_debug = nullptr;
+dMessageFunction* previous_message = nullptr;
+
+// What ODE does with no handler set (it exits or aborts itself after an error's handler returns).
+void pass_on(dMessageFunction* previous, const char* kind, int number, const char* format, va_list args) {
+  if (previous) return previous(number, format, args);
+  std::fprintf(stderr, "\n%s %d: ", kind, number);
+  std::vfprintf(stderr, format, args);
+  std::fprintf(stderr, "\n");
+  std::fflush(stderr);
+}
+
 [[noreturn]] void throw_engine_error(int number, const char* format, va_list args) {
   char text[512];
   std::vsnprintf(text, sizeof text, format, args);
   throw EngineError("ODE error " + std::to_string(number) + ": " + text);
 }
 
-void ignore_message(int, const char*, va_list) {}
+void on_error(int number, const char* format, va_list args) {
+  if (engine_depth > 0) throw_engine_error(number, format, args);
+  pass_on(previous_error, "ODE Error", number, format, args);
+}
+void on_debug(int number, const char* format, va_list args) {
+  if (engine_depth > 0) throw_engine_error(number, format, args);
+  pass_on(previous_debug, "ODE INTERNAL ERROR", number, format, args);
+}
+void on_message(int number, const char* format, va_list args) {
+  if (engine_depth == 0) pass_on(previous_message, "ODE Message", number, format, args);
+}
+
+// Marks this thread as inside foldkit's use of ODE for its lifetime (nests).
+struct EngineScope {
+  EngineScope() {
+    static std::once_flag init;
+    std::call_once(init, [] {
+      dInitODE2(0);
+      previous_error = dGetErrorHandler();
+      previous_debug = dGetDebugHandler();
+      previous_message = dGetMessageHandler();
+      dSetErrorHandler(on_error);
+      dSetDebugHandler(on_debug);
+      dSetMessageHandler(on_message);
+    });
+    dAllocateODEDataForThread(dAllocateMaskAll);  // ODE's per-thread scratch; a no-op once done
+    ++engine_depth;
+  }
+  ~EngineScope() { --engine_depth; }
+  EngineScope(const EngineScope&) = delete;
+  EngineScope& operator=(const EngineScope&) = delete;
+};
 
 }  // namespace
 
 struct OdeSheet::Impl {
   const geometry::CreasePattern* pattern = nullptr;
   DynamicOptions options;
-  int fixed = 0;
-  dWorldID world = nullptr;
+  int fixed = 0;  // −1: none
+  World world;    // first: freed last, after the contacts that point into it
   std::vector<dBodyID> bodies;
   std::vector<MassProperties> mass;
   std::vector<dJointID> hinges;
   std::vector<dJointFeedback> feedback;
   std::vector<int> left, right;          // per joint: actor indices on either side of its axis
   std::vector<Eigen::Vector3d> axis;     // per joint: flat unit direction v[0] → v[1]
+  std::unique_ptr<OdeContacts> contacts;  // only when the options ask for contacts or a ground
+
+  // One engine step: this pose's contacts, the solver, the contacts removed.
+  void advance() {
+    if (contacts) contacts->collide();
+    if (options.solver == Solver::Direct) dWorldStep(world.get(), options.time_step);
+    else dWorldQuickStep(world.get(), options.time_step);
+    if (contacts) contacts->clear();
+  }
 
   Eigen::Quaterniond orientation(int actor) const {
     return actor == fixed ? Eigen::Quaterniond::Identity() : quat(dBodyGetQuaternion(bodies[actor]));
@@ -55,28 +115,22 @@ struct OdeSheet::Impl {
 
 OdeSheet::OdeSheet(const geometry::CreasePattern& pattern, const DynamicOptions& options, int fixed)
     : impl_(std::make_unique<Impl>()), drives_(pattern.joints().size()) {
-  static std::once_flag init;
-  std::call_once(init, [] {
-    dInitODE2(0);
-    dSetErrorHandler(throw_engine_error);
-    dSetDebugHandler(throw_engine_error);
-    dSetMessageHandler(ignore_message);
-  });
-  dAllocateODEDataForThread(dAllocateMaskAll);  // ODE's per-thread scratch; a no-op once done
+  const EngineScope engine;
   Impl& s = *impl_;
   s.pattern = &pattern;
   s.options = options;
   s.fixed = fixed;
-  s.world = dWorldCreate();
-  dWorldSetGravity(s.world, options.gravity.x(), options.gravity.y(), options.gravity.z());
-  dWorldSetERP(s.world, options.erp);
-  dWorldSetCFM(s.world, options.cfm);
-  dWorldSetQuickStepNumIterations(s.world, options.iterations);
-  dWorldSetAutoDisableFlag(s.world, 0);
+  s.world.reset(dWorldCreate());
+  dWorldID world = s.world.get();
+  dWorldSetGravity(world, options.gravity.x(), options.gravity.y(), options.gravity.z());
+  dWorldSetERP(world, options.erp);
+  dWorldSetCFM(world, options.cfm);
+  dWorldSetQuickStepNumIterations(world, options.iterations);
+  dWorldSetAutoDisableFlag(world, 0);
   const int actors = static_cast<int>(pattern.actors().size());
   for (int a = 0; a < actors; ++a) {
     const MassProperties m = mass_properties(pattern, a, options.density, options.scale);
-    dBodyID b = dBodyCreate(s.world);
+    dBodyID b = dBodyCreate(world);
     dBodySetPosition(b, m.centroid.x(), m.centroid.y(), m.centroid.z());
     dMass dm;
     const Eigen::Matrix3d& I = m.inertia;
@@ -99,7 +153,7 @@ OdeSheet::OdeSheet(const geometry::CreasePattern& pattern, const DynamicOptions&
     // about +direction, or (when the right actor is the fixed one, which must not be body 1 for
     // its feedback) the left actor's about −direction, the same angle.
     const bool swap = s.right[j] == fixed;
-    dJointID h = dJointCreateHinge(s.world, nullptr);
+    dJointID h = dJointCreateHinge(world, nullptr);
     dJointAttach(h, s.bodies[swap ? s.left[j] : s.right[j]], s.bodies[swap ? s.right[j] : s.left[j]]);
     const Eigen::Vector3d p = options.scale * ax.point, d = swap ? Eigen::Vector3d(-ax.direction) : ax.direction;
     dJointSetHingeAnchor(h, p.x(), p.y(), p.z());
@@ -110,7 +164,7 @@ OdeSheet::OdeSheet(const geometry::CreasePattern& pattern, const DynamicOptions&
   // Hinges are attached on the flat sheet (ODE measures hinge angles from the pose they were
   // attached at), then the bodies move to the start state.
   if (options.start.size() > 0) {
-    const auto pose = geometry::facet_poses(pattern, geometry::make_tree(pattern, fixed), geometry::FoldState{options.start});
+    const auto pose = geometry::facet_poses(pattern, geometry::make_tree(pattern, std::max(fixed, 0)), geometry::FoldState{options.start});
     for (int a = 0; a < actors; ++a) {
       Eigen::Isometry3d m = pose[a];
       m.translation() *= options.scale;
@@ -121,9 +175,11 @@ OdeSheet::OdeSheet(const geometry::CreasePattern& pattern, const DynamicOptions&
       dBodySetQuaternion(s.bodies[a], dq);
     }
   }
+  if (options.contacts || options.ground)
+    s.contacts = std::make_unique<OdeContacts>(world, s.bodies, fixed, pattern, s.options, s.mass);
 }
 
-OdeSheet::~OdeSheet() { dWorldDestroy(impl_->world); }
+OdeSheet::~OdeSheet() = default;
 
 void OdeSheet::set_drive(int j, const JointDrive& drive) {
   drives_[j] = drive;
@@ -157,8 +213,8 @@ void OdeSheet::step() {
     const double command = std::clamp(error / o.approach_time, -d.speed, d.speed);
     dJointSetHingeParam(impl_->hinges[j], dParamVel, command);
   }
-  if (o.solver == Solver::Direct) dWorldStep(impl_->world, o.time_step);
-  else dWorldQuickStep(impl_->world, o.time_step);
+  const EngineScope engine;
+  impl_->advance();
 }
 
 double OdeSheet::angle(int j) const {
@@ -204,7 +260,8 @@ double OdeSheet::torque(int j) const {
   return moment.dot(vec(a));
 }
 
-double OdeSheet::hold_torque(int j) {
+double OdeSheet::hold_torque_signed(int j) {
+  const EngineScope engine;
   Impl& s = *impl_;
   std::vector<BodyState> saved;
   for (dBodyID b : s.bodies) {
@@ -223,9 +280,8 @@ double OdeSheet::hold_torque(int j) {
   JointDrive hold{JointDrive::Motor, angle(j), 1.0, dInfinity};  // an equality row: no limit
   set_drive(j, hold);
   dJointSetHingeParam(s.hinges[j], dParamVel, 0.0);
-  if (s.options.solver == Solver::Direct) dWorldStep(s.world, s.options.time_step);
-  else dWorldQuickStep(s.world, s.options.time_step);
-  const double needed = std::abs(torque(j));
+  s.advance();
+  const double needed = torque(j);
   for (std::size_t a = 0; a < s.bodies.size(); ++a) {
     const BodyState& b = saved[a];
     const dQuaternion q = {b.orientation.w(), b.orientation.x(), b.orientation.y(), b.orientation.z()};
@@ -238,6 +294,15 @@ double OdeSheet::hold_torque(int j) {
   std::copy(feedback.begin(), feedback.end(), s.feedback.begin());
   return needed;
 }
+
+double OdeSheet::hold_torque(int j) { return std::abs(hold_torque_signed(j)); }
+
+const std::vector<ContactPoint>& OdeSheet::contact_points() const {
+  static const std::vector<ContactPoint> none;
+  return impl_->contacts ? impl_->contacts->points() : none;
+}
+
+double OdeSheet::thickness() const { return impl_->contacts ? impl_->contacts->thickness() : 0.0; }
 
 std::vector<Eigen::Isometry3d> OdeSheet::poses() const {
   const Impl& s = *impl_;

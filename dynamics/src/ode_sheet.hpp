@@ -8,10 +8,12 @@
 
 #include "foldkit/dynamics/dynamic_simulate.hpp"
 #include "foldkit/dynamics/mass_properties.hpp"
+#include "ode_contacts.hpp"
 
 namespace foldkit::dynamics::detail {
 
-// ODE reported an internal error (its error and debug handlers throw this instead of aborting).
+// ODE reported an internal error (its error and debug handlers throw this instead of aborting, on a
+// thread inside one of OdeSheet's engine calls; the constructor, step() and hold_torque*() throw it).
 struct EngineError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -27,7 +29,9 @@ struct JointDrive {
 };
 
 // One ODE world holding the sheet: a body per actor (the fixed one kinematic), a hinge per joint,
-// attached so that ODE's hinge angle is foldkit's fold angle (right actor relative to left).
+// attached so that ODE's hinge angle is foldkit's fold angle (right actor relative to left), and
+// the contacts when the options ask for them. `fixed` is the held actor's index, −1 for none.
+// Keeps a pointer to `pattern`, which must outlive it.
 class OdeSheet {
  public:
   OdeSheet(const geometry::CreasePattern& pattern, const DynamicOptions& options, int fixed);
@@ -53,6 +57,12 @@ class OdeSheet {
   // still (a probe step with its limit lifted; every body's state is restored afterwards), N·m,
   // absolute.
   double hold_torque(int j);
+  // The same, signed as torque() reads it.
+  double hold_torque_signed(int j);
+  // The contact points of the last step (empty without contacts).
+  const std::vector<ContactPoint>& contact_points() const;
+  // The sheet's thickness for contacts, metres (0 without contacts).
+  double thickness() const;
   // Pose of each actor from its flat position (metres).
   std::vector<Eigen::Isometry3d> poses() const;
   double kinetic_energy() const;

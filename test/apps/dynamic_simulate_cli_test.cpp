@@ -80,6 +80,53 @@ TEST(DynamicSimulateCli, EnoughTorqueLiftsTheFlap) {
   EXPECT_GT(steady, 10);
 }
 
+// The series as JSON (--series X.json, what the browser app plots) holds the CSV's numbers, by
+// column, and the motor's torque is m·g·d·cos θ while it lifts the flap steadily.
+TEST(DynamicSimulateCli, SeriesAsJsonHoldsTheCsvsNumbers) {
+  const FlapCase c = flap_case();
+  const std::string csv_path = c.dir + "/lift.csv", json_path = c.dir + "/lift.json";
+  for (const auto& path : {csv_path, json_path}) {
+    auto args = dynamic_args(c, 1.05 * kLift);
+    args.insert(args.end(), {"--series", path});
+    ASSERT_EQ(foldkit(args).exit, 0) << path;
+  }
+  std::ifstream in(json_path);
+  const auto j = nlohmann::json::parse(in);
+  ASSERT_EQ(j["joints"].size(), 1u);
+  const auto& joint = j["joints"][0];
+  EXPECT_EQ(joint["joint"], 1);
+  const std::size_t n = j["time"].size();
+  ASSERT_GT(n, 100u);
+  ASSERT_EQ(j["event"].size(), n);
+  ASSERT_EQ(joint["angle"].size(), n);
+  ASSERT_EQ(joint["torque"].size(), n);
+  std::ifstream csv(csv_path);
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  std::size_t row = 0;
+  int steady = 0;
+  for (; std::getline(csv, line); ++row) {
+    ASSERT_LT(row, n) << "the CSV has more rows than the JSON has frames";
+    double t = 0, angle = 0, torque = 0;
+    int event = 0;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%d,%lf,%lf", &t, &event, &angle, &torque), 4) << line;
+    // The CSV has 10 significant digits; the JSON every digit.
+    EXPECT_NEAR(j["time"][row].get<double>(), t, 1e-9 * (1 + t));
+    EXPECT_EQ(j["event"][row].get<int>(), event);
+    EXPECT_NEAR(joint["angle"][row].get<double>(), angle, 1e-8 * (1 + std::abs(angle)));
+    EXPECT_NEAR(joint["torque"][row].get<double>(), torque, 1e-8 * (1 + std::abs(torque)));
+    const double a = joint["angle"][row].get<double>();
+    if (a < -25 && a > -35) {
+      EXPECT_NEAR(-joint["torque"][row].get<double>(), kLift * std::cos(a * M_PI / 180), 0.01 * kLift);
+      ++steady;
+    }
+  }
+  EXPECT_EQ(row, n);
+  EXPECT_GT(steady, 10);
+  // Times rise by the 0.01 s between frames.
+  for (std::size_t k = 1; k < n; ++k) EXPECT_GT(j["time"][k].get<double>(), j["time"][k - 1].get<double>());
+}
+
 TEST(DynamicSimulateCli, TooLittleTorqueStallsExitsThreeNamingTheJoint) {
   const FlapCase c = flap_case();
   const auto r = foldkit(dynamic_args(c, 0.95 * kLift));
@@ -118,9 +165,13 @@ TEST(DynamicSimulateCli, BadInputIsRefusedWithoutOutput) {
   EXPECT_EQ(kinematic.exit, 2);
   EXPECT_NE(kinematic.err.find("--gravity is an option of --model dynamic"), std::string::npos) << kinematic.err;
   EXPECT_EQ(foldkit({"simulate", c.pmml, c.cmml, "--model", "dynamic", "--no-collision"}).exit, 2);
-  // --series is the dynamic model's, and CSV.
+  // --series is the dynamic model's, and CSV or JSON.
   EXPECT_EQ(foldkit({"simulate", c.pmml, c.cmml, "--series", c.dir + "/s.csv"}).exit, 2);
-  EXPECT_EQ(foldkit({"simulate", c.pmml, c.cmml, "--model", "dynamic", "--series", c.dir + "/s.txt"}).exit, 2);
+  EXPECT_EQ(foldkit({"simulate", c.pmml, c.cmml, "--series", c.dir + "/s.json"}).exit, 2);
+  const auto txt = foldkit({"simulate", c.pmml, c.cmml, "--model", "dynamic", "--series", c.dir + "/s.txt"});
+  EXPECT_EQ(txt.exit, 2);
+  EXPECT_NE(txt.err.find("a .csv or .json file name"), std::string::npos) << txt.err;
+  EXPECT_FALSE(fs::exists(c.dir + "/s.txt"));
   // A fold of a joint the pattern lacks: invalid input at the CMML's line.
   const FlapCase unknown = flap_case("7");
   const auto r = foldkit({"simulate", unknown.pmml, unknown.cmml, "--model", "dynamic", "--frames", frames});

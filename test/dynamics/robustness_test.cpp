@@ -81,3 +81,41 @@ TEST(DynamicRobustness, FixedActorStaysAndOthersFold) {
   EXPECT_EQ(r.events.size(), 1u);
   EXPECT_TRUE(r.events[0].reached);
 }
+
+// A soft spring, gravity off, starts so slowly (ω = √(k/I) = 0.5 rad/s) that every joint stays
+// below settle_speed for settle_time far from its angle: that is not settled. Critically damped,
+// it reaches its angle (θ*(1 − (1 + ωt)e^{−ωt})) and the run succeeds.
+TEST(DynamicRobustness, SoftSpringIsNotSettledBeforeItMoves) {
+  geometry::PatternSpec spec;
+  spec.actors.push_back({1, {{{{{-1, 0}, {0, 0}, {0, 1}}}}, {{{{-1, 0}, {0, 1}, {-1, 1}}}}}});
+  spec.actors.push_back({2, {{{{{0, 0}, {1, 0}, {1, 1}}}}, {{{{0, 0}, {1, 1}, {0, 1}}}}}});
+  const double I = 1.0 / 3.0, omega = 0.5, k = omega * omega * I;  // the unit square about its edge, 1 kg/m²
+  spec.joints.push_back({1, {{{0, 0}, {0, 1}}}, {1, 2}, k, 2.0 * std::sqrt(k * I)});
+  const auto p = geometry::build_or_throw(spec);
+  geometry::FoldSequence seq;
+  seq.events.push_back({1, {{1, 0.3, 1.0, 0}}});
+  dynamics::DynamicOptions o;
+  o.drive = dynamics::Drive::Spring;
+  o.settle_speed = 1e-2;  // the spring turns slower than this for its first 0.27 s (2 settle_times)
+  o.reach_tolerance = 1e-3;
+  const auto r = dynamics::simulate_dynamic(p, seq, o);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_NEAR(r.final_state.angles[0], 0.3, o.reach_tolerance);
+  // Critically damped, it comes within the settle speed and the tolerance after some 20 s.
+  EXPECT_GT(r.duration, 10.0);
+}
+
+// The engine's own refusal (ODE rejects a body whose inertia is not positive definite — here a
+// density so small that the inertia underflows) is a status in the report, not an exception.
+TEST(DynamicRobustness, EngineErrorIsAStatusNotAnException) {
+  const auto p = geometry::build_or_throw(geometry::generators::strip(3));
+  geometry::FoldSequence seq;
+  seq.events.push_back({1, {{1, 0.5, 1.0, 0}}});
+  dynamics::DynamicOptions o;
+  o.density = 1e-320;
+  dynamics::DynamicReport r;
+  ASSERT_NO_THROW(r = dynamics::simulate_dynamic(p, seq, o));
+  EXPECT_EQ(r.status.code, geometry::StatusCode::Singular) << r.status.message;
+  EXPECT_NE(r.status.message.find("ODE"), std::string::npos) << r.status.message;
+  EXPECT_EQ(r.final_state.angles.size(), 2);
+}

@@ -6,12 +6,14 @@ import { View3D } from './view3d.js';
 import { Timeline } from './timeline.js';
 import { emptySequence, setFold, readCMML, writeCMML, anglesAfterEvents } from './cmml.js';
 import * as session from './session.js';
-import { format, StateNumbers, SIMULATING } from './numbers.js';
+import { StateNumbers, SIMULATING } from './numbers.js';
 import { opensPattern, opensSequence } from './formats.js';
 import { opening } from './boot.js';
-import { $, app, files, log, setNumber, task } from './page.js';
+import { $, app, files, log, setNumber, task, checkedValid } from './page.js';
 import { showProblemList } from './problems.js';
 import { parameters, download, baseName } from './page_fields.js';
+import { stiffnessNow } from './stiffness_panel.js';
+import { simulateOptions, showPhysics, physicsSelectionChanged, physicsTime, wirePhysics } from './physics_panel.js';
 
 // --- the pattern -----------------------------------------------------------------------------
 
@@ -34,6 +36,7 @@ function patternChanged(model) {
   app.simulation = null;
   app.stateDof = null;
   timeline.setTrajectory(0, 0, []);
+  showPhysics(null);
   // Folds of joints an edit removed stay in the sequence (undo may bring the joints back); foldkit
   // is given the others (session.sequencePath).
   showSequence();
@@ -78,14 +81,6 @@ async function checkNow() {
 }
 app.checkNow = checkNow;
 
-// Whether a verb may run on the pattern; says why not (no answer: an edit or a failed request
-// came in between, and the log already tells which).
-function checkedValid(check) {
-  if (check && !check.ok) log('the pattern is not valid: see the problems listed');
-  else if (!check && app.model.triangles.length === 0) log('draw or open a pattern first');
-  return Boolean(check && check.ok);
-}
-
 function showProblems(problems) {
   showProblemList($('problems'), editor, app.model, problems);
 }
@@ -107,6 +102,7 @@ function selectionChanged(selection) {
     }
   }
   if (selection.actors && selection.actors.length && !$('load-actor').value) $('load-actor').value = selection.actors[selection.actors.length - 1];
+  physicsSelectionChanged();
 }
 
 // The sequence no longer matches the file it was read from, nor the last simulation.
@@ -185,7 +181,8 @@ function showFrame(frame) {
   stateNumbers.showFrame(sim, frameIndex(sim, frame));  // the numbers wait for the scrubber to rest
   const t = timeline.timeAt(frame);
   const actorIndex = new Map(app.model.actors().map((id, k) => [id, k]));
-  const hit = sim.result.collisions.filter((c) => c.time <= t + 1e-9);
+  physicsTime(t);
+  const hit = (sim.result.collisions || []).filter((c) => c.time <= t + 1e-9);  // none in a physical report
   if (hit.length) view.highlight({ actors: hit.flatMap((c) => c.actors.map((a) => actorIndex.get(a))), points: hit.map((c) => c.point) });
   else view.clearHighlight();
   timeline.showClock();
@@ -211,7 +208,8 @@ async function simulateNow() {
   const check = await checkNow();
   if (!checkedValid(check)) return null;
   if (!app.sequence.events.length) return log('no folds yet: select joints and press "Set fold"');
-  const options = $('collisions').checked ? {} : { 'no-collision': true };
+  const options = simulateOptions();
+  if (!options) return null;
   const { model } = app;
   const version = model.version;
   const f = files();
@@ -228,7 +226,8 @@ async function simulateNow() {
   setNumber('n-collisions', r.collision_count);
   $('verdict').textContent = r.status === 'success' ? 'valid' : `invalid: ${r.status}`;
   log(sim.log);
-  timeline.setTrajectory(sim.frames.length, r.duration, r.collisions, sim.times);
+  timeline.setTrajectory(sim.frames.length, r.duration, r.collisions || [], sim.times);
+  showPhysics(sim, timeline.timeAt(timeline.frame));
   // Framed on the first state (the flat sheet, as a rule the widest), so no frame leaves the view.
   if (sim.frames.length) view.setAngles(sim.frames[0]);
   view.fit();
@@ -269,25 +268,6 @@ async function planNow() {
   log(out.run.log);
   if (out.sequence) await loadSequence(out.sequence);
   else $('verdict').textContent = `no plan (exit ${out.run.exit})`;
-}
-
-async function stiffnessNow() {
-  const check = await checkNow();
-  if (!checkedValid(check)) return;
-  const fixed = $('fixed').value.split(/[\s,]+/).filter(Boolean).map(Number);
-  const load = Number($('load-actor').value);
-  const force = $('force').value.trim().split(/\s+/).map(Number);
-  if (!fixed.length || !Number.isInteger(load) || force.length !== 3 || !force.every(Number.isFinite))
-    return log('stiffness: give fixed actor IDs, the loaded actor and a force "fx fy fz"');
-  const r = await task('stiffness', () => session.stiffness(app.model, app.sequence, files(), { fixed, load, force }));
-  if (!r) return;
-  const b = app.model.bounds();
-  const size = Math.hypot(b.maxX - b.minX, b.maxY - b.minY);
-  const scale = r.max_displacement > 0 ? (0.1 * size) / r.max_displacement : 1;
-  const index = new Map(app.model.actors().map((id, k) => [id, k]));
-  app.stiffness = r;
-  view.showDisplacements(r.modules.map((m) => ({ actor: index.get(m.id), dx: m.displacement[0], dy: m.displacement[1], dz: m.displacement[2] })), scale);
-  log(`stiffness: ${r.message}, largest displacement ${format(r.max_displacement)} (drawn ×${format(scale)}), condition ~${format(r.condition_estimate)}`);
 }
 
 // --- files -----------------------------------------------------------------------------------
@@ -369,6 +349,7 @@ function lattice() {
 }
 
 function wire() {
+  wirePhysics();
   for (const b of document.querySelectorAll('[data-tool]')) {
     b.addEventListener('click', () => {
       lattice();

@@ -1,5 +1,6 @@
 // What every part of the page shares: its state (`app`, window.foldkit for the browser tests),
-// its elements, the log, and the one-request-at-a-time runner of foldkit verbs.
+// its elements, the log, the one-request-at-a-time runner of foldkit verbs and whether one may
+// run on the pattern.
 import { PatternModel } from './model.js';
 import { emptySequence } from './cmml.js';
 import * as session from './session.js';
@@ -50,4 +51,12 @@ export async function task(label, work) {
     app.busy--;
     if (!app.busy) document.body.classList.remove('busy');
   }
+}
+
+/** Whether a verb may run on the pattern (`check`: app.checkNow()'s answer); says why not (no
+ * answer: an edit or a failed request came in between, and the log already tells which). */
+export function checkedValid(check) {
+  if (check && !check.ok) log('the pattern is not valid: see the problems listed');
+  else if (!check && app.model.triangles.length === 0) log('draw or open a pattern first');
+  return Boolean(check && check.ok);
 }

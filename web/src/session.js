@@ -5,6 +5,7 @@ import { writeCMML, CmmlReader, unpackSequence, foldFrameAngles } from './cmml.j
 import { readSequenceAside } from './reader.js';
 import { PatternModel } from './model.js';
 import { formatOf, extensions } from './formats.js';
+import { PHYSICS_MODEL } from './physics.js';
 
 /** Files of the session named `name` in `folder` (relative to the server's root); the page writes
  * and overwrites them as it goes. */
@@ -13,6 +14,7 @@ export function sessionFiles(name, folder = '') {
   return {
     pattern: `${base}.pmml`, sequence: `${base}.cmml`, frames: `${base}-frames.fold`, state: `${base}-state.cmml`,
     folded: `${base}-fold.cmml`, plan: `${base}-plan.cmml`, loadcase: `${base}.loadcase`, fold: `${base}.fold`, svg: `${base}.svg`,
+    series: `${base}-series.json`,
   };
 }
 
@@ -74,14 +76,19 @@ export function frameBudget(joints) {
 }
 
 /** Simulates the sequence: {result (simulate's JSON), exit, frames (radians per joint, in
- * `joints` order), final, times (seconds per frame)}. `options` are simulate's arguments (e.g. {'no-collision': true}). */
+ * `joints` order), final, times (seconds per frame), series}. `options` are simulate's arguments
+ * (e.g. {'no-collision': true}); with {model: 'dynamic'} foldkit also writes every joint's angle
+ * and torque every 0.01 s (`--series NAME-series.json`), which is `series` ({time, event,
+ * joints: [{joint, angle, torque}]}); else `series` is null. */
 export async function simulate(model, sequence, files, options = {}) {
   const path = await sequencePath(sequence, files, model);
+  const physical = options.model === PHYSICS_MODEL;
   const run = await api.verb('simulate', { pattern: files.pattern, sequence: path, frames: files.frames,
-    'max-frames': frameBudget(model.joints().length), ...options });
+    'max-frames': frameBudget(model.joints().length), ...(physical ? { series: files.series } : {}), ...options });
   const trajectory = JSON.parse(await api.readFile(files.frames));
   const { frames, final, times } = foldFrameAngles(trajectory, model.joints());
-  return { result: run.result, exit: run.exit, log: run.log, frames, final, times };
+  const series = physical ? JSON.parse(await api.readFile(files.series)) : null;
+  return { result: run.result, exit: run.exit, log: run.log, frames, final, times, series };
 }
 
 /** Projected folding to `fraction` of the way (foldkit fold): the sequence it wrote. */

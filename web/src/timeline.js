@@ -1,5 +1,5 @@
 // The fold sequence's events as blocks in a row, and the simulated trajectory's scrubber with
-// the collisions marked where they happened.
+// the collisions (and a physical run's stalls) marked where they happened.
 
 /** Draws into `container`; calls `onEvent(number)` when an event is picked, `onScrub(frame)`
  * while the scrubber moves, `onScrubEnd(frame)` when it rests. */
@@ -65,6 +65,25 @@ export class Timeline {
       this.marks.append(mark);
     }
     this.showClock();
+  }
+
+  /** Marks the physical run's stalls ({joint, time, …}) on the scrubber, each labelled with its
+   * joint and time (`label(stall)`); none: the marks go. */
+  markStalls(stalls, label) {
+    for (const old of this.marks.querySelectorAll('.stall-mark')) old.remove();
+    for (const s of stalls) {
+      const mark = document.createElement('span');
+      mark.className = 'stall-mark';
+      const at = this.duration > 0 ? Math.min(100, (100 * s.time) / this.duration) : 0;
+      mark.style.left = `${at}%`;
+      mark.dataset.joint = s.joint;
+      mark.dataset.time = s.time;
+      const text = document.createElement('span');
+      text.className = at > 50 ? 'stall-label before' : 'stall-label';  // on the side with room
+      text.textContent = label(s);
+      mark.append(text);
+      this.marks.append(mark);
+    }
   }
 
   /** Seconds into the trajectory at `frame`. */

@@ -3,6 +3,7 @@
 /// Dynamic replay of a fold sequence on a physics engine (ODE, private to this library): each
 /// actor a rigid lamina, each joint a hinge, events driven by torque-limited motors or torsion
 /// springs, under gravity (docs/SIMULATION.md, "Dynamic simulation").
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,9 +55,25 @@ enum class Solver {
 struct DynamicOptions {
   double density = 1.0;      ///< areal density of the sheet, kg/m² (positive, finite)
   double max_torque = 1.0;   ///< torque limit of every motor, N·m (positive, finite)
+  /// Torque limits of some motors, N·m (positive, finite), by joint ID (a joint the pattern
+  /// has); the others have max_torque.
+  std::map<int, double> joint_max_torque;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< m/s², world axes of the flat sheet (default none)
   /// Actor ID of the actor held in place (kinematic: it never moves); empty: the first actor.
   std::optional<int> fixed_actor;
+  /// false: no actor is held (fixed_actor ignored): the whole sheet moves, e.g. on the ground.
+  bool hold_fixed = true;
+  /// Height of a ground plane z = ground (metres, world axes of the flat sheet, normal +z; tilt
+  /// gravity for an incline); empty: none. The facets touching it get contacts with friction.
+  std::optional<double> ground;
+  /// Facet–facet contacts (with friction): facets not joined by a crease push each other apart
+  /// instead of passing through. Off: no collision space is built (unless ground asks for one).
+  bool contacts = false;
+  double friction = 0.5;     ///< Coulomb coefficient μ of every contact (≥ 0, finite)
+  /// Thickness of the sheet for contacts, metres: each facet is a prism this thick about its
+  /// mid-surface (a zero-thickness sheet has no stable contact); empty: 1e-3 of the sheet's
+  /// bounding-box diagonal times scale. Positive and finite.
+  std::optional<double> thickness;
   double scale = 1.0;        ///< metres per pattern unit (positive, finite)
   /// The state the sheet starts from, at rest (one angle per joint, radians, closed: its loop
   /// error at most closure_tolerance); empty: flat. The flat sheet is a bifurcation point where
@@ -76,7 +93,10 @@ struct DynamicOptions {
   double reach_tolerance = 1e-4;  ///< radians: a motor within this of its angle has reached it
   /// Spring drive: an event ends when every joint turns slower than this (rad/s) …
   double settle_speed = 1e-3;
-  double settle_time = 0.1;       ///< … for this long (seconds)
+  /// … for this long (seconds), and every spring's static torque k(θ* − θ) is what holding the
+  /// sheet at rest there needs, within k·reach_tolerance (else it is still on its way: a soft
+  /// spring starts slowly; the sheet's contacts, if any, count as settled).
+  double settle_time = 0.1;
   /// A motor that is not within reach_tolerance, makes less than a hundredth of its speed of
   /// progress and uses its full torque for this long (seconds) has stalled, when holding the
   /// sheet at rest where it is would need more than its torque (else it was a transient, such as
@@ -102,6 +122,20 @@ struct Stall {
   /// the joint's limit lifted, the sheet at rest and every other motor holding still.
   double needed_torque = 0.0;
   double available_torque = 0.0;  ///< the motor's limit (spring drive: k·|θ* − θ|), N·m
+  /// Actor IDs of the contact that blocks it (a collision: holding the sheet there needs no more
+  /// than its torque, but the facets, or a facet and the ground, push back); empty: its torque
+  /// was too small. A ground contact names one actor.
+  std::vector<int> blocked_by;
+};
+
+/// Two facets (or a facet and the ground) that touched.
+struct Contact {
+  std::vector<int> actors;      ///< actor IDs: two facets, smaller index first; one for the ground
+  bool ground = false;          ///< whether the second side is the ground plane
+  int event = 0;                ///< EventNumber when they first touched
+  double time = 0.0;            ///< seconds, when they first touched
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< where they first touched, world metres
+  double max_penetration = 0.0;  ///< deepest overlap of their prisms over the run, metres
 };
 
 /// What happened in one event.
@@ -124,8 +158,10 @@ struct JointReport {
 /// What simulate_dynamic() found.
 struct DynamicReport {
   /// Success when every event reached its angles and the loops stayed closed within the
-  /// tolerance; otherwise NoProgress (a stall), LimitReached (max_event_time), ClosureViolated
-  /// or Singular (the engine's state blew up: the message names a smaller time step).
+  /// tolerance; otherwise NoProgress (a stall), Collision (a motor or spring blocked by a
+  /// contact, or two prisms overlapping by more than the thickness: passed through),
+  /// LimitReached (max_event_time), ClosureViolated or Singular (the engine's state blew up, or
+  /// the engine reported an error: the message names a smaller time step).
   geometry::Status status;
   double time_step = 0.0;          ///< seconds
   double duration = 0.0;           ///< simulated seconds
@@ -141,6 +177,10 @@ struct DynamicReport {
   double spring_energy = 0.0;      ///< ½k(θ−θ*)² of the spring-driven joints at the end, joules
   double peak_kinetic_energy = 0.0;  ///< joules
   std::vector<std::string> problems;  ///< why the sequence failed, in words; empty on success
+  /// Every pair that touched (DynamicOptions::contacts, ground), in the order they first did.
+  std::vector<Contact> contacts;
+  double max_penetration = 0.0;    ///< deepest overlap of any contact, metres (0 without contacts)
+  double thickness = 0.0;          ///< the sheet's thickness for contacts, metres (0: no contacts)
   /// The flat state at time 0, then every check_interval when record_frames, else each event's end.
   std::vector<simulation::Frame> frames;
   /// Per frame, the torque each joint's motor or spring exerted in the step before it (N·m, signed
@@ -152,7 +192,8 @@ struct DynamicReport {
 /// Runs `sequence` on `pattern` in the physics engine from the resting sheet at options.start.
 /// @throws std::invalid_argument for options out of range (a density, torque, scale, time or
 ///         tolerance that is not positive and finite, a time step above approach_time or
-///         stall_time, gravity not finite, an unknown fixed
+///         stall_time, gravity, ground, friction or thickness not finite (friction negative,
+///         thickness not positive), an unknown fixed
 ///         actor, iterations < 1, erp outside (0, 1], a start state of the wrong size, not finite
 ///         or not closed) or a sequence naming joints the pattern lacks
 /// @throws simulation::SequenceError for a fold whose speed is not positive and finite, or (spring
