@@ -1,5 +1,6 @@
 // foldkit.simulate: the kinematic replay of a fold sequence, with its report, frames and poses;
 // model="dynamic": the physical replay of foldkit::dynamics, with its DynamicReport.
+#include <map>
 #include <optional>
 
 #include "bindings.hpp"
@@ -92,7 +93,16 @@ void bind_dynamic_report(py::module_& m) {
       .def_readonly("angle", &dynamics::Stall::angle, "Its angle then, radians.")
       .def_readonly("target", &dynamics::Stall::target, "The angle it was driven to, radians.")
       .def_readonly("needed_torque", &dynamics::Stall::needed_torque, "Torque to hold the sheet there at rest, N·m.")
-      .def_readonly("available_torque", &dynamics::Stall::available_torque, "The motor's limit (a spring's k·|θ*−θ|), N·m.");
+      .def_readonly("available_torque", &dynamics::Stall::available_torque, "The motor's limit (a spring's k·|θ*−θ|), N·m.")
+      .def_readonly("blocked_by", &dynamics::Stall::blocked_by,
+                    "Actor IDs of the contact that blocks it (one: the ground); empty: its torque was too small.");
+  py::class_<dynamics::Contact>(m, "Contact", "Two facets, or a facet and the ground, that touched in the dynamic model.")
+      .def_readonly("actors", &dynamics::Contact::actors, "Actor IDs: two facets, or one for the ground.")
+      .def_readonly("ground", &dynamics::Contact::ground, "Whether the other side is the ground plane.")
+      .def_readonly("event", &dynamics::Contact::event, "EventNumber when they first touched.")
+      .def_readonly("time", &dynamics::Contact::time, "When they first touched, seconds.")
+      .def_property_readonly("point", [](const dynamics::Contact& c) { return c.point; }, "Where they first touched, world metres.")
+      .def_readonly("max_penetration", &dynamics::Contact::max_penetration, "Deepest overlap over the run, metres.");
   py::class_<dynamics::DynamicEventReport>(m, "DynamicEventReport", "One event of a dynamic run.")
       .def_readonly("number", &dynamics::DynamicEventReport::number, "EventNumber.")
       .def_readonly("start", &dynamics::DynamicEventReport::start, "Seconds.")
@@ -106,7 +116,9 @@ void bind_dynamic_report(py::module_& m) {
       .def_readonly("angle", &dynamics::JointReport::angle, "Final angle, radians.");
   py::class_<DynamicReport>(m, "DynamicReport", py::dynamic_attr(),
                             "What simulate(model='dynamic') found: status, stalls, peak torques, closure drift, energy, frames.")
-      .def_readonly("status", &DynamicReport::status, "'success', or 'no-progress' (a stall), 'limit-reached', 'closure-violated', 'singular'.")
+      .def_readonly("status", &DynamicReport::status,
+                    "'success', or 'no-progress' (a stall), 'collision' (a blocked motor, facets passed through), "
+                    "'limit-reached', 'closure-violated', 'singular'.")
       .def_property_readonly("valid", [](const DynamicReport& r) { return r.status.ok(); }, "Whether every event reached its angles.")
       .def_property_readonly("model", [](const DynamicReport&) { return std::string(dynamics::kModelName); }, "'dynamic'.")
       .def_readonly("time_step", &DynamicReport::time_step, "Seconds per engine step.")
@@ -118,6 +130,9 @@ void bind_dynamic_report(py::module_& m) {
       .def_readonly("events", &DynamicReport::events, "One DynamicEventReport per event run.")
       .def_readonly("stalls", &DynamicReport::stalls, "Stalls.")
       .def_readonly("joints", &DynamicReport::joints, "One JointReport per joint.")
+      .def_readonly("contacts", &DynamicReport::contacts, "Every pair that touched (contacts=True, ground), in order.")
+      .def_readonly("max_penetration", &DynamicReport::max_penetration, "Deepest overlap of any contact, metres.")
+      .def_readonly("thickness", &DynamicReport::thickness, "The sheet's thickness for contacts, metres (0: none).")
       .def_readonly("kinetic_energy", &DynamicReport::kinetic_energy, "At the end, J.")
       .def_readonly("potential_energy", &DynamicReport::potential_energy, "Gravitational, relative to flat, at the end, J.")
       .def_readonly("spring_energy", &DynamicReport::spring_energy, "At the end, J.")
@@ -155,9 +170,41 @@ void bind_dynamic_report(py::module_& m) {
 struct PhysicsArgs {
   std::optional<Eigen::Vector3d> gravity;
   double density, max_torque, scale;
-  std::optional<int> fixed;
+  py::object fixed;  // None: the first actor; an actor ID; "none": no actor held
   std::string drive;
+  std::optional<double> ground;
+  bool contacts;
+  double friction;
+  std::optional<double> thickness;
+  std::optional<std::map<int, double>> joint_torque;
+  std::optional<Eigen::VectorXd> start;
+
+  // Whether any differs from its default: they belong to the dynamic model only (as on the CLI).
+  std::string given() const {
+    const dynamics::DynamicOptions d;
+    const std::pair<bool, const char*> named[] = {
+        {gravity.has_value(), "gravity"}, {density != d.density, "density"}, {max_torque != d.max_torque, "max_torque"},
+        {scale != d.scale, "scale"}, {!fixed.is_none(), "fixed"}, {drive != dynamics::to_string(d.drive), "drive"},
+        {ground.has_value(), "ground"}, {contacts != d.contacts, "contacts"}, {friction != d.friction, "friction"},
+        {thickness.has_value(), "thickness"}, {joint_torque.has_value(), "joint_torque"}, {start.has_value(), "start"}};
+    for (const auto& [differs, name] : named)
+      if (differs) return name;
+    return {};
+  }
 };
+
+// fixed=: None (the first actor), an actor ID of the pattern, or "none" (no actor held).
+void set_fixed(dynamics::DynamicOptions& o, const geometry::CreasePattern& p, const py::object& fixed) {
+  if (fixed.is_none()) return;
+  if (py::isinstance<py::str>(fixed)) {
+    if (fixed.cast<std::string>() != "none") throw py::value_error("fixed must be an actor ID, None or 'none'");
+    o.hold_fixed = false;
+    return;
+  }
+  const int id = fixed.cast<int>();
+  require(p.actor_index(id).has_value(), "fixed", "an actor ID of the pattern", id);
+  o.fixed_actor = id;
+}
 
 py::object simulate_dynamic(const geometry::CreasePattern& p, const geometry::FoldSequence& sequence, const std::string& source,
                             const PhysicsArgs& a, std::optional<double> time_step, std::optional<double> closure_tolerance,
@@ -171,9 +218,15 @@ py::object simulate_dynamic(const geometry::CreasePattern& p, const geometry::Fo
   o.scale = a.scale;
   if (a.gravity) o.gravity = *a.gravity;
   require(o.gravity.allFinite(), "gravity", "finite", o.gravity.sum());
-  if (a.fixed) require(p.actor_index(*a.fixed).has_value(), "fixed", "an actor ID of the pattern", *a.fixed);
-  o.fixed_actor = a.fixed;
+  set_fixed(o, p, a.fixed);
   o.drive = dynamics::parse_drive(a.drive);
+  // The rest are checked by simulate_dynamic itself (std::invalid_argument: ValueError).
+  o.ground = a.ground;
+  o.contacts = a.contacts;
+  o.friction = a.friction;
+  o.thickness = a.thickness;
+  if (a.joint_torque) o.joint_max_torque = *a.joint_torque;
+  if (a.start) o.start = *a.start;
   o.time_step = time_step.value_or(o.time_step);
   o.closure_tolerance = closure_tolerance.value_or(o.closure_tolerance);
   o.max_event_time = max_event_time.value_or(o.max_event_time);
@@ -199,16 +252,21 @@ void bind_simulate(py::module_& m) {
       [](const geometry::CreasePattern& p, const py::object& sequence_object, const std::string& model,
          std::optional<double> time_step, std::optional<double> closure_tolerance, bool collisions, bool record_frames, bool poses,
          std::optional<double> max_event_time, std::optional<Eigen::Vector3d> gravity, double density, double max_torque,
-         std::optional<int> fixed, double scale, const std::string& drive) -> py::object {
+         const py::object& fixed, double scale, const std::string& drive, std::optional<double> ground, bool contacts,
+         double friction, std::optional<double> thickness, std::optional<std::map<int, double>> joint_torque,
+         std::optional<Eigen::VectorXd> start) -> py::object {
         const auto& sequence = sequence_object.cast<const geometry::FoldSequence&>();
         const std::string source = source_of(sequence_object);
         require_valid(p, sequence, source);
         for (const auto& [value, name] : {std::pair{time_step, "time_step"}, {closure_tolerance, "closure_tolerance"},
                                           {max_event_time, "max_event_time"}})
           if (value) require_positive(*value, name);
+        const PhysicsArgs physics{gravity, density, max_torque, scale, fixed, drive, ground, contacts, friction, thickness,
+                                  joint_torque, start};
         if (model == dynamics::kModelName)
-          return simulate_dynamic(p, sequence, source, {gravity, density, max_torque, scale, fixed, drive}, time_step,
-                                  closure_tolerance, max_event_time, record_frames);
+          return simulate_dynamic(p, sequence, source, physics, time_step, closure_tolerance, max_event_time, record_frames);
+        if (const std::string name = physics.given(); !name.empty())
+          throw py::value_error(name + "= belongs to model='dynamic', not to model='" + model + "'");
         simulation::SimulationOptions o;
         o.model = simulation::parse_actuation(model);
         o.time_step = time_step.value_or(o.time_step);
@@ -242,11 +300,15 @@ void bind_simulate(py::module_& m) {
       py::arg("max_event_time") = py::none(), py::arg("gravity") = py::none(),
       py::arg("density") = dynamics::DynamicOptions{}.density, py::arg("max_torque") = dynamics::DynamicOptions{}.max_torque,
       py::arg("fixed") = py::none(), py::arg("scale") = dynamics::DynamicOptions{}.scale,
-      py::arg("drive") = std::string(dynamics::to_string(dynamics::DynamicOptions{}.drive)),
+      py::arg("drive") = std::string(dynamics::to_string(dynamics::DynamicOptions{}.drive)), py::arg("ground") = py::none(),
+      py::arg("contacts") = dynamics::DynamicOptions{}.contacts, py::arg("friction") = dynamics::DynamicOptions{}.friction,
+      py::arg("thickness") = py::none(), py::arg("joint_torque") = py::none(), py::arg("start") = py::none(),
       "Replays `sequence` on `pattern` as `foldkit simulate`: model 'motor' (CMML speeds), 'spring', 'sync', or 'dynamic' "
-      "(a physics engine: returns a DynamicReport; gravity (x, y, z) m/s², density kg/m², max_torque N·m, fixed actor ID, "
-      "scale metres per pattern unit, drive 'motor' or 'spring'; docs/SIMULATION.md). time_step, closure_tolerance and "
-      "max_event_time default to the model's own (None). "
+      "(a physics engine: returns a DynamicReport; gravity (x, y, z) m/s², density kg/m², max_torque N·m, joint_torque "
+      "{joint ID: N·m}, fixed actor ID (None: the first; 'none': no actor held), scale metres per pattern unit, drive "
+      "'motor' or 'spring', ground z of a ground plane (m), contacts=True for facet–facet contacts, friction μ, "
+      "thickness m, start angles (radians) to start from; docs/SIMULATION.md; these are refused for the other models). "
+      "time_step, closure_tolerance and max_event_time default to the model's own (None). "
       "Returns a SimulationReport; with poses=True its `poses` holds each actor's 4×4 pose at every frame, shape "
       "(frames, actors, 4, 4). A sequence naming joints the pattern lacks raises ParseError at its line.");
 }

@@ -60,3 +60,53 @@ def test_kinematic_defaults_unchanged():
     seq = foldkit.sequence_to(p, np.array([0.5, -0.5]), speed=1.0)
     r = foldkit.simulate(p, seq)
     assert r.model == "motor" and r.time_step == 0.01
+
+
+def test_ground_contact_matches_cli_and_closed_form(cli, tmp_path):
+    # Panel 2 (0.5 m at scale 0.5) turned down 60° toward a ground 0.25 m below the held panel: its
+    # far edge lands where L sin φ + (t/2) cos φ = h (φ ≈ 30°) and the motor is blocked there.
+    p = foldkit.generators.strip(2)
+    seq = foldkit.sequence_to(p, np.array([math.radians(60)]), speed=math.radians(30))
+    pmml, cmml = tmp_path / "p.pmml", tmp_path / "s.cmml"
+    foldkit.write_pmml(str(pmml), p)
+    foldkit.write_cmml(str(cmml), seq)
+    L, h, t = 0.5, 0.25, 0.002
+    rc, expected, err = cli("simulate", pmml, cmml, "--model", "dynamic", "--scale", "0.5", "--ground", "-0.25",
+                            "--thickness", repr(t))
+    r = foldkit.simulate(p, foldkit.read_cmml(str(cmml)), model="dynamic", scale=0.5, ground=-h, thickness=t)
+    assert rc == 3 and r.status.code == expected["status"] == "collision"
+    assert r.steps == expected["steps"]
+    assert [s.blocked_by for s in r.stalls] == [[2]] == [s["blocked_by"] for s in expected["stalls"]]
+    assert len(r.contacts) == 1 and r.contacts[0].ground and r.contacts[0].actors == [2]
+    assert r.thickness == pytest.approx(t) and r.max_penetration == pytest.approx(expected["max_penetration"])
+    phi = math.asin(h / L)
+    for _ in range(50):
+        phi -= (L * math.sin(phi) + t / 2 * math.cos(phi) - h) / (L * math.cos(phi) - t / 2 * math.sin(phi))
+    assert r.final_state[0] == pytest.approx(phi, abs=0.1 * t / L)
+
+
+def test_joint_torque_start_and_free_sheet():
+    p = foldkit.generators.strip(2)
+    seq = foldkit.sequence_to(p, np.array([math.radians(-60)]), speed=math.radians(30))
+    # A per-joint limit below m·g·d stalls the joint the global limit would lift.
+    r = foldkit.simulate(p, seq, model="dynamic", gravity=(0, 0, -G), max_torque=2 * LIFT, joint_torque={1: 0.9 * LIFT})
+    assert r.status.code == "no-progress" and r.stalls[0].available_torque == pytest.approx(0.9 * LIFT)
+    # Started at the target already, the motor has nothing to do.
+    r = foldkit.simulate(p, seq, model="dynamic", start=np.array([math.radians(-60)]))
+    assert r.valid and r.joints[0].peak_torque < 1e-6
+    # No actor held and no gravity: the free sheet still folds (the motor turns both panels).
+    r = foldkit.simulate(p, seq, model="dynamic", fixed="none")
+    assert r.valid and r.final_state[0] == pytest.approx(math.radians(-60), abs=2e-4)
+    for kwargs in [{"fixed": "all"}, {"joint_torque": {7: 1.0}}, {"joint_torque": {1: -1.0}}, {"friction": -1.0},
+                   {"ground": float("nan")}, {"thickness": 0.0}, {"start": np.array([0.1, 0.2])}]:
+        with pytest.raises(ValueError):
+            foldkit.simulate(p, seq, model="dynamic", **kwargs)
+
+
+@pytest.mark.parametrize("kwargs", [{"gravity": (0, 0, -G)}, {"contacts": True}, {"ground": 0.0}, {"fixed": 1},
+                                    {"joint_torque": {1: 1.0}}, {"max_torque": 2.0}])
+def test_physics_options_are_refused_for_the_kinematic_models(kwargs):
+    p = foldkit.generators.strip(2)
+    seq = foldkit.sequence_to(p, np.array([0.5]), speed=1.0)
+    with pytest.raises(ValueError, match="model='dynamic'"):
+        foldkit.simulate(p, seq, **kwargs)
