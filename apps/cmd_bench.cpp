@@ -85,7 +85,11 @@ class Progress {
 int list(bool json) {
   nlohmann::json suites = nlohmann::json::array();
   for (const auto& s : bench::bench_suites())
-    suites.push_back({{"name", s.name}, {"description", s.description}, {"scenes", s.scenes}, {"planners", s.planners}});
+    suites.push_back({{"name", s.name},
+                      {"description", s.description},
+                      {"scenes", s.scenes},
+                      {"planners", s.planners},
+                      {"objective", s.objective.empty() ? planners::PlanOptions{}.objective : s.objective}});
   nlohmann::json sampling = planners::planner_names(), deterministic = bench::deterministic_planner_names();
   nlohmann::json objectives = nlohmann::json::array();
   for (const auto& o : planners::objective_table())
@@ -104,6 +108,7 @@ int list(bool json) {
     for (const auto& x : s.scenes) std::cerr << ' ' << x;
     std::cerr << "\n    planners:";
     for (const auto& x : s.planners) std::cerr << ' ' << x;
+    if (!s.objective.empty()) std::cerr << "\n    objective: " << s.objective;
     std::cerr << '\n';
   }
   std::cerr << "scenes (--scenes):";
@@ -123,7 +128,7 @@ struct BenchArgs {
   std::string suite, output, shard = "1/1", planners, scenes, error_vs_time, space = "auto",
                                                                              objective = bench::BenchOptions{}.objective;
   double cost_threshold = 0.0;
-  CLI::Option* cost_threshold_option = nullptr;
+  CLI::Option *cost_threshold_option = nullptr, *objective_option = nullptr;
   std::vector<std::string> params;
   double time = 1.0;
   unsigned int runs = 10, seed = 1;
@@ -131,7 +136,7 @@ struct BenchArgs {
 };
 
 void add_bench_options(CLI::App* app, const std::shared_ptr<BenchArgs>& opt) {
-  app->add_option("suite", opt->suite, "Suite: quick, full, spaces, vertex-complete or miura-scale (see --list)");
+  app->add_option("suite", opt->suite, "Suite: quick, full, spaces, vertex-complete, miura-scale or optimal (see --list)");
   positive(app->add_option("--time", opt->time, "Seconds per run"));
   positive(app->add_option("--runs", opt->runs, "Runs per planner and scene (per time limit with --error-vs-time)"));
   app->add_option("--shard", opt->shard, "Run shard K of N of the (scene, planner, run) list")->capture_default_str();
@@ -151,10 +156,9 @@ void add_bench_options(CLI::App* app, const std::shared_ptr<BenchArgs>& opt) {
       })
       ->capture_default_str();
   app->add_option("--param", opt->params, "NAME=VALUE: a sampling planner's parameter by OMPL's name (repeatable)");
-  app->add_option("--objective", opt->objective,
+  opt->objective_option = app->add_option("--objective", opt->objective,
                   "What the sampling planners optimise, as foldkit plan --objective (length, rotation, clearance, "
-                  "NAME:WEIGHT,…)")
-      ->capture_default_str();
+                  "NAME:WEIGHT,…); default: the suite's (optimal: rotation; the others: length)");
   opt->cost_threshold_option = app->add_option(
       "--cost-threshold", opt->cost_threshold, "An optimising planner stops once its path costs less than this (clearance: more)");
   app->add_option("--error-vs-time", opt->error_vs_time,
@@ -185,7 +189,7 @@ Command add_bench(CLI::App& root) {
             o.space = opt->space;
             for (const auto& p : opt->params) o.params.push_back(planners::parse_planner_param(p));
             try {  // usage errors, before any scene is built
-              planners::parse_objective(opt->objective);
+              if (opt->objective_option->count() > 0) planners::parse_objective(opt->objective);
             } catch (const std::invalid_argument& e) {
               throw UsageError(std::string("--objective: ") + e.what());
             }

@@ -29,11 +29,12 @@ std::vector<std::pair<int, double>> parse_goal_angles(const geometry::CreasePatt
 struct PlanArgs {  // defaults: PlanOptions's
   std::string pattern, goal, goal_angles, start, space = planners::to_string(planners::PlanOptions{}.space),
                                                  planner = planners::PlanOptions{}.planner, output,
-                                                 objective = planners::PlanOptions{}.objective, experience;
+                                                 objective = planners::PlanOptions{}.objective, experience,
+                                                 experience_framework = planners::PlanOptions::Experience{}.framework;
   std::vector<std::string> params;
   double time = planners::PlanOptions{}.time, search_margin = planners::PlanOptions{}.search_margin;
   double cost_threshold = std::numeric_limits<double>::quiet_NaN();  // NaN: none (PlanOptions::cost_threshold empty)
-  CLI::Option* cost_threshold_option = nullptr;
+  CLI::Option *cost_threshold_option = nullptr, *framework_option = nullptr;
   unsigned int seed = planners::PlanOptions{}.seed;
   bool no_collision = false, free_signs = false, no_fallback = false, json = false;
 };
@@ -73,8 +74,12 @@ void add_plan_options(CLI::App* app, PlanArgs& opt) {
                 "No way through flat when the planner finds none in a quarter of --time: no spherical Carpenter path "
                 "(single vertex), no start -> flat -> goal plan (driving space, folded --start)");
   writes(app->add_option("--experience", opt.experience,
-                         "Experience database (made when missing): recall and repair the stored path nearest to this "
-                         "query, plan from scratch when that fails, then store this plan's path in it"));
+                         "Experience database (made when missing): recall a path from it (--experience-framework), plan "
+                         "from scratch when that fails, then store this plan's path in it"));
+  opt.framework_option = app->add_option("--experience-framework", opt.experience_framework,
+                                         "How --experience recalls: lightning (the stored path nearest to this query, repaired) or "
+                                         "thunder (a path through a sparse roadmap of the stored paths); both use the same file")
+                             ->capture_default_str();
   writes(app->add_option("-o,--output", opt.output, "Output CMML"))->required();
   add_json(app, opt.json);
 }
@@ -136,7 +141,8 @@ void set_start_and_settings(const PlanArgs& opt, const geometry::CreasePattern& 
   options.objective = opt.objective;
   if (opt.cost_threshold_option->count() > 0) options.cost_threshold = opt.cost_threshold;
   if (!opt.experience.empty())  // a missing file is a new database
-    options.experience = planners::PlanOptions::Experience{opt.experience, io::read_file_if_present(opt.experience).value_or("")};
+    options.experience = planners::PlanOptions::Experience{opt.experience, io::read_file_if_present(opt.experience).value_or(""),
+                                                           opt.experience_framework};
 }
 
 int report(const PlanArgs& opt, const planners::PlanResult& r) {
@@ -153,8 +159,8 @@ int report(const PlanArgs& opt, const planners::PlanResult& r) {
   }
   if (r.experience && !r.experience->bytes.empty()) {
     io::write_file_atomic(opt.experience, r.experience->bytes);
-    std::cerr << opt.experience << ": " << r.experience->paths << " paths (" << (r.experience->recalled ? "recalled and repaired" : "planned from scratch")
-              << ")\n";
+    std::cerr << opt.experience << ": " << r.experience->paths << " paths (" << r.experience->framework << ", "
+              << (r.experience->recalled ? "recalled" : "planned from scratch") << ")\n";
   }
   if (opt.json) {
     nlohmann::json j{{"solved", r.status.ok()},  // deprecated: status
@@ -172,9 +178,15 @@ int report(const PlanArgs& opt, const planners::PlanResult& r) {
                      {"max_closure_error", r.max_closure_error},
                      {"waypoints", r.waypoints.size()}};
     if (r.experience)
-      j["experience"] = {{"database", opt.experience},       {"recalled", r.experience->recalled},
-                         {"recall_seconds", r.experience->recall_seconds}, {"loaded", r.experience->loaded},
-                         {"paths", r.experience->paths},     {"bytes", r.experience->bytes.size()}};
+      j["experience"] = {{"database", opt.experience},
+                         {"framework", r.experience->framework},
+                         {"recalled", r.experience->recalled},
+                         {"recall_seconds", r.experience->recall_seconds},
+                         {"load_seconds", r.experience->load_seconds},
+                         {"loaded", r.experience->loaded},
+                         {"paths", r.experience->paths},
+                         {"states", r.experience->states},
+                         {"bytes", r.experience->bytes.size()}};
     add_status(j, r.status);
     print_json(j);
   }
@@ -201,6 +213,13 @@ int run_plan(PlanArgs& opt) {
     if (!opt.experience.empty() && (!objective.is_default() || opt.cost_threshold_option->count() > 0))
       throw std::invalid_argument("--experience recalls by path length only: not with --objective " + objective.name() +
                                   (opt.cost_threshold_option->count() > 0 ? " or --cost-threshold" : ""));
+    try {
+      planners::parse_experience_framework(opt.experience_framework);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--experience-framework: ") + e.what());
+    }
+    if (opt.experience.empty() && opt.framework_option->count() > 0)
+      throw std::invalid_argument("--experience-framework needs --experience DB");
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }

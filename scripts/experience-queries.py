@@ -4,11 +4,14 @@
 Draws goals on the Resch tessellation the bench uses (bench/data/robbykraft_resch-tess.fold) as
 the `resch` scene does: the assignment's signs, each crease scaled by its own draw from
 [0.2, 0.6] rad, projected onto the closure manifold keeping signs. Then, for each goal in turn,
-plans from flat twice through the CLI: cold (`foldkit plan`, RRTConnect) and with
-`--experience DB`, the database growing over the queries. Prints one line per query and the
-medians of the first and the second half (docs/PLANNING.md, "Planning from experience").
+plans from flat through the CLI: cold (`foldkit plan`, RRTConnect) and, for each framework of
+--frameworks, with `--experience DB --experience-framework F` (one database per framework,
+growing over the queries). Prints one line per query; then per half (the first and the second
+--goals/2) the solved count and median time of each, the recalls, and each database's final size,
+states and load time (docs/PLANNING.md, "Planning from experience").
 
-Usage: PYTHONPATH=build/python python3 scripts/experience-queries.py build/apps/foldkit OUTDIR [--goals 40] [--time 10]
+Usage: PYTHONPATH=build/python python3 scripts/experience-queries.py build/apps/foldkit OUTDIR
+           [--goals 40] [--time 10] [--frameworks lightning,thunder]
 """
 import argparse
 import json
@@ -49,33 +52,47 @@ def main():
     ap.add_argument("--goals", type=int, default=40)
     ap.add_argument("--time", type=float, default=10.0)
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--frameworks", default="lightning", help="comma-separated: lightning, thunder")
     a = ap.parse_args()
+    frameworks = a.frameworks.split(",")
+    for f in frameworks:
+        if f not in ("lightning", "thunder"):
+            ap.error(f"--frameworks: unknown framework '{f}' (known: lightning, thunder)")
     os.makedirs(a.out, exist_ok=True)
-    pmml, db = os.path.join(a.out, "resch.pmml"), os.path.join(a.out, "resch.db")
+    pmml = os.path.join(a.out, "resch.pmml")
     foldkit.write_pmml(pmml, foldkit.load_pattern(os.path.join(REPO, "bench/data/robbykraft_resch-tess.fold")))
     pattern = foldkit.read_pmml(pmml)
-    if os.path.exists(db):
-        os.remove(db)
-    rows = []
+    dbs = {f: os.path.join(a.out, f"resch.{f}.db") for f in frameworks}
+    for db in dbs.values():
+        if os.path.exists(db):
+            os.remove(db)
+    rows = []  # per query: {"cold": (rc, seconds), framework: (rc, seconds, experience dict)}
     for i, g in enumerate(goals_for(pattern, a.goals, a.seed)):
         goal = os.path.join(a.out, f"goal{i}.cmml")
         foldkit.write_cmml(goal, foldkit.sequence_to(pattern, g, 1.0))
         plan_out = os.path.join(a.out, "plan.cmml")
-        rc_cold, cold = plan(a.cli, pmml, goal, plan_out, i + 1, a.time, [])
-        rc_exp, exp = plan(a.cli, pmml, goal, plan_out, i + 1, a.time, ["--experience", db])
-        e = exp.get("experience", {})
-        rows.append((rc_cold, cold.get("seconds"), rc_exp, exp.get("seconds"), bool(e.get("recalled"))))
-        print(f"query {i}: cold exit {rc_cold} {cold.get('seconds')} s; experience exit {rc_exp} {exp.get('seconds')} s, "
-              f"recalled {e.get('recalled')}, recall {e.get('recall_seconds')} s, {e.get('paths')} paths, {e.get('bytes')} bytes",
-              flush=True)
+        rc, cold = plan(a.cli, pmml, goal, plan_out, i + 1, a.time, [])
+        row = {"cold": (rc, cold.get("seconds"), {})}
+        line = f"query {i}: cold exit {rc} {cold.get('seconds')} s"
+        for f in frameworks:
+            rc, exp = plan(a.cli, pmml, goal, plan_out, i + 1, a.time, ["--experience", dbs[f], "--experience-framework", f])
+            e = exp.get("experience", {})
+            row[f] = (rc, exp.get("seconds"), e)
+            line += (f"; {f} exit {rc} {exp.get('seconds')} s, recalled {e.get('recalled')}, recall {e.get('recall_seconds')} s, "
+                     f"load {e.get('load_seconds')} s, {e.get('paths')} paths, {e.get('states')} states, {e.get('bytes')} bytes")
+        rows.append(row)
+        print(line, flush=True)
     half = len(rows) // 2
     for name, part in (("first half", rows[:half]), ("second half", rows[half:])):
-        cold = [r[1] for r in part if r[0] == 0]
-        exp = [r[3] for r in part if r[2] == 0]
-        print(f"{name}: cold solved {len(cold)}/{len(part)}, median {statistics.median(cold) if cold else float('nan'):.4f} s; "
-              f"experience solved {len(exp)}/{len(part)}, median {statistics.median(exp) if exp else float('nan'):.4f} s, "
-              f"recalled {sum(r[4] for r in part)}")
-    print(f"database: {os.path.getsize(db)} bytes")
+        for key in ["cold"] + frameworks:
+            times = [r[key][1] for r in part if r[key][0] == 0]
+            recalled = sum(bool(r[key][2].get("recalled")) for r in part)
+            print(f"{name}: {key} solved {len(times)}/{len(part)}, median {statistics.median(times) if times else float('nan'):.4f} s"
+                  + ("" if key == "cold" else f", recalled {recalled}"))
+    for f in frameworks:
+        last = rows[-1][f][2] if rows else {}
+        print(f"database {f}: {os.path.getsize(dbs[f]) if os.path.exists(dbs[f]) else 0} bytes, {last.get('paths')} paths, "
+              f"{last.get('states')} states; the last query loaded it ({last.get('loaded')} paths) in {last.get('load_seconds')} s")
 
 
 if __name__ == "__main__":

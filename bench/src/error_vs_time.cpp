@@ -44,7 +44,7 @@ std::vector<ErrorVsTimeRow> run_error_vs_time(const BenchOptions& o, const std::
           og::SimpleSetup ss(setup.si);
           set_start_and_goal(setup, ss, scene.goal);
           ss.setPlanner(entry_planner(name, scene, setup, o.params, limit));
-          if (auto objective = entry_objective(name, setup, o)) ss.setOptimizationObjective(objective);
+          if (auto objective = entry_objective(name, setup, res.objective, o.cost_threshold)) ss.setOptimizationObjective(objective);
           ss.setup();
           const auto t1 = std::chrono::steady_clock::now();
           run_planner(setup, ss, limit, o.cost_threshold.has_value());

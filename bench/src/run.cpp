@@ -103,7 +103,8 @@ const std::vector<std::string>& our_run_properties() {
   static const std::vector<std::string> p = {
       "run index INTEGER",         "final closure error REAL", "max closure error REAL", "min clearance REAL",
       "replay collisions INTEGER", "replay valid BOOLEAN",     "joint path length REAL", "cmml events INTEGER",
-      "goal distance REAL",        "path jumps BOOLEAN",       "joint rotation REAL",    "objective cost REAL"};
+      "goal distance REAL",        "path jumps BOOLEAN",       "joint rotation REAL",    "objective cost REAL",
+      "solution cost REAL"};
   return p;
 }
 
@@ -155,8 +156,15 @@ using namespace run_detail;  // NOLINT: the scenes, planners and helpers every r
 // Our per-run properties, added to the run's row after each run (OMPL's post-run event).
 void add_path_properties(const PlanSetup& setup, const BenchScene& scene, const planners::Objective& objective,
                          const ob::PlannerPtr& planner, ompl::tools::Benchmark::RunProperties& run) {
-  const auto states = solution_states(setup, scene, planner->getProblemDefinition());
-  if (planner->getProblemDefinition()->hasSolution()) run["path jumps BOOLEAN"] = states ? "0" : "1";
+  const ob::ProblemDefinitionPtr& pdef = planner->getProblemDefinition();
+  const auto states = solution_states(setup, scene, pdef);
+  if (pdef->hasSolution()) run["path jumps BOOLEAN"] = states ? "0" : "1";
+  // The solution's cost as the planner counts it (the objective on its own states, as its "best
+  // cost" progress property): the last point of the run's cost against time, and the only one
+  // for a planner that reports no best cost while it runs (FMT). Exact solutions only: an
+  // approximate one (AIT* keeps the state nearest the goal) costs next to nothing.
+  if (pdef->hasExactSolution() && pdef->hasOptimizationObjective())
+    run["solution cost REAL"] = num(pdef->getSolutionPath()->cost(pdef->getOptimizationObjective()).value());
   if (!states) return;
   const PathMetrics m = measure_path(scene, *states);
   run["final closure error REAL"] = num(m.final_closure_error);
@@ -180,7 +188,7 @@ class SceneRun {
   SceneRun(const BenchOptions& o, const Resolved& res, const std::vector<BenchWorkItem>& work, std::size_t si,
            std::chrono::steady_clock::time_point t0, std::size_t& done)
       : o_(o), res_(res), work_(work), t0_(t0), done_(done), runs_of_(res.planners.size()),
-        objective_(planners::parse_objective(o.objective)) {
+        objective_(res.objective) {
     result_.scene = res.scenes[si];
     for (const auto& w : work)
       if (w.scene == si) runs_of_[w.planner].push_back(w.run);
@@ -221,7 +229,7 @@ class SceneRun {
     // group draws informed samples, the whole group gets its objective (PRM and LazyPRM then run
     // their whole time, as PRM* does; docs/PLANNING.md, "Planners").
     for (std::size_t pi : members)
-      if (auto objective = entry_objective(res_.planners[pi], setup, o_)) {
+      if (auto objective = entry_objective(res_.planners[pi], setup, objective_, o_.cost_threshold)) {
         ss.setOptimizationObjective(objective);
         break;
       }

@@ -53,13 +53,13 @@ ob::PlannerPtr entry_planner(const std::string& entry, const BenchScene& scene, 
 }
 
 // The objective an entry's planner gets on its problem (run_scenes.hpp); "X+Carpenter" is X's.
-ob::OptimizationObjectivePtr entry_objective(const std::string& entry, const PlanSetup& setup, const BenchOptions& o) {
+ob::OptimizationObjectivePtr entry_objective(const std::string& entry, const PlanSetup& setup,
+                                             const planners::Objective& objective, std::optional<double> threshold) {
   std::string name = planner_and_space(entry).first;
   if (const std::string inner = fallback_inner(name); !inner.empty()) name = inner;
   if (is_deterministic_planner(name)) return nullptr;
-  const planners::Objective objective = planners::parse_objective(o.objective);
-  if (objective.is_default() && !o.cost_threshold) return planners::informed_objective(name, setup.si);
-  return planners::make_objective(objective, setup, o.cost_threshold);
+  if (objective.is_default() && !threshold) return planners::informed_objective(name, setup.si, planners::sampling_stop(setup));
+  return planners::make_objective(objective, setup, threshold);
 }
 
 namespace {
@@ -114,7 +114,9 @@ Resolved resolve(const BenchOptions& o) {
   }
   if (!(o.time > 0.0) || !std::isfinite(o.time)) throw std::invalid_argument("the time per run must be positive");
   if (o.runs == 0) throw std::invalid_argument("at least one run per planner");
-  const planners::Objective objective = planners::parse_objective(o.objective);
+  r.objective = planners::parse_objective(
+      !o.objective.empty() ? o.objective : !r.suite->objective.empty() ? r.suite->objective : planners::PlanOptions{}.objective);
+  const planners::Objective& objective = r.objective;
   if (o.cost_threshold) planners::check_cost_threshold(*o.cost_threshold, "bench");
   for (const auto& entry : r.planners) {  // before anything is written
     const std::string p = planner_and_space(entry).first;

@@ -14,6 +14,7 @@
 
 #include "foldkit/bench/run.hpp"
 #include "foldkit/bench/scenes.hpp"
+#include "foldkit/planners/objectives.hpp"
 #include "foldkit/planners/plan_setup.hpp"
 
 namespace foldkit::bench::run_detail {
@@ -28,20 +29,22 @@ ompl::base::PlannerPtr entry_planner(const std::string& entry, const BenchScene&
                                      const std::vector<std::pair<std::string, std::string>>& params, double time);
 // The objective an entry's planner gets on its problem: for the default objective (length, no
 // threshold) planners::informed_objective of the planner (X's for "X+Carpenter"), null for the
-// rest; any other objective of the options for every sampling planner; null for the
-// deterministic planners.
+// rest; any other objective (the run's, Resolved::objective) for every sampling planner; null
+// for the deterministic planners.
 ompl::base::OptimizationObjectivePtr entry_objective(const std::string& entry, const planners::PlanSetup& setup,
-                                                     const BenchOptions& o);
+                                                     const planners::Objective& objective, std::optional<double> threshold);
 
 // The fold states of the problem definition's best solution, from the scene's start.
 std::optional<std::vector<geometry::FoldState>> solution_states(const planners::PlanSetup& setup, const BenchScene& scene,
                                                                 const ompl::base::ProblemDefinitionPtr& pdef);
 
-// The suite of the options, its scenes and planner entries (checked: names, spaces, parameters,
+// The suite of the options, its scenes and planner entries, and the run's objective: the
+// options', else the suite's, else the default (checked: names, spaces, parameters, objective,
 // time, runs, shard).
 struct Resolved {
   const BenchSuite* suite = nullptr;
   std::vector<std::string> scenes, planners;
+  planners::Objective objective;
 };
 Resolved resolve(const BenchOptions& o);
 

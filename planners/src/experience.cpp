@@ -1,6 +1,7 @@
 #include "foldkit/planners/experience.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -11,8 +12,13 @@
 #include <boost/crc.hpp>
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/base/PlannerData.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/goals/GoalState.h>
 #include <ompl/geometric/planners/experience/LightningRetrieveRepair.h>
+#include <ompl/geometric/planners/experience/ThunderRetrieveRepair.h>
 #include <ompl/tools/lightning/LightningDB.h>
+#include <ompl/tools/thunder/SPARSdb.h>
+#include <ompl/tools/thunder/ThunderDB.h>
 
 namespace foldkit::planners {
 
@@ -85,7 +91,51 @@ std::string read_header(std::istream& in, Header& h) {
   return {};
 }
 
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+// SPARSdb's search asks its problem's goal whether a roadmap vertex near the query's start and one
+// near its goal may pair (Goal::isStartGoalPairValid) and dereferences the goal unchecked; the
+// roadmap serves every query, so any pair may.
+class AnyPair : public ob::Goal {
+ public:
+  using ob::Goal::Goal;
+  bool isSatisfied(const ob::State*) const override { return false; }
+};
+
+// A ThunderDB with its SPARSdb roadmap on `si` (its validity checker and motion validator), set
+// up as ompl::tools::Thunder::setup() does: stretch factor 1.2, visibility range 0.05 of the
+// space's maximum extent. SPARSdb is a planner and wants a problem definition: one whose goal
+// pairs anything serves, as the roadmap is only built (addPathToRoadmap) and searched between
+// the query's ends (getSimilarPaths).
+std::shared_ptr<ompl::tools::ThunderDB> make_thunder(const ob::SpaceInformationPtr& si) {
+  auto db = std::make_shared<ompl::tools::ThunderDB>(si->getStateSpace());
+  auto spars = std::make_shared<og::SPARSdb>(si);
+  auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+  pdef->setGoal(std::make_shared<AnyPair>(si));
+  spars->setProblemDefinition(pdef);
+  spars->setup();
+  spars->setStretchFactor(1.2);
+  spars->setSparseDeltaFraction(0.05);
+  db->setSPARSdb(spars);
+  return db;
+}
+
 }  // namespace
+
+std::vector<std::string> experience_framework_names() { return {"lightning", "thunder"}; }
+
+ExperienceFramework parse_experience_framework(const std::string& name) {
+  if (lower(name) == "lightning") return ExperienceFramework::Lightning;
+  if (lower(name) == "thunder") return ExperienceFramework::Thunder;
+  throw std::invalid_argument("unknown experience framework '" + name + "' (known: lightning, thunder)");
+}
+
+std::string to_string(ExperienceFramework framework) {
+  return framework == ExperienceFramework::Thunder ? "thunder" : "lightning";
+}
 
 std::uint64_t pattern_fingerprint(const geometry::CreasePattern& pattern) {
   Fnv f;
@@ -106,9 +156,14 @@ std::uint64_t pattern_fingerprint(const geometry::CreasePattern& pattern) {
   return f.h;
 }
 
-ExperienceDatabase::ExperienceDatabase(const ob::SpaceInformationPtr& si, std::string space_name, std::uint64_t fingerprint)
-    : si_(si), space_name_(std::move(space_name)), fingerprint_(fingerprint),
-      db_(std::make_shared<Database>(si->getStateSpace())) {}
+ExperienceDatabase::ExperienceDatabase(const ob::SpaceInformationPtr& si, std::string space_name, std::uint64_t fingerprint,
+                                       ExperienceFramework framework)
+    : si_(si), space_name_(std::move(space_name)), fingerprint_(fingerprint), framework_(framework) {
+  if (framework_ == ExperienceFramework::Thunder)
+    thunder_ = make_thunder(si);
+  else
+    lightning_ = std::make_shared<Database>(si->getStateSpace());
+}
 
 ExperienceDatabase::~ExperienceDatabase() = default;
 
@@ -174,21 +229,19 @@ og::PathGeometric ExperienceDatabase::read_path(const char* data, std::size_t co
 // than OMPL's PlannerDataStorage, which trusts its Boost archive (a hand-made file could make it
 // read past a state's buffer) and logs rather than reports what it cannot read.
 std::string ExperienceDatabase::bytes() const {
-  std::vector<ob::PlannerDataPtr> all;
-  db_->getAllPlannerDatas(all);
   const ob::StateSpacePtr& space = si_->getStateSpace();
   std::string body, state(space->getSerializationLength(), '\0');
-  for (const auto& data : all) {
-    const std::uint64_t count = data->numVertices();
+  for (const auto& path : paths_) {
+    const std::uint64_t count = path.getStateCount();
     body.append(reinterpret_cast<const char*>(&count), sizeof count);
-    for (unsigned int v = 0; v < data->numVertices(); ++v) {
-      space->serialize(state.data(), data->getVertex(v).getState());
+    for (unsigned int v = 0; v < path.getStateCount(); ++v) {
+      space->serialize(state.data(), path.getState(v));
       body += state;
     }
   }
   std::ostringstream out;
   out << kMagic << ' ' << kVersion << "\nspace " << space_name_ << "\nstate-bytes " << si_->getStateSpace()->getSerializationLength() << "\npattern " << std::hex
-      << fingerprint_ << std::dec << "\npaths " << all.size() << "\nbytes " << body.size() << "\ncrc " << std::hex << crc32(body)
+      << fingerprint_ << std::dec << "\npaths " << paths_.size() << "\nbytes " << body.size() << "\ncrc " << std::hex << crc32(body)
       << std::dec << '\n'
       << body;
   return out.str();
@@ -196,28 +249,56 @@ std::string ExperienceDatabase::bytes() const {
 
 void ExperienceDatabase::add(const og::PathGeometric& path) {
   if (path.getStateCount() < 2) return;
-  og::PathGeometric copy(path);
+  paths_.push_back(path);
+  og::PathGeometric copy(path);  // both databases may change it (Thunder interpolates it)
   double seconds = 0.0;
-  db_->addPath(copy, seconds);
+  if (thunder_)
+    thunder_->addPath(copy, seconds);
+  else
+    lightning_->addPath(copy, seconds);
 }
 
-std::size_t ExperienceDatabase::paths() const { return db_->getExperiencesCount(); }
+std::size_t ExperienceDatabase::paths() const { return paths_.size(); }
 
-std::size_t ExperienceDatabase::states() const { return db_->getStatesCount(); }
+std::size_t ExperienceDatabase::states() const {
+  return thunder_ ? thunder_->getSPARSdb()->getNumVertices() : lightning_->getStatesCount();
+}
+
+ob::PlannerPtr ExperienceDatabase::recall_planner(const ob::SpaceInformationPtr& si, const ob::PlannerPtr& repair) const {
+  if (thunder_) {
+    auto recall = std::make_shared<og::ThunderRetrieveRepair>(si, thunder_);
+    recall->setRepairPlanner(repair);
+    return recall;
+  }
+  auto recall = std::make_shared<og::LightningRetrieveRepair>(si, lightning_);
+  recall->setRepairPlanner(repair);
+  return recall;
+}
 
 ExperiencePlanner::ExperiencePlanner(const ob::SpaceInformationPtr& si, const ExperienceDatabase* db, ob::PlannerPtr scratch,
                                      ob::PlannerPtr repair, double recall_time)
-    : ob::Planner(si, scratch ? scratch->getName() + "+Lightning" : std::string("Lightning")), db_(db), scratch_(std::move(scratch)),
-      recall_time_(recall_time) {
+    : ob::Planner(si, "experience"), db_(db), scratch_(std::move(scratch)), recall_time_(recall_time) {
   if (!db_ || !scratch_ || !repair) throw std::invalid_argument("ExperiencePlanner: the database and both planners are required");
   if (!(recall_time_ > 0.0)) throw std::invalid_argument("ExperiencePlanner: the recall time must be positive");
-  auto recall = std::make_shared<og::LightningRetrieveRepair>(si, db_->lightning());
-  recall->setRepairPlanner(repair);
-  recall_ = recall;
+  setName(scratch_->getName() + (db_->framework() == ExperienceFramework::Thunder ? "+Thunder" : "+Lightning"));
+  recall_ = db_->recall_planner(si, repair);
   specs_ = scratch_->getSpecs();
   // The scratch planner's progress ("best cost", …) as this planner's, for what reads it: the
   // Carpenter fallback's share, bench logs, plan's cost history.
   for (const auto& [name, property] : scratch_->getPlannerProgressProperties()) addPlannerProgressProperty(name, property);
+}
+
+// OMPL 1.5.2's ThunderRetrieveRepair takes the query's ends from PlannerInputStates without
+// looking: an end outside the space's bounds or invalid comes back null, and SPARSdb cloned it (a
+// crash on a Resch goal outside the driving space's bounds). No recall can join such an end, so
+// none is tried (the scratch planner reports it as before).
+bool ExperiencePlanner::ends_valid() const {
+  const auto ok = [this](const ob::State* s) { return si_->satisfiesBounds(s) && si_->isValid(s); };
+  if (pdef_->getStartStateCount() == 0) return false;
+  for (unsigned int i = 0; i < pdef_->getStartStateCount(); ++i)
+    if (!ok(pdef_->getStartState(i))) return false;
+  const auto* goal = dynamic_cast<const ob::GoalState*>(pdef_->getGoal().get());
+  return goal == nullptr || ok(goal->getState());
 }
 
 void ExperiencePlanner::setup() {
@@ -239,7 +320,7 @@ void ExperiencePlanner::clear() {
 ob::PlannerStatus ExperiencePlanner::solve(const ob::PlannerTerminationCondition& ptc) {
   recalled_ = false;
   recall_seconds_ = 0.0;
-  if (db_->paths() > 0) {
+  if (db_->paths() > 0 && ends_valid()) {
     const auto t0 = std::chrono::steady_clock::now();
     const ob::PlannerStatus status =
         recall_->solve(ob::plannerOrTerminationCondition(ptc, ob::timedPlannerTerminationCondition(recall_time_)));

@@ -5,13 +5,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/base/objectives/MaximizeMinClearanceObjective.h>
-#include <ompl/base/samplers/informed/RejectionInfSampler.h>
 
 #include "foldkit/planners/plan_setup.hpp"
 #include "foldkit/planners/planner_factory.hpp"
@@ -102,8 +102,8 @@ const Entry& entry(const std::string& name) {
 class WeightedSum : public ob::OptimizationObjective {
  public:
   WeightedSum(const ob::SpaceInformationPtr& si, const statespaces::StateReader& reader,
-              std::vector<std::pair<const Entry*, double>> terms, std::string name)
-      : ob::OptimizationObjective(si), context_{si, &reader}, terms_(std::move(terms)) {
+              std::vector<std::pair<const Entry*, double>> terms, std::string name, std::function<bool()> stop)
+      : ob::OptimizationObjective(si), context_{si, &reader}, terms_(std::move(terms)), stop_(std::move(stop)) {
     description_ = std::move(name);
     setCostToGoHeuristic([this](const ob::State* s, const ob::Goal* goal) {
       const auto* g = dynamic_cast<const ob::GoalState*>(goal);
@@ -118,12 +118,13 @@ class WeightedSum : public ob::OptimizationObjective {
   }
   ob::Cost motionCostHeuristic(const ob::State* a, const ob::State* b) const override { return motionCost(a, b); }
   ob::InformedSamplerPtr allocInformedStateSampler(const ob::ProblemDefinitionPtr& pdef, unsigned int calls) const override {
-    return std::make_shared<ob::RejectionInfSampler>(pdef, calls);
+    return detail::rejection_sampler(pdef, calls, stop_);  // bounded draws: path_length.hpp
   }
 
  private:
   MotionContext context_;
   std::vector<std::pair<const Entry*, double>> terms_;
+  std::function<bool()> stop_;
 };
 
 // OMPL's MaximizeMinClearanceObjective with the simulator's clearance: a state's cost is the
@@ -184,6 +185,11 @@ ObjectiveTerm parse_term(const std::string& item, const std::string& text) {
 }
 
 }  // namespace
+
+std::function<bool()> sampling_stop(const PlanSetup& setup) {
+  std::shared_ptr<const statespaces::FoldValidity> validity = setup.validity;
+  return [validity] { return validity && validity->expired(); };
+}
 
 std::string Objective::name() const {
   if (terms.size() == 1 && terms[0].weight == 1.0) return terms[0].name;
@@ -251,13 +257,13 @@ double path_cost(const Objective& objective, const geometry::CreasePattern& patt
 ob::OptimizationObjectivePtr make_objective(const Objective& objective, const PlanSetup& setup, std::optional<double> threshold) {
   ob::OptimizationObjectivePtr out;
   if (objective.is_default()) {
-    out = std::make_shared<detail::PathLength>(setup.si);
+    out = std::make_shared<detail::PathLength>(setup.si, sampling_stop(setup));
   } else if (!entry(objective.terms[0].name).motion) {
     out = std::make_shared<Clearance>(setup.si, setup);
   } else {
     std::vector<std::pair<const Entry*, double>> terms;
     for (const auto& t : objective.terms) terms.emplace_back(&entry(t.name), t.weight);
-    out = std::make_shared<WeightedSum>(setup.si, setup.reader, std::move(terms), objective.name());
+    out = std::make_shared<WeightedSum>(setup.si, setup.reader, std::move(terms), objective.name(), sampling_stop(setup));
   }
   // No threshold: none is ever satisfied (OMPL's path length has 0, which no path beats; the
   // clearance objective +∞), so optimising planners improve until their time runs out.
@@ -276,7 +282,7 @@ void check_cost_threshold(double threshold, const std::string& what) {
 ob::OptimizationObjectivePtr plan_objective(const PlanSetup& setup, const PlanOptions& options) {
   const Objective objective = parse_objective(options.objective);
   if (options.cost_threshold) check_cost_threshold(*options.cost_threshold, "plan");
-  if (objective.is_default() && !options.cost_threshold) return informed_objective(options.planner, setup.si);
+  if (objective.is_default() && !options.cost_threshold) return informed_objective(options.planner, setup.si, sampling_stop(setup));
   return make_objective(objective, setup, options.cost_threshold);
 }
 

@@ -222,6 +222,7 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
   if (!(options.time > 0.0) || !std::isfinite(options.time)) throw std::invalid_argument("plan: the time limit must be positive");
   if (options.cost_threshold) check_cost_threshold(*options.cost_threshold, "plan");
   parse_objective(options.objective);  // before any work: an unknown objective is the caller's error
+  if (options.experience) parse_experience_framework(options.experience->framework);
   if (options.quiet) ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
   ompl::RNG::setSeed(std::max(1u, options.seed));
 
@@ -235,10 +236,15 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
     throw std::invalid_argument(
         "plan: experience recalls by path length only: no other objective, no cost threshold (docs/PLANNING.md)");
   if (options.experience) {
-    db = std::make_unique<ExperienceDatabase>(setup.si, result.space, pattern_fingerprint(pattern));
+    const ExperienceFramework framework = parse_experience_framework(options.experience->framework);
+    db = std::make_unique<ExperienceDatabase>(setup.si, result.space, pattern_fingerprint(pattern), framework);
+    const auto t0 = std::chrono::steady_clock::now();
     db->read(options.experience->bytes, options.experience->name);
     result.experience = ExperienceOutcome{};
+    result.experience->framework = to_string(framework);
+    result.experience->load_seconds = elapsed(t0);
     result.experience->loaded = result.experience->paths = db->paths();
+    result.experience->states = db->states();
   }
   if (!setup.blocked.empty()) {
     result.status = {geometry::StatusCode::Collision, setup.blocked};
@@ -287,6 +293,7 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
   if (db && result.status) {
     if (!result.fallback) db->add(*path);
     result.experience->paths = db->paths();
+    result.experience->states = db->states();
     result.experience->bytes = db->bytes();
   }
   return result;

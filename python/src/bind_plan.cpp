@@ -68,14 +68,18 @@ void bind_result(py::module_& m) {
           [](const PlanResult& r) -> py::object {
             if (!r.experience) return py::none();
             py::dict d;
+            d["framework"] = r.experience->framework;
             d["recalled"] = r.experience->recalled;
             d["recall_seconds"] = r.experience->recall_seconds;
+            d["load_seconds"] = r.experience->load_seconds;
             d["loaded"] = r.experience->loaded;
+            d["states"] = r.experience->states;
             d["paths"] = r.experience->paths;
             d["bytes"] = r.experience->bytes.size();
             return d;
           },
-          "With `experience`: a dict as the CLI's JSON `experience` (recalled, recall_seconds, loaded, paths, bytes); else None.")
+          "With `experience`: a dict as the CLI's JSON `experience` (framework, recalled, recall_seconds, load_seconds, loaded, "
+          "paths, states, bytes); else None.")
       .def("__repr__", [](const PlanResult& r) {
         return "PlanResult(" + std::string(geometry::to_string(r.status.code)) + ", " + r.planner + " in " + r.space + ", " +
                std::to_string(r.waypoints.size()) + " waypoints)";
@@ -98,9 +102,11 @@ geometry::FoldState goal_of(const geometry::CreasePattern& p, const py::object& 
 // plan() with `experience`, a database file, read and written back as the CLI's --experience:
 // only a missing file is a new database; atomically, after a plan that checks out.
 planners::PlanResult plan_with_experience(const geometry::CreasePattern& p, const geometry::FoldState& goal,
-                                          planners::PlanOptions& options, const std::optional<std::string>& experience) {
+                                          planners::PlanOptions& options, const std::optional<std::string>& experience,
+                                          const std::string& framework) {
   if (experience)  // a missing file is a new database
-    options.experience = planners::PlanOptions::Experience{*experience, io::read_file_if_present(*experience).value_or("")};
+    options.experience =
+        planners::PlanOptions::Experience{*experience, io::read_file_if_present(*experience).value_or(""), framework};
   py::gil_scoped_release release;
   planners::PlanResult r;
   try {
@@ -122,7 +128,7 @@ void bind_plan(py::module_& m) {
          const std::string& planner, double time, unsigned seed, bool collisions, bool use_assignment, bool simplify,
          double search_margin, double waypoint_step, double speed, bool replay, const std::map<std::string, std::string>& params,
          bool fallback, const py::object& velocity, const std::string& objective, const std::optional<double>& cost_threshold,
-         const std::optional<std::string>& experience) {
+         const std::optional<std::string>& experience, const std::string& experience_framework) {
         speed = renamed(speed, planners::PlanOptions{}.speed, velocity, "velocity", "speed");  // `velocity`: fold()'s desired velocity
         require_positive(time, "time");
         require_positive(waypoint_step, "waypoint_step");
@@ -154,7 +160,8 @@ void bind_plan(py::module_& m) {
         options.objective = planners::parse_objective(objective).name();  // ValueError before any work
         if (cost_threshold) planners::check_cost_threshold(*cost_threshold, "cost_threshold");
         options.cost_threshold = cost_threshold;
-        return plan_with_experience(p, goal_state, options, experience);
+        planners::parse_experience_framework(experience_framework);  // ValueError before any work
+        return plan_with_experience(p, goal_state, options, experience, experience_framework);
       },
       // The defaults are PlanOptions'.
       py::arg("pattern"), py::arg("goal"), py::arg("start") = py::none(), py::arg("space") = std::string(planners::to_string(planners::PlanOptions{}.space)),
@@ -166,6 +173,7 @@ void bind_plan(py::module_& m) {
       py::arg("params") = std::map<std::string, std::string>{}, py::arg("fallback") = planners::PlanOptions{}.fallback,
       py::arg("velocity") = py::none(), py::arg("objective") = planners::PlanOptions{}.objective,
       py::arg("cost_threshold") = planners::PlanOptions{}.cost_threshold, py::arg("experience") = py::none(),
+      py::arg("experience_framework") = planners::PlanOptions::Experience{}.framework,
       ("Plans from `start` to the closed state `goal`: an array of angles (radians) or a FoldSequence (its end state, as "
        "the CLI's --goal CMML). `start` is None (flat), a FoldSequence (its end state is the start; "
       "the plan's sequence begins with it, as the CLI's --start CMML), or a closed state: then the plan's sequence reaches "
@@ -180,7 +188,8 @@ void bind_plan(py::module_& m) {
       "name). `objective` is what the planner optimises, as `foldkit plan --objective`: " + quoted_objectives() +
       ", or a weighted sum 'NAME:WEIGHT,…' of the additive ones (objectives()); `cost_threshold` stops an optimising "
       "planner once its path costs less (clearance: more), None for never. `experience` is a database file, as "
-      "`foldkit plan --experience`: the stored path nearest to this query is recalled and repaired first, and this "
+      "`foldkit plan --experience`: a path is recalled first, by `experience_framework` ('lightning': the stored path "
+      "nearest to this query, repaired; 'thunder': a path through a sparse roadmap of the stored paths), and this "
       "plan's path is stored (ParseError for a damaged or foreign database). Returns a PlanResult (check `status`).")
           .c_str());
   m.def("planners", &planners::planner_names, "The planner names plan() accepts.");

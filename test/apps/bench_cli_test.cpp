@@ -199,6 +199,7 @@ TEST(BenchCli, BadArgumentsExitTwo) {
            {"bench", "quick", "--error-vs-time", "0.1,0", "-o", out},
            {"bench", "quick", "--error-vs-time", "0.1", "--shard", "1/2", "-o", out},
            {"bench", "quick", "--space", "nowhere", "-o", out},
+           {"bench", "optimal", "--objective", "", "-o", out},  // an empty objective, not the suite's
            {"bench", "quick", "--space", "driving,nowhere", "-o", out},
            {"bench", "quick", "--planners", "RRTConnect@nowhere", "-o", out},
            // the Carpenter fallback on a scene that is not a single vertex (the first scene is one)
@@ -238,10 +239,15 @@ TEST(BenchCli, ListNamesSuitesScenesAndPlanners) {
   ASSERT_EQ(r.exit, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["suites"][0]["name"], "quick");
-  EXPECT_EQ(j["scenes"].size(), 25u);
-  std::vector<std::string> suites;
-  for (const auto& s : j["suites"]) suites.push_back(s["name"]);
-  EXPECT_EQ(suites, (std::vector<std::string>{"quick", "full", "spaces", "vertex-complete", "miura-scale"}));
+  EXPECT_EQ(j["scenes"].size(), 27u);
+  std::vector<std::string> suites, objectives;
+  for (const auto& s : j["suites"]) {
+    suites.push_back(s["name"]);
+    objectives.push_back(s["objective"]);
+  }
+  EXPECT_EQ(suites, (std::vector<std::string>{"quick", "full", "spaces", "vertex-complete", "miura-scale", "optimal"}));
+  // Each suite's objective unless --objective names another: rotation for the optimal suite.
+  EXPECT_EQ(objectives, (std::vector<std::string>{"length", "length", "length", "length", "length", "rotation"}));
   EXPECT_NE(std::find(j["planners"]["deterministic"].begin(), j["planners"]["deterministic"].end(), "ProjectedLine"),
             j["planners"]["deterministic"].end());
 }

@@ -116,4 +116,43 @@ TEST(PlanExperienceCli, DamagedOrForeignDatabaseIsRefusedWithNothingWritten) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// --experience-framework thunder: the same file, recalled through Thunder's roadmap, replayed
+// valid; an unknown framework, or one without --experience, is a usage error with nothing written.
+TEST(PlanExperienceCli, ThunderUsesTheSameDatabaseFile) {
+  const Case c;
+  const std::string db = c.dir + "/thunder.db", out = c.dir + "/t7.cmml";
+  fs::remove(db);
+  ASSERT_EQ(c.plan(c.g8, db, c.dir + "/t8.cmml").exit, 0);  // written by Lightning
+  const std::string lightning_bytes = slurp(db);
+  const auto thunder = [&](const std::string& to) {
+    return foldkit({"plan", c.pattern, "--goal", c.g7, "--experience", db, "--experience-framework", "thunder", "--seed", "2",
+                    "--time", "20", "-o", to, "--json"});
+  };
+  // The same database and seed give the same plan, as with Lightning.
+  ASSERT_EQ(thunder(c.dir + "/t7-first.cmml").exit, 0);
+  std::ofstream(db, std::ios::binary) << lightning_bytes;
+  const auto r = thunder(out);
+  ASSERT_EQ(r.exit, 0) << r.err;
+  EXPECT_EQ(slurp(out), slurp(c.dir + "/t7-first.cmml"));
+  const auto j = nlohmann::json::parse(r.out)["experience"];
+  EXPECT_EQ(j["framework"].get<std::string>(), "thunder");
+  EXPECT_TRUE(j["recalled"].get<bool>());
+  EXPECT_EQ(j["loaded"].get<int>(), 1);
+  EXPECT_EQ(j["paths"].get<int>(), 2);
+  EXPECT_GE(j["states"].get<int>(), 2);
+  EXPECT_GE(j["load_seconds"].get<double>(), 0.0);
+  EXPECT_EQ(j["bytes"].get<std::size_t>(), fs::file_size(db));
+  EXPECT_EQ(foldkit({"simulate", c.pattern, out}).exit, 0);
+
+  const std::string bytes = slurp(db), never = c.dir + "/never-t.cmml";
+  const auto unknown = foldkit({"plan", c.pattern, "--goal", c.g7, "--experience", db, "--experience-framework", "storm", "-o", never});
+  EXPECT_EQ(unknown.exit, 2);
+  EXPECT_NE(unknown.err.find("unknown experience framework 'storm' (known: lightning, thunder)"), std::string::npos) << unknown.err;
+  const auto alone = foldkit({"plan", c.pattern, "--goal", c.g7, "--experience-framework", "thunder", "-o", never});
+  EXPECT_EQ(alone.exit, 2);
+  EXPECT_NE(alone.err.find("--experience-framework needs --experience DB"), std::string::npos) << alone.err;
+  EXPECT_FALSE(fs::exists(never));
+  EXPECT_EQ(slurp(db), bytes);
+}
+
 }  // namespace

@@ -71,7 +71,7 @@ TEST(BenchSuite, MiuraScaleGoalsFollowTheClosedForm) {
 
 TEST(BenchSuite, SuitesNameKnownScenesAndPlanners) {
   const auto scenes = fp::bench_scene_names();
-  EXPECT_EQ(scenes.size(), 25u);
+  EXPECT_EQ(scenes.size(), 27u);
   for (const auto& suite : fp::bench_suites()) {
     for (const auto& s : suite.scenes) EXPECT_NE(std::find(scenes.begin(), scenes.end(), s), scenes.end()) << s;
     for (const auto& p : suite.planners) EXPECT_EQ(fp::canonical_bench_planner(p), p);
@@ -79,7 +79,7 @@ TEST(BenchSuite, SuitesNameKnownScenesAndPlanners) {
   std::vector<std::string> small;  // all but the three large Miura sheets and the unfiltered vertices
   for (const auto& s : scenes)
     if (s.find("-80") == std::string::npos && s.find("-any") == std::string::npos) small.push_back(s);
-  EXPECT_EQ(small.size(), 18u);
+  EXPECT_EQ(small.size(), 20u);
   EXPECT_EQ(fp::bench_suite("full").scenes, small);
   EXPECT_EQ(fp::bench_suite("vertex-complete").scenes,
             (std::vector<std::string>{"vertex6-any", "vertex8-any", "vertex12-any", "vertex32-any"}));

@@ -202,6 +202,36 @@ TEST(Experience, StoredPathIsRecalledForANewGoal) {
   EXPECT_EQ(loaded.paths(), 2u);  // the repaired path is kept too
 }
 
+// Thunder (OMPL's SPARSdb roadmap of the stored paths) reads the file Lightning wrote, recalls
+// through its roadmap, and writes the paths back for either framework.
+TEST(Experience, ThunderRecallsThroughARoadmapOfTheSameFile) {
+  const CreasePattern p = miura(4);
+  const PlanSetup to_08 = setup_for(p, 0.8), to_07 = setup_for(p, 0.7);
+  ExperienceDatabase lightning = database_for(to_08);
+  ASSERT_TRUE(solve(to_08, &lightning, 1).ok);
+
+  ExperienceDatabase thunder(to_07.si, to_07.plan_space->name(), foldkit::planners::pattern_fingerprint(p),
+                             foldkit::planners::ExperienceFramework::Thunder);
+  thunder.read(lightning.bytes(), "x.db");
+  EXPECT_EQ(thunder.paths(), 1u);
+  EXPECT_GE(thunder.states(), 2u);  // the roadmap's vertices: at least the path's ends
+  og::PathGeometric path(to_07.si);
+  const Solved second = solve(to_07, &thunder, 2, &path);
+  ASSERT_TRUE(second.ok);
+  EXPECT_TRUE(second.recalled);
+  for (unsigned int i = 0; i + 1 < static_cast<unsigned int>(path.getStateCount()); ++i)
+    EXPECT_TRUE(to_07.si->checkMotion(path.getState(i), path.getState(i + 1)));
+  EXPECT_LT((second.states.front().angles - to_07.prefix.back().angles).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((second.states.back().angles - to_07.goal.angles).cwiseAbs().maxCoeff(), 1e-6);
+  ExperienceDatabase back = database_for(to_07);
+  back.read(thunder.bytes(), "x.db");
+  EXPECT_EQ(back.paths(), 2u);  // the same file, the recalled path added
+
+  EXPECT_EQ(foldkit::planners::parse_experience_framework("Thunder"), foldkit::planners::ExperienceFramework::Thunder);
+  EXPECT_EQ(foldkit::planners::experience_framework_names(), (std::vector<std::string>{"lightning", "thunder"}));
+  EXPECT_THROW(foldkit::planners::parse_experience_framework("storm"), std::invalid_argument);
+}
+
 TEST(Experience, SameSeedSamePath) {
   const CreasePattern p = miura(4);
   const PlanSetup setup = setup_for(p, 0.7);

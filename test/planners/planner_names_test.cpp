@@ -10,6 +10,7 @@
 #include "foldkit/geometry/closure_path.hpp"
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/planners/plan.hpp"
+#include "foldkit/planners/plan_setup.hpp"
 #include "foldkit/planners/planner_factory.hpp"
 #include "folded_state.hpp"
 #include "test_time.hpp"
@@ -74,6 +75,29 @@ TEST(PlannerNames, FoldkitDefaultsAreSetAndCanBeOverridden) {
   EXPECT_EQ(std::stod(sst->params().getParam("pruning_radius")->getValue()), 0.02);
   fp::set_planner_params(*sst, "SST", {{"selection_radius", "0.7"}});
   EXPECT_EQ(std::stod(sst->params().getParam("selection_radius")->getValue()), 0.7);
+}
+
+// LBTRRT aborted the process on the constrained spaces (an OMPL assertion): refused there by
+// name with the reason, made elsewhere; LazyLBTRRT is made on both.
+TEST(PlannerNames, LbtrrtIsRefusedOnTheConstrainedSpaces) {
+  const CreasePattern p = build_or_throw(gen::miura(4, 4));
+  for (const auto space : {fp::SpaceKind::Projected, fp::SpaceKind::Atlas, fp::SpaceKind::TangentBundle, fp::SpaceKind::Driving}) {
+    fp::PlanOptions o;
+    o.space = space;
+    const fp::PlanSetup setup = fp::make_plan_setup(p, foldkit::test::folded_along_assignment(p, 0.5), o);
+    SCOPED_TRACE(setup.plan_space->name());
+    EXPECT_NE(fp::make_planner("LazyLBTRRT", setup.si), nullptr);
+    if (space == fp::SpaceKind::Driving) {
+      EXPECT_NE(fp::make_planner("LBTRRT", setup.si), nullptr);
+      continue;
+    }
+    try {
+      fp::make_planner("LBTRRT", setup.si);
+      ADD_FAILURE() << "LBTRRT was made";
+    } catch (const fp::PlannerRefused& e) {
+      EXPECT_NE(std::string(e.what()).find("DynamicSSSP::addEdge"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // The informed planners plan on foldkit's own spaces (OMPL's direct informed sampler threw there),

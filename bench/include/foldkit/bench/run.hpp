@@ -50,11 +50,12 @@ struct BenchOptions {
   /// Parameters of the sampling planners by OMPL's names ("range", "0.3"), set through each
   /// planner's ParamSet; a planner without one of them is an error.
   std::vector<std::pair<std::string, std::string>> params;
-  /// What the sampling planners optimise (planners::parse_objective(), as PlanOptions::objective):
-  /// the default, "length" without a threshold, only on the planners that sample informed; any
-  /// other on every sampling planner of the run. Recorded as the log's "objective" property,
-  /// each run's cost as "objective cost".
-  std::string objective = planners::PlanOptions{}.objective;
+  /// What the sampling planners optimise (planners::parse_objective(), as PlanOptions::objective);
+  /// empty: the suite's (BenchSuite::objective), else the default. The default, "length"
+  /// without a threshold, is set only on the planners that sample informed; any other on every
+  /// sampling planner of the run. Recorded as the log's "objective" property, each run's cost as
+  /// "objective cost".
+  std::string objective;
   /// The objective's cost threshold (PlanOptions::cost_threshold): an optimising planner stops
   /// once its path meets it (OMPL's planners check it themselves); empty: none is ever met, and
   /// an optimising planner runs its whole time, unless it proves its path optimal (BIT* whose path

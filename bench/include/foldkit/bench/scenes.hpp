@@ -26,22 +26,27 @@ struct BenchScene {
 
 /// A named set of scenes and planners run together.
 struct BenchSuite {
-  std::string name,         ///< the suite's name: "quick", "full", "spaces", "vertex-complete" or "miura-scale"
+  std::string name,         ///< the suite's name: "quick", "full", "spaces", "vertex-complete", "miura-scale" or "optimal"
       description;          ///< what it is for, in words
   std::vector<std::string> scenes,  ///< scene names (bench_scene_names())
       planners;                     ///< planner names: OMPL planners and deterministic methods
+  /// What its sampling planners optimise unless BenchOptions::objective names another
+  /// (planners::parse_objective()); empty: the default, path length.
+  std::string objective;
 };
 
 /// The suites: "quick" (three small scenes, RRTConnect and ProjectedLine: seconds), "full"
 /// (every scene but those of the issue-16 suites, seven sampling planners and every
 /// deterministic method), "spaces" (the scenes of the side-by-side comparison of spaces),
 /// "vertex-complete" (unfiltered single-vertex goals: RRTConnect, RRTConnect+Carpenter,
-/// SphericalCarpenter) and "miura-scale" (Miura 10x10 … 40x40 to zig-zags at ±80°).
+/// SphericalCarpenter), "miura-scale" (Miura 10x10 … 40x40 to zig-zags at ±80°) and "optimal"
+/// (the optimising planners RRT*, PRM*, BIT*, ABIT*, AIT*, RRT#, FMT and CForest on Miura 10x10,
+/// waterbomb 4x4, the Resch pattern and a degree-12 vertex, optimising total crease rotation).
 const std::vector<BenchSuite>& bench_suites();
 /// The suite named `name`.
 /// @throws std::invalid_argument naming the known suites for any other name
 const BenchSuite& bench_suite(const std::string& name);
-/// Every built-in scene: vertex4-random … vertex32-symmetric, vertex6-any … vertex32-any (goals
+/// Every built-in scene: vertex4-random … vertex32-symmetric (degrees 4, 8, 12, 16, 32), vertex6-any … vertex32-any (goals
 /// not filtered for reachability), boat, miura4x4, miura10x10, waterbomb, cube-sheet,
 /// corner-cube, miura20x20, waterbomb4x4, bird-base and resch (imported FOLD files), and
 /// miura10x10-80 … miura40x40-80.

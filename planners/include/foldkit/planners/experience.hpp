@@ -1,22 +1,26 @@
 #pragma once
 /// @file
-/// Planning from experience (issue 38, item 4): OMPL's Lightning framework on foldkit's spaces.
-/// A database keeps the paths of earlier plans on one pattern; a new query recalls the stored path
-/// whose ends are nearest to its own (OMPL's LightningDB, by the space's distance, either
-/// direction), repairs the stretches that are no longer valid with the planner
-/// (og::LightningRetrieveRepair), and plans from scratch only when that fails. Unlike
-/// ompl::tools::Lightning, recall and scratch run one after the other, not racing in two threads,
-/// so that a plan stays a function of its seed.
+/// Planning from experience (issue 38, item 4): OMPL's Lightning and Thunder frameworks on
+/// foldkit's spaces. A database keeps the paths of earlier plans on one pattern. Lightning recalls
+/// the stored path whose ends are nearest to the query's own (OMPL's LightningDB, by the space's
+/// distance, either direction) and repairs the stretches that are no longer valid with the
+/// planner (og::LightningRetrieveRepair); Thunder adds every stored path to a sparse roadmap
+/// (OMPL's SPARSdb inside a ThunderDB) and searches it from the query's start to its goal
+/// (og::ThunderRetrieveRepair). Either plans from scratch only when recall fails. Unlike
+/// ompl::tools::Lightning and ompl::tools::Thunder, recall and scratch run one after the other,
+/// not racing in two threads, so that a plan stays a function of its seed.
 ///
 /// The file is foldkit's own: a text header that names the space, the size of its states, a
 /// fingerprint of the pattern and a CRC-32 of the records, then per path its number of states and
 /// the states as the space serializes them; a database of another pattern or space, a damaged one,
 /// or states that are not finite and within the space's bounds, are refused with the reason
-/// (docs/PLANNING.md, "Planning from experience").
+/// (docs/PLANNING.md, "Planning from experience"). Both frameworks read the same file: it holds
+/// paths, from which Thunder builds its roadmap when it loads them.
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <ompl/base/Planner.h>
 #include <ompl/base/SpaceInformation.h>
@@ -26,9 +30,22 @@
 
 namespace ompl::tools {
 class LightningDB;
-}
+class ThunderDB;
+}  // namespace ompl::tools
 
 namespace foldkit::planners {
+
+/// Which of OMPL's experience frameworks recalls: Lightning (stored paths, the nearest repaired)
+/// or Thunder (a sparse roadmap of the stored paths, searched).
+enum class ExperienceFramework { Lightning, Thunder };
+/// The frameworks' names, in order: "lightning", "thunder" (--experience-framework, Python's
+/// experience_framework=).
+std::vector<std::string> experience_framework_names();
+/// The framework named `name` (case-insensitive).
+/// @throws std::invalid_argument naming the known frameworks for any other name
+ExperienceFramework parse_experience_framework(const std::string& name);
+/// The framework's name: "lightning" or "thunder".
+std::string to_string(ExperienceFramework framework);
 
 /// A database file that cannot be used: unreadable, damaged, or made for another pattern or
 /// space. what() is "FILE: reason".
@@ -49,15 +66,20 @@ class ExperienceError : public std::runtime_error {
 /// that holds the same numbers, different (up to hash collisions) otherwise.
 std::uint64_t pattern_fingerprint(const geometry::CreasePattern& pattern);
 
-/// The paths of earlier plans on one pattern in one space: OMPL's LightningDB, loaded from and
-/// saved to foldkit's database file. Not thread-safe.
+/// The paths of earlier plans on one pattern in one space, loaded from and saved to foldkit's
+/// database file, and held for recall by the framework's own database: OMPL's LightningDB, or a
+/// ThunderDB whose SPARSdb roadmap every path is added to (Thunder's sparse-roadmap settings:
+/// stretch factor 1.2, visibility range 0.05 of the space's extent). Not thread-safe.
 class ExperienceDatabase {
  public:
   /// An empty database for the states of `si`'s space.
-  /// @param si           the space information of the plan (its space serializes its states)
+  /// @param si           the space information of the plan (its space serializes its states;
+  ///                     Thunder's roadmap checks its motions with si's motion validator)
   /// @param space_name   the space's name (PlanSpace::name()), kept in the file
   /// @param fingerprint  pattern_fingerprint() of the pattern, kept in the file
-  ExperienceDatabase(const ompl::base::SpaceInformationPtr& si, std::string space_name, std::uint64_t fingerprint);
+  /// @param framework    which framework recalls
+  ExperienceDatabase(const ompl::base::SpaceInformationPtr& si, std::string space_name, std::uint64_t fingerprint,
+                     ExperienceFramework framework = ExperienceFramework::Lightning);
   ~ExperienceDatabase();
   ExperienceDatabase(const ExperienceDatabase&) = delete;
   ExperienceDatabase& operator=(const ExperienceDatabase&) = delete;
@@ -75,13 +97,19 @@ class ExperienceDatabase {
   /// io::write_file_atomic).
   std::string bytes() const;
   /// Adds `path` (at least two states of the database's space); shorter paths are not kept.
+  /// Thunder adds it to its roadmap too (SPARSdb::addPathToRoadmap: the path interpolated at the
+  /// validity resolution, states kept where they add coverage, connectivity or a shorter way).
   void add(const ompl::geometric::PathGeometric& path);
   /// The number of paths kept.
   std::size_t paths() const;
-  /// The number of states over all paths.
+  /// Lightning: the number of states over all paths; Thunder: the roadmap's vertices.
   std::size_t states() const;
-  /// OMPL's database, for og::LightningRetrieveRepair.
-  const std::shared_ptr<ompl::tools::LightningDB>& lightning() const { return db_; }
+  /// The framework that recalls.
+  ExperienceFramework framework() const { return framework_; }
+  /// The framework's recall planner on this database: og::LightningRetrieveRepair, or
+  /// og::ThunderRetrieveRepair; `repair` re-plans what recall cannot use (OMPL 1.5.2's Thunder
+  /// searches its roadmap lazily, checking each edge, and repairs nothing).
+  ompl::base::PlannerPtr recall_planner(const ompl::base::SpaceInformationPtr& si, const ompl::base::PlannerPtr& repair) const;
 
  private:
   ompl::geometric::PathGeometric read_path(const char* data, std::size_t count, const std::string& which,
@@ -90,7 +118,10 @@ class ExperienceDatabase {
   ompl::base::SpaceInformationPtr si_;
   std::string space_name_;
   std::uint64_t fingerprint_;
-  std::shared_ptr<ompl::tools::LightningDB> db_;
+  ExperienceFramework framework_;
+  std::vector<ompl::geometric::PathGeometric> paths_;  // as added: what the file holds
+  std::shared_ptr<ompl::tools::LightningDB> lightning_;  // Lightning only
+  std::shared_ptr<ompl::tools::ThunderDB> thunder_;      // Thunder only
 };
 
 /// The share of a plan's time limit that recall and repair may take before the planner from
@@ -100,10 +131,11 @@ class ExperienceDatabase {
 /// limit and left nothing for the search from scratch.
 constexpr double kRecallShare = 0.1;
 
-/// Recall, then scratch: og::LightningRetrieveRepair on the database (its repairs by `repair`)
-/// for at most `recall_time` seconds, and, when the database is empty or recall finds no exact
-/// path, the `scratch` planner with the time left. The planner's name is the scratch planner's
-/// followed by "+Lightning"; recalled() says which of the two solved.
+/// Recall, then scratch: the database's recall planner (ExperienceDatabase::recall_planner, its
+/// repairs by `repair`) for at most `recall_time` seconds, and, when the database is empty or
+/// recall finds no exact path, the `scratch` planner with the time left. The planner's name is
+/// the scratch planner's followed by "+Lightning" or "+Thunder"; recalled() says which of the
+/// two solved.
 class ExperiencePlanner : public ompl::base::Planner {
  public:
   /// @param si           the plan's space information (validity checker and motion validator set)
@@ -127,6 +159,8 @@ class ExperiencePlanner : public ompl::base::Planner {
   double recall_seconds() const { return recall_seconds_; }
 
  private:
+  bool ends_valid() const;
+
   const ExperienceDatabase* db_;
   ompl::base::PlannerPtr scratch_, recall_;
   double recall_time_;

@@ -3,6 +3,7 @@
 /// What a plan optimises, by name (docs/PLANNING.md, "Objectives"): path length, total crease
 /// rotation, clearance, and weighted sums of the additive ones; one table of names in
 /// objectives.cpp.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -81,6 +82,11 @@ ompl::base::OptimizationObjectivePtr make_objective(const Objective& objective, 
 /// @throws std::invalid_argument for an objective that does not parse or a negative or NaN
 ///         threshold
 ompl::base::OptimizationObjectivePtr plan_objective(const PlanSetup& setup, const PlanOptions& options);
+
+/// When an informed sampler of the setup's objectives stops drawing by rejection: once the
+/// plan's time is up (setup.validity's FoldValidity::expired(), under run_planner's TimeLimit).
+/// OMPL 1.5.2's BIT* and AIT* fill their batches without looking at the time.
+std::function<bool()> sampling_stop(const PlanSetup& setup);
 
 /// Checks a cost threshold: finite and not negative.
 /// @throws std::invalid_argument naming `what` otherwise

@@ -113,22 +113,33 @@ struct PlanOptions {
   bool quiet = true;
   geometry::ProgressFn progress;  ///< the replay's progress (the planner itself runs for `time` at most)
   /// Planning from experience (docs/PLANNING.md, "Planning from experience"): when set, the
-  /// database file's bytes (empty: a new database) and its name for messages. The stored path
-  /// whose ends are nearest to this query's is recalled and repaired (OMPL's
-  /// LightningRetrieveRepair, repairs by RRTConnect); when that fails, `planner` plans from
-  /// scratch with the time left. PlanResult::experience gives the database back with this
-  /// plan's path added. The way through flat and the Carpenter fallback's path are not stored.
+  /// database file's bytes (empty: a new database) and its name for messages. Recall by the
+  /// framework: Lightning's stored path whose ends are nearest to this query's, repaired
+  /// (LightningRetrieveRepair, repairs by RRTConnect), or a path through Thunder's roadmap of the
+  /// stored paths (ThunderRetrieveRepair); when that fails, `planner` plans from scratch with the
+  /// time left. PlanResult::experience gives the database back with this plan's path added. The
+  /// way through flat and the Carpenter fallback's path are not stored.
   struct Experience {
     std::string name;   ///< the database file's name (messages: "NAME: reason")
     std::string bytes;  ///< its content; empty for a new database
+    /// "lightning" or "thunder" (planners::experience_framework_names(), case-insensitive); both
+    /// read and write the same file.
+    std::string framework = "lightning";
   };
   std::optional<Experience> experience;  ///< none: no experience (the default)
 };
 
 /// What planning from experience did (PlanOptions::experience; planners/experience.hpp).
 struct ExperienceOutcome {
+  std::string framework;        ///< the framework that recalled: "lightning" or "thunder"
   bool recalled = false;        ///< the path was recalled from the database and repaired (else from scratch)
   double recall_seconds = 0.0;  ///< seconds spent recalling and repairing (also when it failed)
+  /// Seconds spent reading the database's bytes into the framework's database (Thunder builds its
+  /// roadmap from the stored paths then).
+  double load_seconds = 0.0;
+  /// States the framework's database holds now: every stored path's (Lightning), the roadmap's
+  /// vertices (Thunder).
+  std::size_t states = 0;
   std::size_t loaded = 0;       ///< paths the database held when the plan began
   std::size_t paths = 0;        ///< paths it holds now (the plan's own added when it succeeded)
   /// The database file's new bytes, the plan's path added (write them back atomically); empty

@@ -1,6 +1,7 @@
 #pragma once
 /// @file
 /// OMPL's geometric planners by name.
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -59,8 +60,13 @@ std::string canonical_planner(const std::string& name);
 /// single-vertex and driving spaces; docs/PLANNING.md, "Planners"); null for every other planner,
 /// which then picks its own default as OMPL does (PRM stops at its first path, TRRT weighs
 /// mechanical work).
+/// @param name  the planner
+/// @param si    the plan's space information
+/// @param stop  once true, the informed sampler stops drawing by rejection (planners::sampling_stop()
+///              of the plan's setup: its time is up); empty: never
 /// @throws std::invalid_argument for an unknown planner
-ompl::base::OptimizationObjectivePtr informed_objective(const std::string& name, const ompl::base::SpaceInformationPtr& si);
+ompl::base::OptimizationObjectivePtr informed_objective(const std::string& name, const ompl::base::SpaceInformationPtr& si,
+                                                        std::function<bool()> stop = {});
 /// Whether the planner draws from its objective's informed sampler (BIT*, ABIT*, AIT*,
 /// InformedRRT*, SORRT*, CForest): it needs an objective that has one (objective_refusal()).
 /// @throws std::invalid_argument for an unknown planner
