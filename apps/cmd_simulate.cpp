@@ -23,6 +23,7 @@ struct SimulateOptions {
   simulation::SimulationOptions sim;
   dynamics::DynamicOptions dyn;
   std::string gravity, drive = dynamics::to_string(dynamics::DynamicOptions{}.drive), series, fixed, start, joint_torque;
+  std::string solver = dynamics::to_string(dynamics::DynamicOptions{}.solver);
   double ground = 0.0, thickness = 0.0;
   bool no_collision = false;
   std::size_t max_frames = 1000;
@@ -99,6 +100,7 @@ dynamics::DynamicOptions dynamic_options(const CLI::App& app, const SimulateOpti
     if (app.count(name) && !o.contacts && !o.ground) throw UsageError(std::string(name) + " needs --contacts or --ground");
   if (!opt.joint_torque.empty()) o.joint_max_torque = parse_joint_torques(opt.joint_torque, pattern);
   o.drive = dynamics::parse_drive(opt.drive);
+  o.solver = dynamics::parse_solver(opt.solver);
   if (!opt.start.empty()) {
     const int root = o.hold_fixed && o.fixed_actor ? *pattern.actor_index(*o.fixed_actor) : 0;
     o.start = start_state(opt.start, pattern, root, o.closure_tolerance);
@@ -194,6 +196,20 @@ void add_dynamic_options(CLI::App* app, SimulateOptions& opt) {
           ->check(CLI::PositiveNumber),
       app->add_option("--joint-torque", opt.joint_torque,
                       "Dynamic model: torque limits of some motors as ID:N·m,… (the others: --max-torque)"),
+      app->add_option("--solver", opt.solver,
+                      "Dynamic model: how the engine solves the hinges each step: direct (ODE's dWorldStep: exact, "
+                      "cubic in the joints) or iterative (dWorldQuickStep: --iterations sweeps; with "
+                      "--projection-interval for closed loops)")
+          ->check(CLI::IsMember(
+              {dynamics::to_string(dynamics::Solver::Direct), dynamics::to_string(dynamics::Solver::Iterative)}))
+          ->capture_default_str(),
+      positive(app->add_option("--iterations", opt.dyn.iterations,
+                               "Dynamic model: Gauss-Seidel sweeps per step of --solver iterative")),
+      app->add_option("--projection-interval", opt.dyn.projection_interval,
+                      "Dynamic model: seconds between post-stabilisations (the engine's poses and velocities "
+                      "projected onto the closed loops, the motors' joints held); 0: none")
+          ->check(CLI::NonNegativeNumber)
+          ->capture_default_str(),
       reads(app->add_option("--start", opt.start,
                             "Dynamic model: CMML whose end state the sheet starts from, at rest (default: flat, where "
                             "one motor does not choose the branch)"))};

@@ -152,6 +152,7 @@ nlohmann::json dynamic_report_json(const geometry::CreasePattern& pattern, const
           {"real_time_factor", r.seconds > 0.0 ? r.duration / r.seconds : 0.0},
           {"steps", r.steps},
           {"max_closure_error", r.max_closure_error},
+          {"max_corrected_error", r.max_corrected_error},
           {"closure_tolerance", r.closure_tolerance},
           {"events", events},
           {"stalls", stalls},

@@ -6,8 +6,12 @@
 // 0.4 rad below the horizontal (against 4√(I/mgd)·K(sin(θ₀/2))) for time steps 1e-2 … 1e-4 s.
 // `contacts` as the seventh argument: facet–facet contacts on (DynamicOptions::contacts), to
 // measure what they cost on a fold that touches nothing.
-// Usage: measure_dynamics [n=10] [solver=iterative|direct] [iterations=100] [time_step=1e-3] [speed=0.5] [driving joint index] [contacts]
+// Trailing KEY=VALUE arguments set more options: projection=S (DynamicOptions::projection_interval,
+// post-stabilisation every S seconds), erp=E, cfm=C. RTF is printed from wall and from CPU time
+// (the process's, the machine being shared).
+// Usage: measure_dynamics [n=10] [solver=iterative|direct] [iterations=100] [time_step=1e-3] [speed=0.5] [driving joint index|-1] [contacts|-] [KEY=VALUE …]
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -65,20 +69,35 @@ int main(int argc, char** argv) {
   const double speed = argc > 5 ? std::atof(argv[5]) : 0.5;
   o.max_torque = 1e6;  // the spike measures the engine, not the motor
   o.contacts = argc > 7 && std::string(argv[7]) == "contacts";
+  for (int a = 8; a < argc; ++a) {
+    const std::string arg = argv[a];
+    const auto eq = arg.find('=');
+    const std::string key = arg.substr(0, eq);
+    const double value = eq == std::string::npos ? 0.0 : std::atof(arg.c_str() + eq + 1);
+    if (key == "projection") o.projection_interval = value;
+    else if (key == "erp") o.erp = value;
+    else if (key == "cfm") o.cfm = value;
+    else return std::fprintf(stderr, "unknown option %s (projection=, erp=, cfm=)\n", arg.c_str()), 1;
+  }
   const microbench::OneMotorMiura scene = microbench::one_motor_miura(n, speed, argc > 6 ? std::atoi(argv[6]) : -1);
   const geometry::CreasePattern& p = scene.pattern;
   const geometry::FoldState& K = scene.kinematic.states.back();
   const int drive = scene.drive;
   o.start = scene.start;
   const geometry::FoldSequence& seq = scene.sequence;
+  // DYN_TRACE: the closure error at every check, to see where in the fold the drift arises.
+  if (std::getenv("DYN_TRACE"))
+    o.progress = [k = 0](const geometry::Progress& pr) mutable { std::printf("check %d closure %.3g rad\n", ++k, pr.closure_error); };
+  const std::clock_t cpu0 = std::clock();
   const auto r = dynamics::simulate_dynamic(p, seq, o);
+  const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
   const double diff = (r.final_state.angles - K.angles).cwiseAbs().maxCoeff();
-  std::printf("miura %dx%d joints %zu solver %s iterations %d dt %g%s: status %s, %g s simulated in %g s (RTF %.3g), "
-              "closure drift %.3g rad, max |angle - kinematic| %.3g rad, driving angle %.4f rad, %zu contacts\n",
+  std::printf("miura %dx%d joints %zu solver %s iterations %d dt %g projection %g erp %g%s: status %s, %g s simulated in %g s "
+              "(RTF %.3g, CPU RTF %.3g), closure drift %.3g rad (before corrections %.3g rad), max |angle - kinematic| %.3g rad, driving angle %.4f rad, "
+              "%zu contacts\n",
               n, n, p.joints().size(), o.solver == dynamics::Solver::Direct ? "direct" : "iterative", o.iterations, o.time_step,
-              o.contacts ? " contacts" : "",
-              geometry::to_string(r.status.code), r.duration, r.seconds, r.duration / r.seconds, r.max_closure_error, diff,
-              K.angles[drive], r.contacts.size());
+              o.projection_interval, o.erp, o.contacts ? " contacts" : "", geometry::to_string(r.status.code), r.duration,
+              r.seconds, r.duration / r.seconds, r.duration / cpu, r.max_closure_error, r.max_corrected_error, diff, K.angles[drive], r.contacts.size());
   if (!r.status.ok()) std::printf("  %s\n", r.status.message.c_str());
   if (std::getenv("DYN_VERBOSE"))
     for (int j = 0; j < static_cast<int>(p.joints().size()); ++j)

@@ -9,6 +9,7 @@
 
 #include "foldkit/geometry/closure.hpp"
 #include "ode_sheet.hpp"
+#include "post_stabilise.hpp"
 
 namespace foldkit::dynamics {
 
@@ -26,7 +27,18 @@ Drive parse_drive(const std::string& name) {
   throw std::invalid_argument("unknown drive '" + name + "' (motor or spring)");
 }
 
+const char* to_string(Solver solver) { return solver == Solver::Direct ? "direct" : "iterative"; }
+
+Solver parse_solver(const std::string& name) {
+  if (name == "direct") return Solver::Direct;
+  if (name == "iterative") return Solver::Iterative;
+  throw std::invalid_argument("unknown solver '" + name + "' (direct or iterative)");
+}
+
 namespace {
+
+// Radians: the loop error a post-stabilisation leaves, far below any closure tolerance.
+constexpr double kProjectionTolerance = 1e-9;
 
 void check_options(const geometry::CreasePattern& pattern, const DynamicOptions& o) {
   auto positive = [](double v, const char* name) {
@@ -53,6 +65,8 @@ void check_options(const geometry::CreasePattern& pattern, const DynamicOptions&
   if (o.iterations < 1) throw std::invalid_argument("iterations must be at least 1");
   if (!(o.erp > 0.0 && o.erp <= 1.0)) throw std::invalid_argument("erp must be in (0, 1]");
   if (!(o.cfm >= 0.0) || !std::isfinite(o.cfm)) throw std::invalid_argument("cfm must be non-negative and finite");
+  if (!(o.projection_interval >= 0.0) || !std::isfinite(o.projection_interval))
+    throw std::invalid_argument("projection_interval must be non-negative and finite");
   if (o.start.size() > 0) {
     if (o.start.size() != static_cast<Eigen::Index>(pattern.joints().size()) || !o.start.allFinite())
       throw std::invalid_argument("start must hold one finite angle per joint");
@@ -79,6 +93,7 @@ class Runner {
   // `fixed`: the held actor's index, −1 for none (the closure is then measured from actor 0).
   Runner(const geometry::CreasePattern& pattern, const DynamicOptions& options, int fixed)
       : pattern_(pattern), o_(options), sheet_(pattern, options, fixed), closure_(pattern, std::max(fixed, 0)),
+        stabilise_(closure_, kProjectionTolerance),
         stalled_for_(pattern.joints().size(), 0.0) {
     report_.status = {geometry::StatusCode::Success, "every event reached its angles"};
     report_.time_step = o_.time_step;
@@ -147,12 +162,18 @@ class Runner {
 
   // Steps until the event's joints reach their angles (true) or the run must stop (false).
   bool advance(const std::vector<int>& named, DynamicEventReport& er, std::size_t done, std::size_t total) {
-    double quiet = 0.0, next_check = time_ + o_.check_interval;
+    double quiet = 0.0, next_check = time_ + o_.check_interval, next_projection = time_ + o_.projection_interval;
     for (;;) {
       sheet_.step();
       ++report_.steps;
       time_ = static_cast<double>(report_.steps) * o_.time_step;  // no rounding drift over many steps
       if (!sheet_.sane()) throw detail::EngineError("a body moved faster than 1e6 m/s or rad/s");
+      // Half a step's slack: an interval of whole steps must not slip a step to rounding.
+      if (o_.projection_interval > 0.0 && time_ >= next_projection - 0.5 * o_.time_step) {
+        const double corrected = stabilise_(sheet_).first;
+        report_.max_corrected_error = std::max(report_.max_corrected_error, corrected);
+        next_projection += o_.projection_interval;
+      }
       record_torques();
       if (!record_contacts(er.number)) return false;
       if (time_ >= next_check) {
@@ -353,6 +374,7 @@ class Runner {
   const DynamicOptions& o_;
   detail::OdeSheet sheet_;
   geometry::ClosureSystem closure_;
+  detail::PostStabiliser stabilise_;  // used when options ask for post-stabilisation
   std::vector<double> stalled_for_;
   DynamicReport report_;
   std::unordered_map<long long, std::size_t> contact_index_;  // into report_.contacts, by pair

@@ -95,7 +95,9 @@ struct OdeSheet::Impl {
   std::vector<dJointFeedback> feedback;
   std::vector<int> left, right;          // per joint: actor indices on either side of its axis
   std::vector<Eigen::Vector3d> axis;     // per joint: flat unit direction v[0] → v[1]
+  std::vector<Eigen::Vector3d> anchor;   // per joint: flat point on its axis, metres
   std::unique_ptr<OdeContacts> contacts;  // only when the options ask for contacts or a ground
+  geometry::KinematicTree tree;           // rooted at the fixed actor (actor 0 when none is held)
 
   // One engine step: this pose's contacts, the solver, the contacts removed.
   void advance() {
@@ -149,6 +151,7 @@ OdeSheet::OdeSheet(const geometry::CreasePattern& pattern, const DynamicOptions&
     s.right.push_back(first_right ? joint.actors[0] : joint.actors[1]);
     s.left.push_back(first_right ? joint.actors[1] : joint.actors[0]);
     s.axis.push_back(ax.direction);
+    s.anchor.push_back(options.scale * ax.point);
     // ODE's hinge angle is body 1's turn relative to body 2 about the axis: the right actor's
     // about +direction, or (when the right actor is the fixed one, which must not be body 1 for
     // its feedback) the left actor's about −direction, the same angle.
@@ -163,23 +166,52 @@ OdeSheet::OdeSheet(const geometry::CreasePattern& pattern, const DynamicOptions&
   }
   // Hinges are attached on the flat sheet (ODE measures hinge angles from the pose they were
   // attached at), then the bodies move to the start state.
-  if (options.start.size() > 0) {
-    const auto pose = geometry::facet_poses(pattern, geometry::make_tree(pattern, std::max(fixed, 0)), geometry::FoldState{options.start});
-    for (int a = 0; a < actors; ++a) {
-      Eigen::Isometry3d m = pose[a];
-      m.translation() *= options.scale;
-      const Eigen::Vector3d c = m * s.mass[a].centroid;
-      const Eigen::Quaterniond q(m.linear());
-      const dQuaternion dq = {q.w(), q.x(), q.y(), q.z()};
-      dBodySetPosition(s.bodies[a], c.x(), c.y(), c.z());
-      dBodySetQuaternion(s.bodies[a], dq);
-    }
-  }
+  s.tree = geometry::make_tree(pattern, std::max(fixed, 0));
+  if (options.start.size() > 0) place(geometry::FoldState{options.start});
   if (options.contacts || options.ground)
     s.contacts = std::make_unique<OdeContacts>(world, s.bodies, fixed, pattern, s.options, s.mass);
 }
 
 OdeSheet::~OdeSheet() = default;
+
+void OdeSheet::set_rates(const Eigen::VectorXd& rates) {
+  Impl& s = *impl_;
+  const std::vector<Eigen::Isometry3d> pose = poses();
+  // Down the tree: a child turns as its parent plus its joint's rate about the (common) axis, and
+  // its centre of mass moves with the parent's motion plus that turn about a point on the axis.
+  for (int a : s.tree.order) {
+    const int p = s.tree.parent[a], j = s.tree.parent_joint[a];
+    if (p < 0 || a == s.fixed) continue;
+    const Eigen::Vector3d axis = pose[p].linear() * s.axis[j], on_axis = pose[p] * s.anchor[j];
+    // rate() is the right actor's spin relative to the left's about +axis.
+    const Eigen::Vector3d turn = (s.right[j] == a ? 1.0 : -1.0) * rates[j] * axis;
+    const Eigen::Vector3d cp = vec(dBodyGetPosition(s.bodies[p])), ca = vec(dBodyGetPosition(s.bodies[a]));
+    const Eigen::Vector3d w = s.spin(p) + turn;
+    const Eigen::Vector3d v = (p == s.fixed ? Eigen::Vector3d::Zero() : vec(dBodyGetLinearVel(s.bodies[p]))) +
+                              s.spin(p).cross(ca - cp) + turn.cross(ca - on_axis);
+    dBodySetAngularVel(s.bodies[a], w.x(), w.y(), w.z());
+    dBodySetLinearVel(s.bodies[a], v.x(), v.y(), v.z());
+  }
+}
+
+void OdeSheet::place(const geometry::FoldState& state) {
+  Impl& s = *impl_;
+  const int root = std::max(s.fixed, 0);
+  // The root stays where it is (a held root at its flat pose; a free one where the engine has it).
+  const Eigen::Isometry3d at = poses()[root];
+  const auto pose = geometry::facet_poses(*s.pattern, s.tree, state);
+  for (std::size_t a = 0; a < s.bodies.size(); ++a) {
+    if (static_cast<int>(a) == s.fixed) continue;
+    Eigen::Isometry3d m = pose[a];
+    m.translation() *= s.options.scale;
+    m = at * m;
+    const Eigen::Vector3d c = m * s.mass[a].centroid;
+    const Eigen::Quaterniond q(m.linear());
+    const dQuaternion dq = {q.w(), q.x(), q.y(), q.z()};
+    dBodySetPosition(s.bodies[a], c.x(), c.y(), c.z());
+    dBodySetQuaternion(s.bodies[a], dq);
+  }
+}
 
 void OdeSheet::set_drive(int j, const JointDrive& drive) {
   drives_[j] = drive;

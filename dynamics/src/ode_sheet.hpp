@@ -51,6 +51,14 @@ class OdeSheet {
   double angle_to(int j, double target) const;
   double rate(int j) const;
   geometry::FoldState state() const;
+  // Moves every body but the root (the fixed actor, or actor 0 when none is held) to its pose in
+  // `state` (one angle per joint, radians) relative to the root's current pose; velocities are
+  // kept. What the start state and post-stabilisation (post_stabilise.hpp) place the sheet with.
+  void place(const geometry::FoldState& state);
+  // Sets every body's velocity but the root's from joint rates (rad/s, one per joint, as rate()
+  // reads them) down the kinematic tree: consistent with the hinges, and with the loops when the
+  // rates are.
+  void set_rates(const Eigen::VectorXd& rates);
   // Torque the joint's motor or spring exerted in the last step, about its axis, N·m.
   double torque(int j) const;
   // Torque joint j needs to hold the current pose with the sheet at rest and every motor holding

@@ -84,8 +84,8 @@ void bind_report(py::module_& m) {
       });
 }
 
-void bind_dynamic_report(py::module_& m) {
-  using dynamics::DynamicReport;
+// The dynamic report's parts: stalls, contacts, events, joints.
+void bind_dynamic_report_parts(py::module_& m) {
   py::class_<dynamics::Stall>(m, "Stall", "A joint that did not reach its angle in the dynamic model.")
       .def_readonly("joint", &dynamics::Stall::joint, "Joint ID.")
       .def_readonly("event", &dynamics::Stall::event, "EventNumber.")
@@ -114,6 +114,11 @@ void bind_dynamic_report(py::module_& m) {
       .def_readonly("id", &dynamics::JointReport::id, "Joint ID.")
       .def_readonly("peak_torque", &dynamics::JointReport::peak_torque, "Largest |torque| of its motor or spring, N·m.")
       .def_readonly("angle", &dynamics::JointReport::angle, "Final angle, radians.");
+}
+
+void bind_dynamic_report(py::module_& m) {
+  using dynamics::DynamicReport;
+  bind_dynamic_report_parts(m);
   py::class_<DynamicReport>(m, "DynamicReport", py::dynamic_attr(),
                             "What simulate(model='dynamic') found: status, stalls, peak torques, closure drift, energy, frames.")
       .def_readonly("status", &DynamicReport::status,
@@ -126,6 +131,8 @@ void bind_dynamic_report(py::module_& m) {
       .def_readonly("seconds", &DynamicReport::seconds, "Wall-clock seconds the engine ran.")
       .def_readonly("steps", &DynamicReport::steps, "Engine steps.")
       .def_readonly("max_closure_error", &DynamicReport::max_closure_error, "Closure drift of the engine's poses, radians.")
+      .def_readonly("max_corrected_error", &DynamicReport::max_corrected_error,
+                    "Loop error the engine's steps left before the post-stabilisations removed it, radians (0: none).")
       .def_readonly("closure_tolerance", &DynamicReport::closure_tolerance, "Radians.")
       .def_readonly("events", &DynamicReport::events, "One DynamicEventReport per event run.")
       .def_readonly("stalls", &DynamicReport::stalls, "Stalls.")
@@ -178,6 +185,9 @@ struct PhysicsArgs {
   std::optional<double> thickness;
   std::optional<std::map<int, double>> joint_torque;
   std::optional<Eigen::VectorXd> start;
+  std::string solver;
+  int iterations;
+  double projection_interval;
 
   // Whether any differs from its default: they belong to the dynamic model only (as on the CLI).
   std::string given() const {
@@ -186,7 +196,9 @@ struct PhysicsArgs {
         {gravity.has_value(), "gravity"}, {density != d.density, "density"}, {max_torque != d.max_torque, "max_torque"},
         {scale != d.scale, "scale"}, {!fixed.is_none(), "fixed"}, {drive != dynamics::to_string(d.drive), "drive"},
         {ground.has_value(), "ground"}, {contacts != d.contacts, "contacts"}, {friction != d.friction, "friction"},
-        {thickness.has_value(), "thickness"}, {joint_torque.has_value(), "joint_torque"}, {start.has_value(), "start"}};
+        {thickness.has_value(), "thickness"}, {joint_torque.has_value(), "joint_torque"}, {start.has_value(), "start"},
+        {solver != dynamics::to_string(d.solver), "solver"}, {iterations != d.iterations, "iterations"},
+        {projection_interval != d.projection_interval, "projection_interval"}};
     for (const auto& [differs, name] : named)
       if (differs) return name;
     return {};
@@ -227,6 +239,9 @@ py::object simulate_dynamic(const geometry::CreasePattern& p, const geometry::Fo
   o.thickness = a.thickness;
   if (a.joint_torque) o.joint_max_torque = *a.joint_torque;
   if (a.start) o.start = *a.start;
+  o.solver = dynamics::parse_solver(a.solver);
+  o.iterations = a.iterations;
+  o.projection_interval = a.projection_interval;
   o.time_step = time_step.value_or(o.time_step);
   o.closure_tolerance = closure_tolerance.value_or(o.closure_tolerance);
   o.max_event_time = max_event_time.value_or(o.max_event_time);
@@ -254,7 +269,8 @@ void bind_simulate(py::module_& m) {
          std::optional<double> max_event_time, std::optional<Eigen::Vector3d> gravity, double density, double max_torque,
          const py::object& fixed, double scale, const std::string& drive, std::optional<double> ground, bool contacts,
          double friction, std::optional<double> thickness, std::optional<std::map<int, double>> joint_torque,
-         std::optional<Eigen::VectorXd> start) -> py::object {
+         std::optional<Eigen::VectorXd> start, const std::string& solver, int iterations,
+         double projection_interval) -> py::object {
         const auto& sequence = sequence_object.cast<const geometry::FoldSequence&>();
         const std::string source = source_of(sequence_object);
         require_valid(p, sequence, source);
@@ -262,7 +278,7 @@ void bind_simulate(py::module_& m) {
                                           {max_event_time, "max_event_time"}})
           if (value) require_positive(*value, name);
         const PhysicsArgs physics{gravity, density, max_torque, scale, fixed, drive, ground, contacts, friction, thickness,
-                                  joint_torque, start};
+                                  joint_torque, start, solver, iterations, projection_interval};
         if (model == dynamics::kModelName)
           return simulate_dynamic(p, sequence, source, physics, time_step, closure_tolerance, max_event_time, record_frames);
         if (const std::string name = physics.given(); !name.empty())
@@ -303,11 +319,15 @@ void bind_simulate(py::module_& m) {
       py::arg("drive") = std::string(dynamics::to_string(dynamics::DynamicOptions{}.drive)), py::arg("ground") = py::none(),
       py::arg("contacts") = dynamics::DynamicOptions{}.contacts, py::arg("friction") = dynamics::DynamicOptions{}.friction,
       py::arg("thickness") = py::none(), py::arg("joint_torque") = py::none(), py::arg("start") = py::none(),
+      py::arg("solver") = std::string(dynamics::to_string(dynamics::DynamicOptions{}.solver)),
+      py::arg("iterations") = dynamics::DynamicOptions{}.iterations,
+      py::arg("projection_interval") = dynamics::DynamicOptions{}.projection_interval,
       "Replays `sequence` on `pattern` as `foldkit simulate`: model 'motor' (CMML speeds), 'spring', 'sync', or 'dynamic' "
       "(a physics engine: returns a DynamicReport; gravity (x, y, z) m/s², density kg/m², max_torque N·m, joint_torque "
       "{joint ID: N·m}, fixed actor ID (None: the first; 'none': no actor held), scale metres per pattern unit, drive "
       "'motor' or 'spring', ground z of a ground plane (m), contacts=True for facet–facet contacts, friction μ, "
-      "thickness m, start angles (radians) to start from; docs/SIMULATION.md; these are refused for the other models). "
+      "thickness m, start angles (radians) to start from, solver 'direct' or 'iterative' with iterations sweeps, "
+      "projection_interval s between post-stabilisations (0: none); docs/SIMULATION.md; these are refused for the other models). "
       "time_step, closure_tolerance and max_event_time default to the model's own (None). "
       "Returns a SimulationReport; with poses=True its `poses` holds each actor's 4×4 pose at every frame, shape "
       "(frames, actors, 4, 4). A sequence naming joints the pattern lacks raises ParseError at its line.");

@@ -145,13 +145,33 @@ TEST(DynamicSimulateCli, TooLittleTorqueStallsExitsThreeNamingTheJoint) {
   EXPECT_NE(r.err.find("joint 1 stalled"), std::string::npos) << r.err;
 }
 
+// --solver, --iterations and --projection-interval reach the engine: the iterative solver,
+// post-stabilised, lifts the flap as the direct one does; they are the dynamic model's only.
+TEST(DynamicSimulateCli, IterativeSolverWithPostStabilisationLiftsTheFlap) {
+  const FlapCase c = flap_case();
+  auto args = dynamic_args(c, 1.05 * kLift);
+  args.insert(args.end(), {"--solver", "iterative", "--iterations", "20", "--projection-interval", "0.001"});
+  const auto r = foldkit(args);
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "success");
+  EXPECT_NEAR(j["final_angles"][0]["angle"].get<double>(), -60.0, 0.01);
+  // A strip has no loop: nothing for the corrections to close, before or after them.
+  ASSERT_TRUE(j.contains("max_corrected_error"));
+  EXPECT_EQ(j["max_corrected_error"].get<double>(), 0.0);
+  EXPECT_EQ(j["max_closure_error"].get<double>(), 0.0);
+  const auto kinematic = foldkit({"simulate", c.pmml, c.cmml, "--solver", "iterative"});
+  EXPECT_EQ(kinematic.exit, 2);
+  EXPECT_NE(kinematic.err.find("--solver is an option of --model dynamic"), std::string::npos) << kinematic.err;
+}
+
 TEST(DynamicSimulateCli, BadInputIsRefusedWithoutOutput) {
   const FlapCase c = flap_case();
   const std::string frames = c.dir + "/never.fold";
   const std::vector<std::vector<std::string>> bad = {
       {"--density", "-1"}, {"--max-torque", "nan"}, {"--max-torque", "-2"}, {"--gravity", "0,0,nan"},
       {"--gravity", "1,2"}, {"--fixed", "99"},      {"--scale", "0"},       {"--drive", "rocket"},
-      {"--time-step", "0.5"}};
+      {"--time-step", "0.5"}, {"--solver", "magic"}, {"--iterations", "0"}, {"--projection-interval", "-1"}};
   for (const auto& extra : bad) {
     std::vector<std::string> args = {"simulate", c.pmml, c.cmml, "--model", "dynamic", "--frames", frames};
     args.insert(args.end(), extra.begin(), extra.end());

@@ -51,6 +51,9 @@ TEST(DynamicRobustness, BadOptionsAreRefused) {
   refuse([](auto& o) { o.time_step = INFINITY; });
   refuse([](auto& o) { o.time_step = 0.5; });  // longer than the motors' approach_time
   refuse([](auto& o) { o.fixed_actor = 99; });
+  refuse([](auto& o) { o.iterations = 0; });
+  refuse([](auto& o) { o.projection_interval = -0.01; });
+  refuse([](auto& o) { o.projection_interval = NAN; });
   refuse([](auto& o) { o.start = Eigen::VectorXd::Constant(5, 0.1); });
   geometry::FoldSequence unknown;
   unknown.events.push_back({1, {{42, 0.5, 1.0, 0}}});

@@ -103,8 +103,21 @@ def test_joint_torque_start_and_free_sheet():
             foldkit.simulate(p, seq, model="dynamic", **kwargs)
 
 
+def test_iterative_solver_post_stabilised_lifts_the_flap():
+    p = foldkit.generators.strip(2)
+    seq = foldkit.sequence_to(p, np.array([math.radians(-60)]), speed=math.radians(30))
+    r = foldkit.simulate(p, seq, model="dynamic", gravity=(0, 0, -G), max_torque=1.05 * LIFT, solver="iterative",
+                         iterations=20, projection_interval=1e-3)
+    assert r.valid and r.final_state[0] == pytest.approx(math.radians(-60), abs=2e-4)
+    assert r.max_corrected_error == 0.0  # a flap has no loop to correct
+    for kwargs in [{"solver": "magic"}, {"iterations": 0}, {"projection_interval": -1.0}]:
+        with pytest.raises(ValueError):
+            foldkit.simulate(p, seq, model="dynamic", **kwargs)
+
+
 @pytest.mark.parametrize("kwargs", [{"gravity": (0, 0, -G)}, {"contacts": True}, {"ground": 0.0}, {"fixed": 1},
-                                    {"joint_torque": {1: 1.0}}, {"max_torque": 2.0}])
+                                    {"joint_torque": {1: 1.0}}, {"max_torque": 2.0}, {"solver": "iterative"},
+                                    {"projection_interval": 0.01}])
 def test_physics_options_are_refused_for_the_kinematic_models(kwargs):
     p = foldkit.generators.strip(2)
     seq = foldkit.sequence_to(p, np.array([0.5]), speed=1.0)

@@ -50,6 +50,11 @@ enum class Solver {
   Iterative,  ///< ODE's dWorldQuickStep (projected Gauss–Seidel, DynamicOptions::iterations sweeps)
   Direct,     ///< ODE's dWorldStep (dense LCP: exact, cubic in the constraint rows)
 };
+/// "iterative" or "direct" (`foldkit simulate --solver`).
+const char* to_string(Solver solver);
+/// The solver named "iterative" or "direct".
+/// @throws std::invalid_argument for any other name
+Solver parse_solver(const std::string& name);
 
 /// Options of simulate_dynamic(): every default of the dynamic model, once.
 struct DynamicOptions {
@@ -87,6 +92,13 @@ struct DynamicOptions {
   /// what keeps the hinges, and so the closed loops, from drifting.
   double erp = 0.2;
   double cfm = 1e-10;        ///< constraint force mixing (ODE's CFM, ≥ 0): softness of the hinges
+  /// Seconds between post-stabilisations (≥ 0; 0: none): after such a step the angles read off
+  /// the bodies are projected onto the closure manifold (geometry::project, the motor-driven
+  /// joints held), the bodies placed there and their velocities set to the nearest joint rates
+  /// that keep the loops closed. What lets Solver::Iterative's few sweeps keep the loops closed.
+  /// The closure checks then see the corrected poses; DynamicReport::max_corrected_error is what
+  /// the engine's steps left before the corrections.
+  double projection_interval = 0.0;
   /// A motor commands speed min(CMML speed, |θ* − θ| / approach_time) toward its angle, seconds:
   /// it slows down exponentially over the last approach_time·speed radians and holds there.
   double approach_time = 0.02;
@@ -168,6 +180,10 @@ struct DynamicReport {
   double seconds = 0.0;            ///< wall-clock seconds the engine ran
   std::size_t steps = 0;           ///< engine steps
   double max_closure_error = 0.0;  ///< largest loop error of the engine's poses (ClosureSystem), radians
+  /// Largest loop error of the engine's poses just before a post-stabilisation corrected them
+  /// (DynamicOptions::projection_interval), radians: the drift the solver leaves in one interval.
+  /// 0 without post-stabilisation.
+  double max_corrected_error = 0.0;
   double closure_tolerance = 0.0;  ///< radians
   std::vector<DynamicEventReport> events;  ///< one per event run, in order
   std::vector<Stall> stalls;       ///< joints that stalled (the run stops at the first event with any)
@@ -194,7 +210,8 @@ struct DynamicReport {
 ///         tolerance that is not positive and finite, a time step above approach_time or
 ///         stall_time, gravity, ground, friction or thickness not finite (friction negative,
 ///         thickness not positive), an unknown fixed
-///         actor, iterations < 1, erp outside (0, 1], a start state of the wrong size, not finite
+///         actor, iterations < 1, erp outside (0, 1], a negative or non-finite
+///         projection_interval, a start state of the wrong size, not finite
 ///         or not closed) or a sequence naming joints the pattern lacks
 /// @throws simulation::SequenceError for a fold whose speed is not positive and finite, or (spring
 ///         drive) a joint with neither spring nor damping constant
