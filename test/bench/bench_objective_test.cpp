@@ -13,19 +13,14 @@
 #include "foldkit/bench/log.hpp"
 #include "foldkit/bench/run.hpp"
 #include "foldkit/planners/planner_factory.hpp"
+#include "cli_runner.hpp"
 #include "test_paths.hpp"
 #include "test_time.hpp"
 
 namespace {
 
 namespace fb = foldkit::bench;
-
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using foldkit::test::slurp;
 
 fb::BenchOptions options(const std::string& dir) {
   fb::BenchOptions o;
@@ -70,7 +65,7 @@ TEST(BenchObjective, LogsTheObjectiveItsCostAndTheBestCostOverTimeThroughMerging
     o.shards = 2;
     const auto results = fb::run_bench(o);
     ASSERT_EQ(results.size(), 1u);
-    shards.push_back(fb::parse_bench_log(read(results[0].log), results[0].log));
+    shards.push_back(fb::parse_bench_log(slurp(results[0].log), results[0].log));
   }
   const fb::BenchLog merged = fb::merge_bench_logs(shards, {"shard 1", "shard 2"});
   ASSERT_NE(merged.parameter("objective STRING"), nullptr);
@@ -106,12 +101,12 @@ TEST(BenchObjective, LogsTheObjectiveItsCostAndTheBestCostOverTimeThroughMerging
   std::filesystem::create_directories(merged_dir);
   std::ofstream(merged_dir + "/vertex8-random.log") << text;
   const std::string cmd = "cd '" + merged_dir + "' && ompl_benchmark_statistics -d bench.db vertex8-random.log >stats.out 2>&1";
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << read(merged_dir + "/stats.out");
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(merged_dir + "/stats.out");
   const std::string query = "python3 -c \"import sqlite3; c = sqlite3.connect('" + merged_dir +
                             "/bench.db'); print(c.execute('select count(*), count(distinct runid), min(best_cost) from progress')"
                             ".fetchone()[1])\" > '" + merged_dir + "/query.out' 2>&1";
-  ASSERT_EQ(std::system(query.c_str()), 0) << read(merged_dir + "/query.out");
-  EXPECT_EQ(read(merged_dir + "/query.out"), "2\n");  // RRT*'s two runs have progress rows
+  ASSERT_EQ(std::system(query.c_str()), 0) << slurp(merged_dir + "/query.out");
+  EXPECT_EQ(slurp(merged_dir + "/query.out"), "2\n");  // RRT*'s two runs have progress rows
 }
 
 TEST(BenchObjective, BadObjectiveThresholdOrCombinationWritesNothing) {

@@ -17,19 +17,14 @@
 #include "foldkit/bench/log.hpp"
 #include "foldkit/bench/run.hpp"
 #include "foldkit/bench/scenes.hpp"
+#include "cli_runner.hpp"
 #include "test_paths.hpp"
 #include "test_time.hpp"
 
 namespace {
 
 namespace fb = foldkit::bench;
-
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using foldkit::test::slurp;
 
 std::size_t index_of(const std::vector<std::string>& names, const std::string& prefix) {
   return static_cast<std::size_t>(std::find_if(names.begin(), names.end(),
@@ -86,7 +81,7 @@ TEST(BenchOptimal, LogsBestCostAgainstTimeThatNeverRises) {
   o.output_dir = dir;
   const auto results = fb::run_bench(o);
   ASSERT_EQ(results.size(), 1u);
-  const fb::BenchLog log = fb::parse_bench_log(read(results[0].log), results[0].log);
+  const fb::BenchLog log = fb::parse_bench_log(slurp(results[0].log), results[0].log);
   ASSERT_NE(log.parameter("objective STRING"), nullptr);
   EXPECT_EQ(*log.parameter("objective STRING"), "rotation");
   ASSERT_EQ(log.planners.size(), 2u);
@@ -115,18 +110,18 @@ TEST(BenchOptimal, LogsBestCostAgainstTimeThatNeverRises) {
   if (py.empty()) GTEST_SKIP() << "no python3 with matplotlib (Debian: python3-matplotlib)";
   const std::string script = foldkit::test::data_path("../../scripts/plot_bench.py");
   const std::string cmd = py + " '" + script + "' '" + dir + "' -o '" + dir + "/plots' --summary >'" + dir + "/summary.txt' 2>&1";
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << read(dir + "/summary.txt");
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(dir + "/summary.txt");
   EXPECT_TRUE(std::filesystem::exists(dir + "/plots/vertex12-random.cost.svg"));
-  const std::string summary = read(dir + "/summary.txt");
+  const std::string summary = slurp(dir + "/summary.txt");
   EXPECT_NE(summary.find("| vertex12-random | RRT* | 2/2 | "), std::string::npos) << summary;
   EXPECT_NE(summary.find("| vertex12-random | FMT | "), std::string::npos) << summary;
   // A log cut short is refused with its line, and no figure is drawn from it.
-  const std::string text = read(results[0].log);
+  const std::string text = slurp(results[0].log);
   std::filesystem::create_directories(dir + "/cut");
   std::ofstream(dir + "/cut/vertex12-random.log") << text.substr(0, text.find("geometric_FMT"));
   const std::string bad = py + " '" + script + "' '" + dir + "/cut' >'" + dir + "/cut.txt' 2>&1";
   EXPECT_NE(std::system(bad.c_str()), 0);
-  EXPECT_NE(read(dir + "/cut.txt").find("vertex12-random.log:"), std::string::npos) << read(dir + "/cut.txt");
+  EXPECT_NE(slurp(dir + "/cut.txt").find("vertex12-random.log:"), std::string::npos) << slurp(dir + "/cut.txt");
   EXPECT_FALSE(std::filesystem::exists(dir + "/cut/vertex12-random.cost.svg"));
 }
 
@@ -142,7 +137,7 @@ TEST(BenchOptimal, TheOptionsObjectiveReplacesTheSuites) {
   o.output_dir = foldkit::test::temp_dir() + "/length";
   const auto results = fb::run_bench(o);
   ASSERT_EQ(results.size(), 1u);
-  const fb::BenchLog log = fb::parse_bench_log(read(results[0].log), results[0].log);
+  const fb::BenchLog log = fb::parse_bench_log(slurp(results[0].log), results[0].log);
   ASSERT_NE(log.parameter("objective STRING"), nullptr);
   EXPECT_EQ(*log.parameter("objective STRING"), "length");
 }

@@ -77,6 +77,14 @@ PlanSetup setup_for(const CreasePattern& p, double fraction) {
   return foldkit::planners::make_plan_setup(p, foldkit::test::folded_along_assignment(p, fraction), o);
 }
 
+// A recalled or repaired path: valid by the space's own checks, from the setup's start to its goal.
+void expect_valid_path(const PlanSetup& setup, const og::PathGeometric& path, const Solved& solved) {
+  for (unsigned int i = 0; i + 1 < static_cast<unsigned int>(path.getStateCount()); ++i)
+    EXPECT_TRUE(setup.si->checkMotion(path.getState(i), path.getState(i + 1)));
+  EXPECT_LT((solved.states.front().angles - setup.prefix.back().angles).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((solved.states.back().angles - setup.goal.angles).cwiseAbs().maxCoeff(), 1e-6);
+}
+
 ExperienceDatabase database_for(const PlanSetup& setup) {
   return ExperienceDatabase(setup.si, setup.plan_space->name(), foldkit::planners::pattern_fingerprint(*setup.pattern));
 }
@@ -194,11 +202,7 @@ TEST(Experience, StoredPathIsRecalledForANewGoal) {
   const Solved second = solve(to_07, &loaded, 2, &path);
   ASSERT_TRUE(second.ok);
   EXPECT_TRUE(second.recalled);
-  // Valid by the space's own checks, from the start to the new goal.
-  for (unsigned int i = 0; i + 1 < static_cast<unsigned int>(path.getStateCount()); ++i)
-    EXPECT_TRUE(to_07.si->checkMotion(path.getState(i), path.getState(i + 1)));
-  EXPECT_LT((second.states.front().angles - to_07.prefix.back().angles).cwiseAbs().maxCoeff(), 1e-9);
-  EXPECT_LT((second.states.back().angles - to_07.goal.angles).cwiseAbs().maxCoeff(), 1e-6);
+  expect_valid_path(to_07, path, second);
   EXPECT_EQ(loaded.paths(), 2u);  // the repaired path is kept too
 }
 
@@ -219,10 +223,7 @@ TEST(Experience, ThunderRecallsThroughARoadmapOfTheSameFile) {
   const Solved second = solve(to_07, &thunder, 2, &path);
   ASSERT_TRUE(second.ok);
   EXPECT_TRUE(second.recalled);
-  for (unsigned int i = 0; i + 1 < static_cast<unsigned int>(path.getStateCount()); ++i)
-    EXPECT_TRUE(to_07.si->checkMotion(path.getState(i), path.getState(i + 1)));
-  EXPECT_LT((second.states.front().angles - to_07.prefix.back().angles).cwiseAbs().maxCoeff(), 1e-9);
-  EXPECT_LT((second.states.back().angles - to_07.goal.angles).cwiseAbs().maxCoeff(), 1e-6);
+  expect_valid_path(to_07, path, second);
   ExperienceDatabase back = database_for(to_07);
   back.read(thunder.bytes(), "x.db");
   EXPECT_EQ(back.paths(), 2u);  // the same file, the recalled path added

@@ -27,3 +27,19 @@ def cli():
         return p.returncode, out, p.stderr
 
     return run
+
+
+@pytest.fixture
+def cli_experience(cli, tmp_path):
+    """A Miura 4×4 and an experience database the CLI wrote planning flat → fraction 0.8 (Lightning):
+    returns (pattern, pattern file, goal CMML, database path)."""
+    import foldkit
+
+    p = foldkit.generators.miura(4, 4)
+    pmml, g8, db = tmp_path / "m.pmml", tmp_path / "g8.cmml", tmp_path / "m.db"
+    foldkit.write_pmml(str(pmml), p)
+    foldkit.write_cmml(str(g8), foldkit.sequence_to(p, foldkit.fold(p, fraction=0.8).states[-1]))
+    rc, out, err = cli("plan", pmml, "--goal", g8, "--experience", db, "-o", tmp_path / "p8.cmml")
+    assert rc == 0, err
+    assert out["experience"]["framework"] == "lightning" and out["experience"]["paths"] == 1
+    return p, pmml, g8, db

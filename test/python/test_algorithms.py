@@ -253,15 +253,9 @@ def test_cube_chain_folds_validly():
     assert len(seq) > 0 and foldkit.simulate(sheet, seq).valid
 
 
-def test_plan_experience_database_is_shared_with_the_cli(cli, tmp_path):
+def test_plan_experience_database_is_shared_with_the_cli(cli, cli_experience, tmp_path):
     # A database the CLI made is recalled from in Python, and Python's is read by the CLI.
-    p = foldkit.generators.miura(4, 4)
-    pmml, g8, db = tmp_path / "m.pmml", tmp_path / "g8.cmml", tmp_path / "m.db"
-    foldkit.write_pmml(str(pmml), p)
-    foldkit.write_cmml(str(g8), foldkit.sequence_to(p, foldkit.fold(p, fraction=0.8).states[-1]))
-    rc, out, err = cli("plan", pmml, "--goal", g8, "--experience", db, "-o", tmp_path / "p8.cmml")
-    assert rc == 0, err
-    assert out["experience"]["paths"] == 1
+    p, pmml, g8, db = cli_experience
     r = foldkit.plan(p, foldkit.fold(p, fraction=0.7).states[-1], experience=str(db))
     assert r.solved and r.replay.valid
     assert r.experience["recalled"] and r.experience["loaded"] == 1 and r.experience["paths"] == 2

@@ -6,14 +6,8 @@ import pytest
 import foldkit
 
 
-def test_thunder_recalls_from_the_clis_database(cli, tmp_path):
-    p = foldkit.generators.miura(4, 4)
-    pmml, g8, db = tmp_path / "m.pmml", tmp_path / "g8.cmml", tmp_path / "m.db"
-    foldkit.write_pmml(str(pmml), p)
-    foldkit.write_cmml(str(g8), foldkit.sequence_to(p, foldkit.fold(p, fraction=0.8).states[-1]))
-    rc, out, err = cli("plan", pmml, "--goal", g8, "--experience", db, "-o", tmp_path / "p8.cmml")
-    assert rc == 0, err
-    assert out["experience"]["framework"] == "lightning"
+def test_thunder_recalls_from_the_clis_database(cli_experience):
+    p, pmml, g8, db = cli_experience
     r = foldkit.plan(p, foldkit.fold(p, fraction=0.7).states[-1], experience=str(db), experience_framework="thunder", seed=2)
     assert r.solved and r.replay.valid
     e = r.experience
