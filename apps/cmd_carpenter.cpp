@@ -20,6 +20,7 @@ namespace {
 struct CarpenterArgs {
   std::string chain, output, frames_csv, state;
   bool closed = false, fold = false, json = false;
+  std::string method = folding::to_string(folding::CarpenterPlanarOptions{}.method);  // folding::parse_carpenter_method
   std::size_t max_steps = folding::CarpenterPlanarOptions{}.max_steps;
 };
 
@@ -78,6 +79,7 @@ int run_planar(const CarpenterArgs& opt) {
   }
   folding::CarpenterPlanarOptions options;
   options.max_steps = opt.max_steps;
+  options.method = folding::parse_carpenter_method(opt.method);
   ProgressLine progress("carpenter");
   options.progress = progress.callback();
   const folding::CarpenterPlanarResult r = folding::carpenter_planar(chain, options);
@@ -105,6 +107,7 @@ int run_planar(const CarpenterArgs& opt) {
                      {"steps", r.steps},
                      {"frames", r.frames.size()},
                      {"lp_solves", r.lp_solves},
+                     {"method", opt.method},
                      {"seconds", r.seconds},
                      {"time", r.seconds},  // deprecated: the name of `seconds` before issue 37
                      {"max_length_error", r.max_length_error},
@@ -132,6 +135,10 @@ Command add_carpenter(CLI::App& root) {
   writes(app->add_option("--frames-csv", opt->frames_csv, "Also write the frames as CSV: frame,vertex,x,y"));
   app->add_flag("--fold", opt->fold, "Write the frames backwards: the folding motion, straight (convex) to the input");
   reads(app->add_option("--state", opt->state, "Single vertex: CMML whose end state is the folded input"));
+  app->add_option("--method", opt->method,
+                  "Planar chains: 'carried' (default: the last step's motion carried over each event, mended "
+                  "by small LPs) or 'lp' (one global LP per step, the baseline); docs/CARPENTER.md")
+      ->check(CLI::IsMember(folding::carpenter_method_names()));
   positive(app->add_option("--max-steps", opt->max_steps, "Stop after this many steps (exit 4)"));
   add_json(app, opt->json);
   return {app, [opt] {

@@ -198,7 +198,7 @@ std::vector<double> joint_angles(const MergedChain& chain) {
 
 bool any_joint_flips(const MergedChain& chain, const Frame2& q, const std::vector<double>& theta0) {
   bool flips = false;
-  for (int a = 0; a < chain.vertices() && !flips; ++a) flips = chain.is_joint(a) && sign(chain.theta(q, a)) != sign(theta0[a]);
+  for (int a = 0; a < chain.vertices() && !flips; ++a) flips = chain.is_joint(a) && turn_sign(chain, q, a) != sign(theta0[a]);
   return flips;
 }
 
@@ -221,19 +221,44 @@ int look_ahead(const MergedChain& chain, const Frame2& v, const std::vector<doub
   return 0;
 }
 
+// The sign of the turn at joint a of q: sign(chain.theta(q, a)) without the arc tangent where the
+// cross product decides it (atan2(y, x) has the sign of y unless y is 0).
+double turn_sign(const MergedChain& chain, const Frame2& q, int a) {
+  const int m = chain.vertices();
+  const Vec u = q[a] - q[(a + m - 1) % m], w = q[(a + 1) % m] - q[a];
+  const double c = cross(u, w);
+  return c != 0.0 ? sign(c) : sign(std::atan2(c, u.dot(w)));
+}
+
 // The step length within (0, h] at which joint a passes straight, from below (by bisection).
 double straight_crossing(const MergedChain& chain, const Frame2& v, const std::vector<double>& omega,
                          const std::vector<double>& theta0, int a, double h) {
   double lo = 0.0, hi = h;
+  // Which side joint a is on after a step of length s. An open chain's layout turns each bar at a
+  // constant rate from its own direction, so the turn at a depends on bars a − 1 and a only:
+  // evaluated on those two (as advance() turns them) instead of laying out the whole chain, once
+  // per halving. A closed chain's closing correction moves every bar: laid out whole.
+  const Frame2& q = chain.q();
+  auto direction = [&](int bar, double s) {
+    const Vec d = q[bar + 1] - q[bar], dv = v[bar + 1] - v[bar];
+    const double phi = std::atan2(d.y(), d.x()) + s * cross(d, dv) / d.squaredNorm();
+    return Vec(std::cos(phi), std::sin(phi));
+  };
+  auto side = [&](double s) {
+    if (chain.closed()) return turn_sign(chain, advance(chain, v, s), a);
+    const Vec u = direction(a - 1, s), w = direction(a, s);
+    const double c = cross(u, w);
+    return c != 0.0 ? sign(c) : sign(std::atan2(c, u.dot(w)));
+  };
+  const double before = sign(theta0[a]);
   // Open chains turn each joint at a constant rate in angle coordinates, so the crossing is near
   // −θ₀/θ̇: bisection starts from a bracket around it when the bracket holds (it spares some 30
-  // of the ~50 halvings, each a layout of the whole chain).
+  // of the ~50 halvings).
   const double rate = joint_rate(chain, omega, a);
   const double guess = rate != 0.0 ? -theta0[a] / rate : 0.0;
   if (!chain.closed() && guess > 0.0 && guess < h) {
     const double below = guess * (1.0 - 1e-9), above = std::min(h, guess * (1.0 + 1e-9));
-    if (sign(chain.theta(advance(chain, v, below), a)) == sign(theta0[a]) &&
-        sign(chain.theta(advance(chain, v, above), a)) != sign(theta0[a])) {
+    if (side(below) == before && side(above) != before) {
       lo = below;
       hi = above;
     }
@@ -241,7 +266,7 @@ double straight_crossing(const MergedChain& chain, const Frame2& v, const std::v
   for (int i = 0; i < 200; ++i) {
     const double mid = 0.5 * (lo + hi);
     if (mid <= lo || mid >= hi) break;
-    if (sign(chain.theta(advance(chain, v, mid), a)) == sign(theta0[a]))
+    if (side(mid) == before)
       lo = mid;
     else
       hi = mid;
@@ -259,7 +284,7 @@ StepOutcome try_steps(const MergedChain& chain, const Frame2& v, const std::vect
     // A joint that would pass straight stops the step exactly there; it is then merged.
     step.event_joint = -1;
     for (int a = 0; a < chain.vertices(); ++a) {
-      if (!chain.is_joint(a) || sign(chain.theta(step.next, a)) == sign(theta0[a])) continue;
+      if (!chain.is_joint(a) || turn_sign(chain, step.next, a) == sign(theta0[a])) continue;
       // Joints are visited in order and `next` follows h, so a joint is bisected only when it
       // still passes straight within the step already shortened for earlier ones.
       h = straight_crossing(chain, v, omega, theta0, a, h);

@@ -157,6 +157,9 @@ double fastest_joint(const MergedChain& chain, const std::vector<double>& omega)
 // Turn of every joint (0 at the ends of an open chain).
 std::vector<double> joint_angles(const MergedChain& chain);
 
+// The sign of the turn at joint a of q (−1, 0, 1): sign(chain.theta(q, a)), cheaper.
+double turn_sign(const MergedChain& chain, const Frame2& q, int a);
+
 // Whether some joint turns the other way at q than in theta0 (it passed straight).
 bool any_joint_flips(const MergedChain& chain, const Frame2& q, const std::vector<double>& theta0);
 

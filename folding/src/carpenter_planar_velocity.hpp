@@ -43,4 +43,26 @@ ExpansiveVelocity expansive_velocity(const std::vector<Eigen::Vector2d>& p, bool
                                      bool all_struts, const std::vector<int>* key = nullptr,
                                      BasisMemo* memo = nullptr);
 
+// A field carried over from the last step (CarpenterPlanarMethod::CarriedField), mended.
+struct CarriedVelocity {
+  std::vector<Eigen::Vector2d> v;  // bar 0 fixed
+  std::vector<double> speed;       // joint speeds, per vertex
+  double t = 0.0;                  // smallest weighted rate over all pairs, capped at 2
+  std::size_t lp_solves = 0;       // window LPs solved
+  std::size_t struts = 0;          // rows of the last window LP
+  bool solved = false;
+};
+
+// The open chain p with joints turning at `speed` (per vertex; the chain's ends 0), checked on
+// all pairs: where some pair's weighted rate is below `floor`, only the joints near the ends of
+// such pairs (inside them) and near the bars in `dropped` (bars a, between vertices a and a + 1,
+// that have lost a joint since the field was solved: every pair across such a bar lost that
+// joint's share of its rate) change, by an LP that minimises their Σ|θ̇| with every such pair's
+// weighted rate ≥ 1 and the other joints at their speeds; pairs found weak after it are added
+// and the window widened (doubled when its LP is infeasible) until the all-pairs check passes.
+// Not solved when that takes more than `max_window` joints or 30 rounds: the caller then solves
+// the global LP.
+CarriedVelocity carried_velocity(const std::vector<Eigen::Vector2d>& p, std::vector<double> speed,
+                                 const std::vector<int>& dropped, double floor, int max_window);
+
 }  // namespace foldkit::folding::detail

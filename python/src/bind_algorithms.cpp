@@ -162,7 +162,9 @@ void bind_carpenter(py::module_& m) {
                              "The motion, shape (frames, points, 2); frames[0] is the input.")
       .def_readonly("closed", &R::closed, "Whether the chain is closed.")
       .def_readonly("steps", &R::steps, "Steps taken.")
-      .def_readonly("lp_solves", &R::lp_solves, "LPs solved.")
+      .def_readonly("lp_solves", &R::lp_solves, "LPs solved (window LPs included).")
+      .def_readonly("window_lp_solves", &R::window_lp_solves, "Window LPs that mended a carried field (method 'carried').")
+      .def_readonly("carried_steps", &R::carried_steps, "Steps on a carried, perhaps mended, field (method 'carried').")
       .def_readonly("max_struts", &R::max_struts, "Most strut rows any LP held.")
       .def_readonly("seconds", &R::seconds, "Wall-clock seconds of the run.")
       .def_readonly("max_length_error", &R::max_length_error, "Largest bar-length change over the frames.")
@@ -170,7 +172,7 @@ void bind_carpenter(py::module_& m) {
                     "Smallest change of any non-bar distance between frames (≥ 0: expansive).");
   m.def(
       "carpenter",
-      [](const Eigen::MatrixX2d& points, bool closed, std::size_t max_steps, std::size_t frame_stride) {
+      [](const Eigen::MatrixX2d& points, bool closed, std::size_t max_steps, std::size_t frame_stride, const std::string& method) {
         require(frame_stride >= 1, "frame_stride", "at least 1", static_cast<double>(frame_stride));
         folding::PlanarChain chain;
         chain.closed = closed;
@@ -182,13 +184,15 @@ void bind_carpenter(py::module_& m) {
         folding::CarpenterPlanarOptions o;
         o.max_steps = max_steps;
         o.frame_stride = frame_stride;
+        o.method = folding::parse_carpenter_method(method);
         py::gil_scoped_release release;
         return folding::carpenter_planar(chain, o);
       },
       py::arg("points"), py::arg("closed") = false, py::arg("max_steps") = folding::CarpenterPlanarOptions{}.max_steps,
-      py::arg("frame_stride") = 1,
+      py::arg("frame_stride") = 1, py::arg("method") = std::string(folding::to_string(folding::CarpenterPlanarOptions{}.method)),
       "Straightens an open planar chain (points: (n, 2) array) or convexifies a closed one, as `foldkit carpenter`; "
-      "ValueError when the chain is not simple.");
+      "method 'carried' (the default) or 'lp' as `--method` (docs/CARPENTER.md); ValueError when the chain is not simple "
+      "or the method unknown.");
 
   using S = folding::CarpenterSphericalResult;
   py::class_<S>(m, "CarpenterVertexResult", "A single vertex flattened by the spherical Carpenter's rule.")

@@ -145,6 +145,24 @@ TEST(CarpenterCli, UsageErrorsAndStepLimit) {
   EXPECT_NE(r.err.find("not straight"), std::string::npos);
 }
 
+// --method picks how each step's motion is found (docs/CARPENTER.md, "Methods"): both straighten
+// the spiral expansively, the JSON names the method, and an unknown one is a usage error.
+TEST(CarpenterCli, MethodOptionSelectsTheGlobalLpOrTheCarriedField) {
+  const std::string chain = write_temp("spiral4.txt", kSpiral);
+  for (const char* method : {"lp", "carried"}) {
+    SCOPED_TRACE(method);
+    const CliResult r = foldkit({"carpenter", chain, "--method", method, "--json"});
+    ASSERT_EQ(r.exit, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["method"].get<std::string>(), method);
+    EXPECT_TRUE(j["straight"].get<bool>());
+    EXPECT_GE(j["min_distance_growth"].get<double>(), -1e-12);
+    EXPECT_LE(j["max_length_error"].get<double>(), 1e-9);
+  }
+  EXPECT_EQ(nlohmann::json::parse(foldkit({"carpenter", chain, "--json"}).out)["method"].get<std::string>(), "carried");
+  EXPECT_EQ(foldkit({"carpenter", chain, "--method", "simplex"}).exit, 2);
+}
+
 TEST(CarpenterCli, SingleVertexPmmlIsFlattenedOnTheSphere) {
   // A degree-4 vertex folded to a closed state (projected by foldkit project), then flattened.
   const std::string pattern = write_temp("v4.pmml", "");

@@ -183,14 +183,16 @@ def random_walk(n, seed):
             return np.array(pts, float) + 0.1 * rng.uniform(-1, 1, (n + 1, 2))
 
 
-def test_carpenter_is_expansive_and_matches_cli(cli, tmp_path):
+@pytest.mark.parametrize("method", ["carried", "lp"])
+def test_carpenter_is_expansive_and_matches_cli(cli, tmp_path, method):
     pts = random_walk(30, seed=2)
     chain = tmp_path / "c.txt"
     chain.write_text("".join(f"{x!r} {y!r}\n" for x, y in pts))
-    rc, expected, err = cli("carpenter", chain, "-o", tmp_path / "out.json")
+    rc, expected, err = cli("carpenter", chain, "--method", method, "-o", tmp_path / "out.json")
     assert rc == 0, err
-    r = foldkit.carpenter(foldkit.read_chain(str(chain)))
-    assert r.status.ok and r.steps == expected["steps"]
+    r = foldkit.carpenter(foldkit.read_chain(str(chain)), method=method)
+    assert r.status.ok and r.steps == expected["steps"] and expected["method"] == method
+    assert (r.carried_steps > 0) == (method == "carried") and r.window_lp_solves <= r.lp_solves
     f = r.frames
     np.testing.assert_allclose(f[0], pts, atol=1e-12)
     bars = np.linalg.norm(np.diff(f, axis=1), axis=2)
@@ -200,6 +202,11 @@ def test_carpenter_is_expansive_and_matches_cli(cli, tmp_path):
     end = f[-1] - f[-1][0]
     direction = end[-1] / np.linalg.norm(end[-1])
     assert np.max(np.abs(end[:, 0] * direction[1] - end[:, 1] * direction[0])) < 1e-6  # straight
+
+
+def test_carpenter_refuses_an_unknown_method():
+    with pytest.raises(ValueError, match="unknown Carpenter method 'fast'"):
+        foldkit.carpenter(random_walk(5, seed=1), method="fast")
 
 
 def test_carpenter_convexifies_a_polygon():

@@ -1,8 +1,9 @@
 #pragma once
 /// @file
 /// Carpenter's rule for planar chains (Connelly, Demaine & Rote 2003; docs/CARPENTER.md): an open
-/// chain is straightened and a closed one convexified by strictly expansive motions, each step an
-/// LP for a velocity field in which bars keep their lengths and every other vertex distance grows.
+/// chain is straightened and a closed one convexified by strictly expansive motions, each step a
+/// velocity field in which bars keep their lengths and every other vertex distance grows, from an
+/// LP or carried over from the step before (CarpenterPlanarMethod).
 /// Folding is unfolding replayed backwards (reversed()).
 #include <cstddef>
 #include <string>
@@ -25,8 +26,38 @@ struct PlanarChain {
   bool closed = false;  ///< whether a bar joins pn back to p0
 };
 
+/// How carpenter_planar() finds the expansive motion of each step (docs/CARPENTER.md, "Methods").
+enum class CarpenterPlanarMethod {
+  /// One Connelly–Demaine–Rote LP per step (constraint generation, Clp), certified on all pairs:
+  /// the baseline, `--method lp`.
+  Lp,
+  /// Open chains: the last step's joint speeds are carried over the step's event (the joint
+  /// that went straight drops out) and checked on all pairs; where some pair's weighted rate
+  /// fell below `carry_rate`, a small LP over the joints next to the straightened ones and near
+  /// the weak pairs' ends mends the field.
+  /// The global LP only starts the run and takes over when the mending fails. Closed chains as
+  /// Lp (dropping a joint's speed would open the polygon). `--method carried`.
+  CarriedField,
+};
+/// The method's name as `foldkit carpenter --method` and Python's `method=` spell it: "lp" or
+/// "carried".
+const char* to_string(CarpenterPlanarMethod method);
+/// The method named "lp" or "carried".
+/// @throws std::invalid_argument for any other name
+CarpenterPlanarMethod parse_carpenter_method(const std::string& name);
+/// Every method's name, the default's first.
+std::vector<std::string> carpenter_method_names();
+
 /// Options of carpenter_planar().
 struct CarpenterPlanarOptions {
+  /// How each step's motion is found.
+  CarpenterPlanarMethod method = CarpenterPlanarMethod::CarriedField;
+  /// CarriedField: a carried field is used while its smallest weighted strut rate (the LP asks
+  /// for ≥ 1) is at least this.
+  double carry_rate = 0.5;
+  /// CarriedField: largest window LP, as a fraction of the merged joints (at least 64 joints);
+  /// a field that needs more is found by the global LP.
+  double repair_window = 0.25;
   std::size_t max_steps = 200'000;  ///< steps at most (then StatusCode::LimitReached)
   /// Largest turn of any joint in one step (radians); a step is halved until no vertex distance
   /// shrinks, and ends early where a joint becomes straight.
@@ -56,6 +87,8 @@ struct CarpenterPlanarResult {
   geometry::Status status;
   std::size_t steps = 0;       ///< steps taken
   std::size_t lp_solves = 0;   ///< LPs solved, every constraint-generation round counted
+  std::size_t carried_steps = 0;  ///< steps taken on a carried (perhaps mended) field (CarriedField)
+  std::size_t window_lp_solves = 0;  ///< of lp_solves, the small window LPs that mended a carried field
   std::size_t max_struts = 0;  ///< most strut rows any LP held
   double seconds = 0.0;        ///< wall-clock time of the run
   /// Over every recorded frame: max |bar length − input length| (length units).

@@ -1,0 +1,177 @@
+// The two methods of the planar Carpenter's rule (CarpenterPlanarMethod: the global LP per step,
+// and the carried field mended by window LPs) against an oracle that shares nothing with the
+// planner's certificate: every frame's bar lengths, the distance between every two vertices AND
+// between every two non-adjacent bars (segment to segment) recomputed and compared with the
+// previous frame, and no two non-adjacent bars meeting.
+#include "foldkit/folding/carpenter.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "carpenter_inputs.hpp"
+
+namespace {
+
+using namespace foldkit::folding;
+using Vec = Eigen::Vector2d;
+using foldkit::microbench::segment_gap;
+
+struct Oracle {
+  double length_error = 0.0;  // max |bar − input bar| / input bar
+  double vertex_growth = std::numeric_limits<double>::infinity();  // min d_new − d_old, every vertex pair
+  double bar_growth = std::numeric_limits<double>::infinity();     // the same, non-adjacent bars
+  double min_gap = std::numeric_limits<double>::infinity();        // smallest non-adjacent bar gap
+};
+
+// Non-adjacent bars a < b of an n-vertex chain (closed: bar n − 1 joins the last vertex to 0).
+template <typename F>
+void for_bar_pairs(std::size_t n, bool closed, F&& f) {
+  const std::size_t bars = closed ? n : n - 1;
+  for (std::size_t a = 0; a < bars; ++a)
+    for (std::size_t b = a + 2; b < bars; ++b)
+      if (!(closed && a == 0 && b == bars - 1)) f(a, b);
+}
+
+Oracle check_frames(const std::vector<Frame2>& frames, const Frame2& input, bool closed) {
+  Oracle o;
+  const std::size_t n = input.size(), bars = closed ? n : n - 1;
+  auto bar_gap = [&](const Frame2& p, std::size_t a, std::size_t b) {
+    return segment_gap(p[a], p[(a + 1) % n], p[b], p[(b + 1) % n]);
+  };
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    const Frame2& p = frames[f];
+    for (std::size_t b = 0; b < bars; ++b) {
+      const double l0 = (input[(b + 1) % n] - input[b]).norm();
+      o.length_error = std::max(o.length_error, std::abs((p[(b + 1) % n] - p[b]).norm() - l0) / l0);
+    }
+    for_bar_pairs(n, closed, [&](std::size_t a, std::size_t b) { o.min_gap = std::min(o.min_gap, bar_gap(p, a, b)); });
+    if (f == 0) continue;
+    const Frame2& q = frames[f - 1];
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) o.vertex_growth = std::min(o.vertex_growth, (p[j] - p[i]).norm() - (q[j] - q[i]).norm());
+    for_bar_pairs(n, closed, [&](std::size_t a, std::size_t b) {
+      o.bar_growth = std::min(o.bar_growth, bar_gap(p, a, b) - bar_gap(q, a, b));
+    });
+  }
+  return o;
+}
+
+CarpenterPlanarResult run(const Frame2& input, bool closed, CarpenterPlanarMethod method, std::size_t stride = 1) {
+  CarpenterPlanarOptions options;
+  options.method = method;
+  options.frame_stride = stride;
+  return carpenter_planar({input, closed}, options);
+}
+
+void expect_certified(const CarpenterPlanarResult& r, const Frame2& input, bool closed) {
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_GE(r.frames.size(), 2u);
+  const Oracle o = check_frames(r.frames, input, closed);
+  // Distances are compared to within rounding, which grows with the coordinates: the layouts sum
+  // up to n bars (docs/CARPENTER.md, step size), so the bound is relative to the chain's length:
+  // 1e-13 of it is about n·u·length at n = 450 (the 40-gon below shrinks one distance by 1.8e-12,
+  // a few 1e-14 of its length; an absolute 1e-12 failed there).
+  double length = 0.0;
+  for (std::size_t i = 0; i + 1 < input.size(); ++i) length += (input[i + 1] - input[i]).norm();
+  EXPECT_LE(o.length_error, 1e-9);
+  EXPECT_GE(o.vertex_growth, -1e-13 * length);
+  EXPECT_GE(o.bar_growth, -1e-13 * length);
+  EXPECT_GT(o.min_gap, 0.0);
+  if (closed)
+    EXPECT_TRUE(is_convex(r.frames.back()));
+  else
+    EXPECT_TRUE(is_straight(r.frames.back()));
+}
+
+// The benchmark's own input at a size where the carried field has to be mended many times: both
+// methods straighten it, every frame certified by the oracle; the carried field takes most steps
+// without the global LP and needs fewer global LPs.
+TEST(CarpenterPlanarMethods, LatticeWalkStraightensCertifiedByBothMethods) {
+  const Frame2 walk = foldkit::microbench::random_lattice_walk(300, 2);
+  const CarpenterPlanarResult lp = run(walk, false, CarpenterPlanarMethod::Lp, 3);
+  const CarpenterPlanarResult carried = run(walk, false, CarpenterPlanarMethod::CarriedField, 3);
+  {
+    SCOPED_TRACE("lp");
+    expect_certified(lp, walk, false);
+  }
+  {
+    SCOPED_TRACE("carried");
+    expect_certified(carried, walk, false);
+  }
+  EXPECT_EQ(lp.carried_steps, 0u);
+  EXPECT_EQ(lp.window_lp_solves, 0u);
+  EXPECT_GT(carried.carried_steps, carried.steps / 2);
+  EXPECT_GT(carried.window_lp_solves, 0u);
+  EXPECT_LT(carried.lp_solves - carried.window_lp_solves, (lp.lp_solves + 1) / 2);
+}
+
+// Random chains of random_chain (bars 0.5–1.5, sharp turns), several seeds, every frame.
+TEST(CarpenterPlanarMethods, RandomChainsStraightenCertifiedByTheCarriedField) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const Frame2 chain = foldkit::microbench::random_chain(60, seed);
+    expect_certified(run(chain, false, CarpenterPlanarMethod::CarriedField), chain, false);
+  }
+}
+
+// The same input and options give the same frames, bit for bit.
+TEST(CarpenterPlanarMethods, CarriedFieldIsDeterministic) {
+  const Frame2 walk = foldkit::microbench::random_lattice_walk(120, 5);
+  const CarpenterPlanarResult a = run(walk, false, CarpenterPlanarMethod::CarriedField);
+  const CarpenterPlanarResult b = run(walk, false, CarpenterPlanarMethod::CarriedField);
+  ASSERT_TRUE(a.status.ok()) << a.status.message;
+  EXPECT_EQ(a.frames, b.frames);
+  EXPECT_EQ(a.lp_solves, b.lp_solves);
+}
+
+// A polygon cannot carry a field (dropping a joint's speed would open it): the CarriedField
+// method convexifies it exactly as the global LP does.
+TEST(CarpenterPlanarMethods, ClosedChainsTakeTheGlobalLpUnderEitherMethod) {
+  const Frame2 star = foldkit::microbench::random_star(40, 3);
+  const CarpenterPlanarResult lp = run(star, true, CarpenterPlanarMethod::Lp);
+  const CarpenterPlanarResult carried = run(star, true, CarpenterPlanarMethod::CarriedField);
+  expect_certified(carried, star, true);
+  EXPECT_EQ(carried.carried_steps, 0u);
+  EXPECT_EQ(carried.frames, lp.frames);
+}
+
+// The oracle itself fails on a motion that brings two bars closer, and on a stretched bar.
+TEST(CarpenterPlanarMethods, OracleCatchesShrinkingAndStretching) {
+  const Frame2 a = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  Frame2 closer = a;
+  closer[3] = Vec(0.2, 0.4);  // bar 2 turned about (1, 1), its length kept: its tip nears bar 0
+  const Oracle shrink = check_frames({a, closer}, a, false);
+  EXPECT_LE(shrink.length_error, 1e-12);
+  EXPECT_LT(shrink.bar_growth, 0.0);
+  EXPECT_LT(shrink.vertex_growth, 0.0);
+  Frame2 stretched = a;
+  stretched[3] = Vec(-0.5, 1);
+  EXPECT_GT(check_frames({a, stretched}, a, false).length_error, 0.1);
+}
+
+// Issue 36's target size, the 10,000-link walk of bench_carpenter's
+// StraightenLatticeWalkCarried/10000: it does not straighten in minutes (docs/CARPENTER.md,
+// Limits: the first global LP alone took 139 s of CPU), so this runs its first step and certifies
+// it at that size: check_motion recomputes bar lengths and all 5·10⁷ vertex distances from the
+// frames, not from the planner's own bookkeeping.
+TEST(AtScale, TenThousandLinkWalkTakesACertifiedFirstStep) {
+  const Frame2 walk = foldkit::microbench::random_lattice_walk(10000, 1);
+  CarpenterPlanarOptions options;
+  options.max_steps = 1;
+  const CarpenterPlanarResult r = carpenter_planar({walk, false}, options);
+  EXPECT_EQ(r.status.code, foldkit::geometry::StatusCode::LimitReached) << r.status.message;
+  ASSERT_EQ(r.steps, 1u);
+  ASSERT_EQ(r.frames.size(), 2u);
+  EXPECT_EQ(r.frames.front(), walk);
+  EXPECT_NE(r.frames.back(), walk);
+  const MotionCheck check = check_motion(r.frames, false);
+  EXPECT_LE(check.max_length_error, 1e-9);
+  EXPECT_GE(check.min_distance_growth, -1e-9);
+}
+
+}  // namespace
