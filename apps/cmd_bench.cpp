@@ -156,9 +156,13 @@ void add_bench_options(CLI::App* app, const std::shared_ptr<BenchArgs>& opt) {
       })
       ->capture_default_str();
   app->add_option("--param", opt->params, "NAME=VALUE: a sampling planner's parameter by OMPL's name (repeatable)");
+  // The suites' own objectives, as the suites declare them.
+  std::string suite_objectives;
+  for (const auto& suite : bench::bench_suites())
+    if (!suite.objective.empty()) suite_objectives += suite.name + ": " + suite.objective + "; ";
   opt->objective_option = app->add_option("--objective", opt->objective,
                   "What the sampling planners optimise, as foldkit plan --objective (length, rotation, clearance, "
-                  "NAME:WEIGHT,…); default: the suite's (optimal: rotation; the others: length)");
+                  "NAME:WEIGHT,…); default: the suite's (" + suite_objectives + "the others: length)");
   opt->cost_threshold_option = app->add_option(
       "--cost-threshold", opt->cost_threshold, "An optimising planner stops once its path costs less than this (clearance: more)");
   app->add_option("--error-vs-time", opt->error_vs_time,
