@@ -125,7 +125,10 @@ TEST(PlannerNames, InformedPlannersPlanAndPrmStopsAtItsFirstPath) {
 
 // Threaded planners are not reproducible from the seed (their threads race), so each gets three
 // tries: AnytimePathShortening came back without a path (OMPL's "Unknown status") once in eight
-// runs on the degree-6 vertex, where RRTConnect alone takes a millisecond.
+// runs on the degree-6 vertex, where RRTConnect alone takes a millisecond. A planner whose time ran
+// out (LimitReached) tries again with twice the time, twice: the limit is wall-clock, and under a
+// loaded CI machine LBKPIECE1 (seed 3, degree-6 vertex) ran out of its 3 s once; what is checked
+// is that each planner solves, not how fast.
 void solve_or_refuse(const CreasePattern& p, const FoldState& goal, const std::string& scene) {
   for (const std::string& name : fp::planner_names()) {
     SCOPED_TRACE(scene + ", " + name);
@@ -137,7 +140,12 @@ void solve_or_refuse(const CreasePattern& p, const FoldState& goal, const std::s
     o.quiet = true;
     try {
       fp::PlanResult r = fp::plan(p, goal, o);
-      for (int again = 0; again < 2 && !r.status.ok() && fp::planner_is_threaded(name); ++again) r = fp::plan(p, goal, o);
+      for (int again = 0; again < 2 && !r.status.ok(); ++again) {
+        const bool timed_out = r.status.code == foldkit::geometry::StatusCode::LimitReached;
+        if (!timed_out && !fp::planner_is_threaded(name)) break;
+        if (timed_out) o.time *= 2.0;
+        r = fp::plan(p, goal, o);
+      }
       EXPECT_TRUE(fp::planner_refusal(name).empty());
       ASSERT_TRUE(r.status.ok()) << r.status.message;
       ASSERT_TRUE(r.replay.has_value());
