@@ -1,16 +1,40 @@
 // The physics switch's arguments and words: what the page's fields become as `simulate`'s
-// options (`--model dynamic`, `--gravity`, `--max-torque`, docs/SIMULATION.md "Dynamic
+// options (`--model dynamic`, `--gravity`, `--max-torque`, `--density`, and the solver's
+// `--solver`, `--iterations`, `--time-step`, `--projection-interval`; docs/SIMULATION.md "Dynamic
 // simulation"), and what a physical run's stalls say. Pure, for node's tests.
 
 /** The model `simulate` runs when the physics switch is on. */
 export const PHYSICS_MODEL = 'dynamic';
 
 /**
+ * The solver choices, as `simulate`'s options (the CLI's names). *exact*: ODE's direct solver at
+ * the model's default 1 ms steps (the torque checks and the pendulum are measured on it; its cost
+ * grows with the cube of the joints). *direct-10ms*: the same solver at 10 ms steps, ten times
+ * cheaper, for sequences whose every crease a motor drives (what *Fold* loads), where *fast* gets
+ * stuck. *fast*: the iterative solver, 20 sweeps, 10 ms steps, the loops projected closed every
+ * step (docs/SIMULATION.md "Meeting the real-time targets"): a sheet folded by a few motors, its
+ * other creases free. Each sent in full, so that the label says what runs whatever the model's
+ * defaults become (docs/SERVE.md, "Physics").
+ */
+export const SOLVERS = {
+  exact: { solver: 'direct', 'time-step': 0.001 },
+  'direct-10ms': { solver: 'direct', 'time-step': 0.01 },
+  fast: { solver: 'iterative', iterations: 20, 'time-step': 0.01, 'projection-interval': 0.01 },
+};
+
+// A field's positive number, or null.
+function positive(text) {
+  const value = Number(text);
+  return text && Number.isFinite(value) && value > 0 ? value : null;
+}
+
+/**
  * `simulate`'s options from the physics fields (their text as typed): {options} to add to the
  * request, or {error} saying what is wrong. `gravity`: "X Y Z" (or X,Y,Z) in m/s², empty for
- * none; `torque`: the motors' limit in N·m, positive.
+ * none; `torque`: the motors' limit in N·m, positive; `density`: the sheet's areal density in
+ * kg/m², positive (default 1, the model's); `solver`: a key of SOLVERS (default exact).
  */
-export function physicsOptions({ gravity, torque }) {
+export function physicsOptions({ gravity, torque, density = '1', solver = 'exact' }) {
   const options = { model: PHYSICS_MODEL };
   const g = gravity.trim();
   if (g) {
@@ -21,10 +45,16 @@ export function physicsOptions({ gravity, torque }) {
     options.gravity = values.map(String).join(',');
   }
   const t = torque.trim();
-  const limit = Number(t);
-  if (!t || !Number.isFinite(limit) || !(limit > 0)) return { error: `max torque: give a positive number of N·m, not "${t}"` };
+  const limit = positive(t);
+  if (limit === null) return { error: `max torque: give a positive number of N·m, not "${t}"` };
   options['max-torque'] = limit;
-  return { options };
+  const d = density.trim();
+  const areal = positive(d);
+  if (areal === null) return { error: `density: give a positive number of kg/m² (of sheet), not "${d}"` };
+  options.density = areal;
+  if (!Object.hasOwn(SOLVERS, solver))
+    return { error: `solver: choose one of ${Object.keys(SOLVERS).join(', ')}, not "${solver}"` };
+  return { options: { ...options, ...SOLVERS[solver] } };
 }
 
 // Numbers as the panel words them: three significant digits.

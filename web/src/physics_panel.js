@@ -1,5 +1,6 @@
 // The run panel's physics switch beside Simulate: kinematic (foldkit's fast referee) or physics
-// (`simulate --model dynamic`: masses, gravity, torque-limited motors). After a physical run the
+// (`simulate --model dynamic`: masses, gravity, torque-limited motors; the sheet's density and
+// the solver, exact or fast, as physics.js's SOLVERS). After a physical run the
 // page shows its verdict, the selected joints' torque against time and the stalls on the
 // timeline; the numbers are foldkit's (`--json` and the series it wrote, NAME-series.json).
 import { $, app, log } from './page.js';
@@ -17,7 +18,8 @@ export const physicsOn = () => $('sim-model').value === 'physics';
 export function simulateOptions() {
   const ticked = $('collisions').checked;
   if (!physicsOn()) return ticked ? {} : { 'no-collision': true };
-  const { options, error } = physicsOptions({ gravity: $('gravity').value, torque: $('max-torque').value });
+  const { options, error } = physicsOptions({ gravity: $('gravity').value, torque: $('max-torque').value,
+    density: $('density').value, solver: $('physics-solver').value });
   if (error) {
     log(error);
     return null;

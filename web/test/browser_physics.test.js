@@ -1,8 +1,9 @@
 // The physics switch in a real browser (Debian's chromium through puppeteer-core) on `foldkit
 // serve --port 0`: a generated two-panel strip hanging from its first panel (gravity along +x),
 // its second panel lifted by one motor to −120°, simulated with physics on, first with a torque
-// that lifts it and then with one that stalls; the torque plot and the stall marks against
-// `foldkit simulate --model dynamic` on the files the page saved.
+// that lifts it and then with one that stalls, then with the fast solver on a lighter sheet; the
+// torque plot and the stall marks against `foldkit simulate --model dynamic` on the files the
+// page saved.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
@@ -25,11 +26,12 @@ async function keepScreenshot(page, name) {
   await page.screenshot({ path: join(dir, `${name}.png`) });
 }
 
-// The CLI's report and series on the page's files, with the physics options the page was given.
-function cliRun(root, torque) {
+// The CLI's report and series on the page's files, with the physics options the page was given
+// (`extra`: the CLI's words for the density and the solver, when not the defaults).
+function cliRun(root, torque, extra = []) {
   const series = join(root, 'oracle-series.json');
   const args = ['simulate', join(root, 'flap.pmml'), join(root, 'flap.cmml'), '--model', 'dynamic', '--gravity', GRAVITY.replaceAll(' ', ','),
-    '--max-torque', String(torque), '--series', series, '--json'];
+    '--max-torque', String(torque), ...extra, '--series', series, '--json'];
   const run = foldkit(args, { expect: [0, 3] });
   return { exit: run.exit, result: run.json, series: JSON.parse(readFileSync(series, 'utf8')) };
 }
@@ -142,6 +144,40 @@ test('the physics switch simulates a flap against gravity: its torque plotted, i
   assert.ok((await cursorAt()) < end, 'the cursor moved back with the scrubber');
   await page.evaluate(() => window.foldkit.timeline.seek(1e9));
   await keepScreenshot(page, 'serve-physics-stall');
+
+  // The fast solver and a lighter sheet: a density that is not a positive number is refused;
+  // at 0.8 kg/m² the same 0.95·m·g·d (at 1 kg/m²) lifts the flap (it needs 0.8·m·g·d), in 10 ms
+  // steps, and the page's report and series are the CLI's with the same options.
+  assert.equal(await page.$eval('#physics-solver', (e) => e.value), 'exact', 'exact by default');
+  assert.deepEqual(await page.$$eval('#physics-solver option', (os) => os.map((o) => [o.value, o.textContent])),
+    [['exact', 'exact (direct, 1 ms)'], ['direct-10ms', 'direct, 10 ms (every crease a motor)'], ['fast', 'fast (iterative + projection, 10 ms)']]);
+  await page.select('#physics-solver', 'fast');
+  await setField(page, 'density', '0');
+  await simulate(page);
+  assert.match((await shownPhysics(page)).log, /^density: give a positive number of kg\/m² \(of sheet\), not "0"/);
+  await setField(page, 'density', '0.8');
+  await simulate(page);
+  cli = cliRun(root, stalling, ['--density', '0.8', '--solver', 'iterative', '--iterations', '20', '--time-step', '0.01', '--projection-interval', '0.01']);
+  shown = await shownPhysics(page);
+  const fast = await page.evaluate(() => window.foldkit.simulation);
+  assert.equal(cli.exit, 0, cli.result.message);
+  assert.equal(shown.verdict, 'valid');
+  assert.deepEqual(shown.stalls, []);
+  assert.deepEqual(shown.timelineStalls, []);
+  assert.equal(fast.result.time_step, 0.01);
+  assert.equal(fast.result.joints[0].angle, cli.result.joints[0].angle);
+  assert.equal(fast.result.joints[0].peak_torque, cli.result.joints[0].peak_torque);
+  assert.ok(Math.abs(fast.result.joints[0].angle + 120) < 0.01, `at −120°: ${fast.result.joints[0].angle}°`);
+  assert.deepEqual(fast.series.time, cli.series.time);
+  assert.deepEqual(fast.series.joints[0].torque, cli.series.joints[0].torque);
+  assert.deepEqual(shown.curves, [{ joint: 1, points: cli.series.time.length }]);
+  // Every frame on the 10 ms steps, 10 ms apart (a frame in a run or two slips one step to
+  // rounding: physics.test.js).
+  const gaps = fast.series.time.slice(1).map((t, k) => t - fast.series.time[k]);
+  fast.series.time.forEach((t, k) => assert.ok(Math.abs(t * 100 - Math.round(t * 100)) < 1e-6, `frame ${k} at ${t} s`));
+  assert.ok(gaps.every((g) => Math.abs(g - 0.01) < 1e-9 || Math.abs(g - 0.02) < 1e-9), 'frames 10 ms apart');
+  assert.ok(gaps.filter((g) => g > 0.015).length <= 2);
+  assert.ok(fast.series.time.length > 300, `${fast.series.time.length} frames over ${fast.result.duration} s`);
 
   // Back to kinematic: the same folds replayed as commanded; no torque, no stall marks.
   await page.select('#sim-model', 'kinematic');

@@ -1,5 +1,6 @@
 // physics.js and torque_plot.js against foldkit itself: the physics fields become the CLI's
-// options (or a message), and the torque plot drawn from `simulate --model dynamic --series
+// options (or a message), the *fast* solver choice folds as the *exact* one does (a flap lifted
+// against gravity, a Miura-ori 4 × 4 folded by one motor), and the torque plot drawn from `simulate --model dynamic --series
 // X.json` puts every point at its series' time and torque and the stall mark at the time the
 // report gives.
 import { test } from 'node:test';
@@ -8,7 +9,7 @@ import { mkdtempSync, writeFileSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { spawnSync } from 'node:child_process';
-import { physicsOptions, physicsVerdict, stallText, stallLabel } from '../src/physics.js';
+import { physicsOptions, physicsVerdict, stallText, stallLabel, SOLVERS } from '../src/physics.js';
 import { plottedJoints, curvePoints, pathData, plotFrame, torquePlotSvg } from '../src/torque_plot.js';
 
 const cli = process.env.FOLDKIT_CLI;
@@ -28,14 +29,139 @@ function flap(torque) {
   return { result: JSON.parse(r.stdout), series: JSON.parse(readFileSync(series, 'utf8')), exit: r.status };
 }
 
+// The page's options as the CLI's words: every key is the CLI's own long option name (the served
+// API takes the same names), true a flag.
+function cliWords(options) {
+  return Object.entries(options).flatMap(([key, value]) => (value === true ? [`--${key}`] : [`--${key}`, String(value)]));
+}
+
+// `simulate` with the options the page's fields build: the report and, when asked, the series.
+function simulatePage(pmml, cmml, fields, extra = []) {
+  const { options, error } = physicsOptions(fields);
+  assert.equal(error, undefined);
+  const series = cmml.replace(/\.cmml$/, `-${fields.solver}-series.json`);
+  const r = spawnSync(cli, ['simulate', pmml, cmml, ...cliWords(options), ...extra, '--series', series, '--json'], { encoding: 'utf8', timeout: 120000 });
+  assert.ok(r.status === 0 || r.status === 3, r.stderr);
+  return { result: JSON.parse(r.stdout), series: JSON.parse(readFileSync(series, 'utf8')), exit: r.status };
+}
+
 test('the physics fields become simulate\'s options, or say what is wrong', () => {
-  assert.deepEqual(physicsOptions({ gravity: '0 0 -9.81', torque: '4' }).options, { model: 'dynamic', gravity: '0,0,-9.81', 'max-torque': 4 });
-  assert.deepEqual(physicsOptions({ gravity: ' 1, -2.5,3e0 ', torque: '0.5' }).options, { model: 'dynamic', gravity: '1,-2.5,3', 'max-torque': 0.5 });
-  assert.deepEqual(physicsOptions({ gravity: '', torque: '1' }).options, { model: 'dynamic', 'max-torque': 1 }, 'empty gravity: none');
+  const exact = { solver: 'direct', 'time-step': 0.001 };
+  const fast = { solver: 'iterative', iterations: 20, 'time-step': 0.01, 'projection-interval': 0.01 };
+  assert.deepEqual(SOLVERS, { exact, 'direct-10ms': { solver: 'direct', 'time-step': 0.01 }, fast });
+  assert.deepEqual(physicsOptions({ gravity: '0 0 -9.81', torque: '4', density: '1', solver: 'exact' }).options,
+    { model: 'dynamic', gravity: '0,0,-9.81', 'max-torque': 4, density: 1, ...exact });
+  assert.deepEqual(physicsOptions({ gravity: ' 1, -2.5,3e0 ', torque: '0.5', density: ' 0.08 ', solver: 'fast' }).options,
+    { model: 'dynamic', gravity: '1,-2.5,3', 'max-torque': 0.5, density: 0.08, ...fast });
+  assert.deepEqual(physicsOptions({ gravity: '', torque: '1', density: '2.5e-1', solver: 'fast' }).options,
+    { model: 'dynamic', 'max-torque': 1, density: 0.25, ...fast }, 'empty gravity: none');
+  assert.deepEqual(physicsOptions({ gravity: '', torque: '1000', solver: 'direct-10ms' }).options,
+    { model: 'dynamic', 'max-torque': 1000, density: 1, solver: 'direct', 'time-step': 0.01 });
+  assert.deepEqual(physicsOptions({ gravity: '', torque: '1' }).options, { model: 'dynamic', 'max-torque': 1, density: 1, ...exact },
+    'the model\'s defaults: 1 kg/m², exact');
   for (const gravity of ['0 -9.81', '0 0 -9.81 1', 'down', '0 0 NaN', '0 0 Infinity'])
     assert.match(physicsOptions({ gravity, torque: '1' }).error, /^gravity: give three numbers X Y Z in m\/s²/, gravity);
   for (const torque of ['', '0', '-1', 'lots', 'Infinity'])
     assert.match(physicsOptions({ gravity: '0 0 -9.81', torque }).error, /^max torque: give a positive number of N·m/, torque);
+  for (const density of ['', ' ', '0', '-1', 'paper', 'NaN', 'Infinity'])
+    assert.equal(physicsOptions({ gravity: '0 0 -9.81', torque: '1', density }).error,
+      `density: give a positive number of kg/m² (of sheet), not "${density.trim()}"`, density);
+  for (const solver of ['', 'iterative', 'toString', '__proto__'])
+    assert.equal(physicsOptions({ gravity: '', torque: '1', solver }).error, `solver: choose one of exact, direct-10ms, fast, not "${solver}"`, solver);
+  // The first wrong field is the one named.
+  assert.match(physicsOptions({ gravity: 'down', torque: '0', density: '0', solver: 'x' }).error, /^gravity/);
+  assert.match(physicsOptions({ gravity: '', torque: '1', density: '0', solver: 'x' }).error, /^density/);
+});
+
+test('the 10 ms solver choices lift the flap as the exact one: the same final angle, torques, stall; density\'s effect', { skip: !cli && 'FOLDKIT_CLI not set' }, (t) => {
+  // The two-panel strip of flap(), its panel lifted to −60° at 30°/s against 9.81 m/s²; the
+  // exact run is the reference (its torques are m·g·d·cos θ within 1 %, test/apps).
+  const dir = mkdtempSync(join(tmpdir(), 'foldkit-physics-'));
+  const pmml = join(dir, 'flap.pmml');
+  const cmml = join(dir, 'lift.cmml');
+  assert.equal(spawnSync(cli, ['generate', 'strip', '--panels', '2', '-o', pmml]).status, 0);
+  writeFileSync(cmml, '<CMML><Title>lift</Title><Fold><EventNumber>1</EventNumber><ID>1</ID><FoldAngle>-60</FoldAngle><Velocity>30</Velocity></Fold></CMML>\n');
+  const run = (solver, torque, density = '1') => simulatePage(pmml, cmml, { gravity: '0 0 -9.81', torque: String(torque), density, solver });
+  const mgd = 9.81 * 0.5;  // a unit square at 1 kg/m², its centroid 0.5 m from the crease
+  const exact = run('exact', 5);
+  const fast = run('fast', 5);
+  assert.deepEqual([exact.exit, fast.exit], [0, 0]);
+  assert.deepEqual([exact.result.time_step, fast.result.time_step], [0.001, 0.01]);
+  const rad = Math.PI / 180;
+  const [a, b] = [exact.result.joints[0], fast.result.joints[0]];
+  t.diagnostic(`final angle exact ${a.angle}°, fast ${b.angle}°; peak torque ${a.peak_torque}, ${b.peak_torque} N·m; ` +
+    `duration ${exact.result.duration}, ${fast.result.duration} s`);
+  assert.ok(Math.abs(a.angle - b.angle) * rad < 1e-4, `final angles within 1e-4 rad: ${a.angle}°, ${b.angle}°`);
+  assert.ok(Math.abs(b.angle + 60) * rad < 1e-4, 'fast: at its angle (reach tolerance 1e-4 rad)');
+  assert.ok(Math.abs(a.peak_torque - b.peak_torque) < 0.01 * mgd, `peak torques within 1 % of m·g·d: ${a.peak_torque}, ${b.peak_torque}`);
+  assert.ok(Math.abs(exact.result.duration - fast.result.duration) < 0.05, 'durations within 50 ms');
+  // While the panel rises at its speed (30°/s within 1 % over the frames either side, the motor
+  // below its limit in this frame and the last: caught up, the stop not begun), the fast run's
+  // torque is m·g·d·cos θ at its own angle within 1 %, as the exact run's is.
+  for (const { series } of [exact, fast]) {
+    const { time } = series;
+    const { angle, torque } = series.joints[0];
+    const rate = (k) => (angle[k + 1] - angle[k - 1]) / (time[k + 1] - time[k - 1]);
+    const steady = time.map((_, k) => k).filter((k) => k > 0 && k + 1 < time.length && Math.abs(rate(k) + 30) < 0.3 &&
+      Math.abs(torque[k - 1]) < 0.99 * 5 && Math.abs(torque[k]) < 0.99 * 5);
+    assert.ok(steady.length > 100, `${steady.length} steady frames`);
+    for (const k of steady)
+      assert.ok(Math.abs(-torque[k] - mgd * Math.cos(angle[k] * rad)) < 0.01 * mgd, `t ${series.time[k]} s: ${torque[k]} N·m at ${angle[k]}°`);
+  }
+  // The fast run's series: every frame on its 10 ms steps, 10 ms apart — but for one frame in a
+  // run or two, 20 ms: the model's check (and frame) is due at `time ≥ next_check` with no slack
+  // (dynamics/src/dynamic_simulate.cpp; the projection has half a step's), so 0.01 summed six
+  // times slips the 0.06 s frame to 0.07 s (the exact run's to 0.061 s).
+  const gaps = fast.series.time.slice(1).map((time, k) => time - fast.series.time[k]);
+  fast.series.time.forEach((time, k) => assert.ok(Math.abs(time * 100 - Math.round(time * 100)) < 1e-6, `frame ${k} at ${time} s`));
+  gaps.forEach((gap, k) => assert.ok(Math.abs(gap - 0.01) < 1e-9 || Math.abs(gap - 0.02) < 1e-9, `frame ${k + 1}: ${gap} s after the last`));
+  assert.ok(gaps.filter((gap) => gap > 0.015).length <= 2, 'at most two slipped frames');
+  // Too little torque: both stall at the start, needing m·g·d within 1 %.
+  const [se, sf] = [run('exact', 4), run('fast', 4)];
+  assert.deepEqual([se.exit, sf.exit], [3, 3]);
+  for (const s of [se.result.stalls[0], sf.result.stalls[0]]) assert.ok(Math.abs(s.needed_torque - mgd) < 0.01 * mgd, `needs ${s.needed_torque} N·m`);
+  // The direct solver at 10 ms: the same angle, peak and stall.
+  const [coarse, coarseStall] = [run('direct-10ms', 5), run('direct-10ms', 4)];
+  assert.deepEqual([coarse.exit, coarse.result.time_step, coarseStall.exit], [0, 0.01, 3]);
+  assert.ok(Math.abs(coarse.result.joints[0].angle - a.angle) * rad < 1e-4, `direct, 10 ms: ${coarse.result.joints[0].angle}°`);
+  assert.ok(Math.abs(coarse.result.joints[0].peak_torque - a.peak_torque) < 0.01 * mgd);
+  assert.ok(Math.abs(coarseStall.result.stalls[0].needed_torque - mgd) < 0.01 * mgd);
+  // Density scales the mass: at 0.8 kg/m² the 4 N·m motor lifts the flap (m·g·d = 3.92 N·m).
+  const light = run('fast', 4, '0.8');
+  assert.equal(light.exit, 0, light.result.message);
+  assert.ok(light.result.joints[0].peak_torque > 0.8 * mgd && light.result.joints[0].peak_torque <= 4 + 1e-6);
+});
+
+test('the fast solver folds a Miura-ori 4 × 4 by one motor as the exact one, loops closed', { skip: !cli && 'FOLDKIT_CLI not set' }, (t) => {
+  // The scene of microbench/one_motor_miura.hpp: `foldkit fold` to half way is the kinematic
+  // fold; one motor drives the first actor's most folded crease to its angle there at 0.5 rad/s,
+  // from `fold`'s state a little past flat (0.064 of the way, 0.2 rad: the flat sheet is a
+  // bifurcation), gravity off, torque 1e6 N·m.
+  const dir = mkdtempSync(join(tmpdir(), 'foldkit-physics-'));
+  const pmml = join(dir, 'miura.pmml');
+  const [half, start, cmml] = ['half.cmml', 'start.cmml', 'one.cmml'].map((f) => join(dir, f));
+  assert.equal(spawnSync(cli, ['generate', 'miura', '--rows', '4', '--cols', '4', '-o', pmml]).status, 0);
+  assert.equal(spawnSync(cli, ['fold', pmml, '--fraction', '0.5', '--no-collision', '-o', half]).status, 0);
+  assert.equal(spawnSync(cli, ['fold', pmml, '--fraction', '0.064', '--no-collision', '-o', start]).status, 0);
+  const end = new Map([...readFileSync(half, 'utf8').matchAll(/<ID>(\d+)<\/ID>\s*<FoldAngle>([^<]+)</g)].map((m) => [Number(m[1]), Number(m[2])]));
+  const onFirst = [...readFileSync(pmml, 'utf8').matchAll(/<Joint>\s*<ID>(\d+)<\/ID>[\s\S]*?<ActorIDs>(\d+) (\d+)</g)]
+    .filter((m) => m[2] === '1' || m[3] === '1').map((m) => Number(m[1]));
+  const drive = onFirst.reduce((best, j) => (Math.abs(end.get(j)) > Math.abs(end.get(best)) ? j : best));
+  writeFileSync(cmml, `<CMML><Title>one motor</Title><Fold><EventNumber>1</EventNumber><ID>${drive}</ID><FoldAngle>${end.get(drive)}</FoldAngle>` +
+    `<Velocity>${(0.5 * 180) / Math.PI}</Velocity></Fold></CMML>\n`);
+  const run = (solver) => simulatePage(pmml, cmml, { gravity: '', torque: '1e6', solver }, ['--start', start]);
+  const [exact, fast] = [run('exact'), run('fast')];
+  assert.deepEqual([exact.exit, fast.exit], [0, 0], fast.result.message);
+  const rad = Math.PI / 180;
+  const worst = (r, angleOf) => Math.max(...r.result.joints.map((j) => Math.abs(j.angle - angleOf(j.joint)) * rad));
+  const apart = worst(fast, (id) => exact.result.joints.find((j) => j.joint === id).angle);
+  const fromFold = worst(fast, (id) => end.get(id));
+  t.diagnostic(`fast against exact ${apart.toExponential(2)} rad, against fold ${fromFold.toExponential(2)} rad; drift ` +
+    `${fast.result.max_closure_error.toExponential(2)} rad; ${exact.result.seconds.toFixed(3)} s exact, ${fast.result.seconds.toFixed(3)} s fast`);
+  assert.ok(apart < 1e-3, `every joint's final angle within 1e-3 rad of the exact run's: ${apart} rad`);
+  assert.ok(fromFold < 1e-3, `and of the kinematic fold's: ${fromFold} rad`);
+  assert.ok(fast.result.max_closure_error <= 1e-4, `loops closed: ${fast.result.max_closure_error} rad`);
+  assert.ok(Math.abs(exact.result.duration - fast.result.duration) < 0.1, 'durations within 0.1 s');
 });
 
 test('a stall is worded with its joint, time and torques; a run without one with its peak', { skip: !cli && 'FOLDKIT_CLI not set' }, () => {
