@@ -24,7 +24,7 @@ struct SimulateOptions {
   dynamics::DynamicOptions dyn;
   std::string gravity, drive = dynamics::to_string(dynamics::DynamicOptions{}.drive), series, fixed, start, joint_torque;
   std::string solver = dynamics::to_string(dynamics::DynamicOptions{}.solver);
-  double ground = 0.0, thickness = 0.0;
+  double ground = 0.0, thickness = 0.0, friction = dynamics::kDefaultFriction;
   bool no_collision = false;
   std::size_t max_frames = 1000;
   // The options of one model only, as declared: given to the other model they are refused.
@@ -95,9 +95,8 @@ dynamics::DynamicOptions dynamic_options(const CLI::App& app, const SimulateOpti
   }
   if (app.count("--ground")) o.ground = opt.ground;
   if (app.count("--thickness")) o.thickness = opt.thickness;
-  // Without anything to touch they would be ignored: refused, as one model's options are for the other.
-  for (const char* name : {"--friction", "--thickness"})
-    if (app.count(name) && !o.contacts && !o.ground) throw UsageError(std::string(name) + " needs --contacts or --ground");
+  // Given without --contacts or --ground, simulate_dynamic() refuses them (std::invalid_argument: usage).
+  if (app.count("--friction")) o.friction = opt.friction;
   if (!opt.joint_torque.empty()) o.joint_max_torque = parse_joint_torques(opt.joint_torque, pattern);
   o.drive = dynamics::parse_drive(opt.drive);
   o.solver = dynamics::parse_solver(opt.solver);
@@ -187,7 +186,7 @@ void add_dynamic_options(CLI::App* app, SimulateOptions& opt) {
       app->add_flag("--contacts", opt.dyn.contacts,
                     "Dynamic model: facet-facet contacts with friction (facets not joined by a crease push each "
                     "other apart; a motor they block is a collision)"),
-      app->add_option("--friction", opt.dyn.friction, "Dynamic model: Coulomb friction coefficient of every contact")
+      app->add_option("--friction", opt.friction, "Dynamic model: Coulomb friction coefficient of every contact")
           ->check(CLI::NonNegativeNumber)
           ->capture_default_str(),
       app->add_option("--thickness", opt.thickness,
@@ -204,7 +203,8 @@ void add_dynamic_options(CLI::App* app, SimulateOptions& opt) {
               {dynamics::to_string(dynamics::Solver::Direct), dynamics::to_string(dynamics::Solver::Iterative)}))
           ->capture_default_str(),
       positive(app->add_option("--iterations", opt.dyn.iterations,
-                               "Dynamic model: Gauss-Seidel sweeps per step of --solver iterative")),
+                               "Dynamic model: Gauss-Seidel sweeps per step of --solver iterative")
+                   ->capture_default_str()),
       app->add_option("--projection-interval", opt.dyn.projection_interval,
                       "Dynamic model: seconds between post-stabilisations (the engine's poses and velocities "
                       "projected onto the closed loops, the motors' joints held); 0: none")

@@ -137,6 +137,12 @@ nlohmann::json dynamic_report_json(const geometry::CreasePattern& pattern, const
   for (std::size_t j = 0; j < pattern.joints().size(); ++j)
     angles.push_back({{"joint", pattern.joints()[j].id},
                       {"angle", r.final_state.angles[static_cast<Eigen::Index>(j)] * deg}});
+  // The held actor's ID (the first actor's when none was named), or "none".
+  const nlohmann::json fixed = !o.hold_fixed ? nlohmann::json("none")
+                               : o.fixed_actor ? nlohmann::json(*o.fixed_actor)
+                               : pattern.actors().empty() ? nlohmann::json(nullptr)
+                                                          : nlohmann::json(pattern.actors().front().id);
+  const bool touching = o.contacts || o.ground;  // friction acts only then
   return {{"ok", r.status.ok()},  // deprecated: status
           {"status", geometry::to_string(r.status.code)},
           {"message", r.status.message},
@@ -146,6 +152,13 @@ nlohmann::json dynamic_report_json(const geometry::CreasePattern& pattern, const
           {"density", o.density},
           {"max_torque", o.max_torque},
           {"scale", o.scale},
+          {"fixed", fixed},
+          {"ground", o.ground ? nlohmann::json(*o.ground) : nlohmann::json(nullptr)},
+          {"facet_contacts", o.contacts},  // "contacts" lists the pairs that touched
+          {"friction", touching ? nlohmann::json(o.friction.value_or(dynamics::kDefaultFriction)) : nlohmann::json(nullptr)},
+          {"solver", dynamics::to_string(o.solver)},
+          {"iterations", o.iterations},
+          {"projection_interval", o.projection_interval},
           {"time_step", r.time_step},
           {"duration", r.duration},
           {"seconds", r.seconds},

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
 
 #include "foldkit/geometry/closure.hpp"
+#include "dynamic_options.hpp"
 #include "ode_sheet.hpp"
 #include "post_stabilise.hpp"
 
@@ -19,73 +21,7 @@ std::vector<std::string> model_names() {
           simulation::to_string(Actuation::Synchronised), kModelName};
 }
 
-const char* to_string(Drive drive) { return drive == Drive::Motor ? "motor" : "spring"; }
-
-Drive parse_drive(const std::string& name) {
-  if (name == "motor") return Drive::Motor;
-  if (name == "spring") return Drive::Spring;
-  throw std::invalid_argument("unknown drive '" + name + "' (motor or spring)");
-}
-
-const char* to_string(Solver solver) { return solver == Solver::Direct ? "direct" : "iterative"; }
-
-Solver parse_solver(const std::string& name) {
-  if (name == "direct") return Solver::Direct;
-  if (name == "iterative") return Solver::Iterative;
-  throw std::invalid_argument("unknown solver '" + name + "' (direct or iterative)");
-}
-
 namespace {
-
-// Radians: the loop error a post-stabilisation leaves, far below any closure tolerance.
-constexpr double kProjectionTolerance = 1e-9;
-
-void check_options(const geometry::CreasePattern& pattern, const DynamicOptions& o) {
-  auto positive = [](double v, const char* name) {
-    if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument(std::string(name) + " must be positive and finite");
-  };
-  positive(o.density, "density");
-  positive(o.max_torque, "max_torque");
-  positive(o.scale, "scale");
-  positive(o.time_step, "time_step");
-  positive(o.approach_time, "approach_time");
-  positive(o.reach_tolerance, "reach_tolerance");
-  positive(o.settle_speed, "settle_speed");
-  positive(o.settle_time, "settle_time");
-  positive(o.stall_time, "stall_time");
-  positive(o.max_event_time, "max_event_time");
-  positive(o.closure_tolerance, "closure_tolerance");
-  positive(o.check_interval, "check_interval");
-  // A motor closes approach_time's worth of its error per second: a longer step overshoots and
-  // oscillates, and a stall could be called on one step.
-  if (o.time_step > std::min(o.approach_time, o.stall_time))
-    throw std::invalid_argument("time_step " + std::to_string(o.time_step) + " s is too long for the motors: at most " +
-                                std::to_string(std::min(o.approach_time, o.stall_time)) + " s (approach_time, stall_time)");
-  if (!o.gravity.allFinite()) throw std::invalid_argument("gravity must be finite");
-  if (o.iterations < 1) throw std::invalid_argument("iterations must be at least 1");
-  if (!(o.erp > 0.0 && o.erp <= 1.0)) throw std::invalid_argument("erp must be in (0, 1]");
-  if (!(o.cfm >= 0.0) || !std::isfinite(o.cfm)) throw std::invalid_argument("cfm must be non-negative and finite");
-  if (!(o.projection_interval >= 0.0) || !std::isfinite(o.projection_interval))
-    throw std::invalid_argument("projection_interval must be non-negative and finite");
-  if (o.start.size() > 0) {
-    if (o.start.size() != static_cast<Eigen::Index>(pattern.joints().size()) || !o.start.allFinite())
-      throw std::invalid_argument("start must hold one finite angle per joint");
-    const bool held = o.hold_fixed && o.fixed_actor && pattern.actor_index(*o.fixed_actor);
-    const int root = held ? *pattern.actor_index(*o.fixed_actor) : 0;
-    const geometry::ClosureSystem closure(pattern, root);
-    if (closure.max_error(geometry::FoldState{o.start}) > o.closure_tolerance)
-      throw std::invalid_argument("the start state does not close (loop error above closure_tolerance)");
-  }
-  for (const auto& [id, torque] : o.joint_max_torque) {
-    if (!pattern.joint_index(id)) throw std::invalid_argument("joint_max_torque: no joint " + std::to_string(id));
-    positive(torque, "joint_max_torque");
-  }
-  if (o.ground && !std::isfinite(*o.ground)) throw std::invalid_argument("ground must be finite");
-  if (!(o.friction >= 0.0) || !std::isfinite(o.friction)) throw std::invalid_argument("friction must be non-negative and finite");
-  if (o.thickness) positive(*o.thickness, "thickness");
-  if (o.fixed_actor && !pattern.actor_index(*o.fixed_actor))
-    throw std::invalid_argument("no actor " + std::to_string(*o.fixed_actor) + " to hold fixed");
-}
 
 // One run of a sequence: the engine, the closure measure and the report being filled.
 class Runner {
@@ -93,8 +29,9 @@ class Runner {
   // `fixed`: the held actor's index, −1 for none (the closure is then measured from actor 0).
   Runner(const geometry::CreasePattern& pattern, const DynamicOptions& options, int fixed)
       : pattern_(pattern), o_(options), sheet_(pattern, options, fixed), closure_(pattern, std::max(fixed, 0)),
-        stabilise_(closure_, kProjectionTolerance),
-        stalled_for_(pattern.joints().size(), 0.0) {
+        stabilise_(closure_, detail::kProjectionTolerance),
+        stalled_for_(pattern.joints().size(), 0.0), since_best_(pattern.joints().size(), 0.0),
+        best_(pattern.joints().size(), 0.0), best_need_(pattern.joints().size(), 0.0) {
     report_.status = {geometry::StatusCode::Success, "every event reached its angles"};
     report_.time_step = o_.time_step;
     report_.closure_tolerance = o_.closure_tolerance;
@@ -107,9 +44,9 @@ class Runner {
   // Runs one event; false when the sequence must stop (a stall, a collision, a time-out, a
   // blow-up, an error the engine reported).
   bool run(const geometry::FoldEvent& event, std::size_t done, std::size_t total) {
-    std::vector<int> named = drive_event(event);
     DynamicEventReport er{event.number, time_, time_, true, 0.0, 0.0};
     try {
+      const std::vector<int> named = drive_event(event);  // setting a drive calls the engine too
       if (!advance(named, er, done, total)) er.reached = false;
       close_event(er);  // a spring that settled short of its angle fails the event here
     } catch (const detail::EngineError& e) {
@@ -154,7 +91,8 @@ class Runner {
         d.damping = joint.damping;
       }
       sheet_.set_drive(j, d);
-      stalled_for_[j] = 0.0;
+      stalled_for_[j] = since_best_[j] = best_need_[j] = 0.0;
+      best_[j] = std::numeric_limits<double>::infinity();
       named.push_back(j);
     }
     return named;
@@ -176,7 +114,7 @@ class Runner {
       }
       record_torques();
       if (!record_contacts(er.number)) return false;
-      if (time_ >= next_check) {
+      if (time_ >= next_check - 0.5 * o_.time_step) {  // the same slack: a frame every check_interval
         check(er, er.number, done, total);
         next_check += o_.check_interval;
       }
@@ -223,14 +161,6 @@ class Runner {
     return c.b < 0 ? "actor " + a + " and the ground" : "actors " + a + " and " + std::to_string(pattern_.actors()[c.b].id);
   }
 
-  // The deepest contact of the last step, if any touches.
-  const detail::ContactPoint* deepest_contact() const {
-    const detail::ContactPoint* deepest = nullptr;
-    for (const auto& c : sheet_.contact_points())
-      if (!deepest || c.depth > deepest->depth) deepest = &c;
-    return deepest;
-  }
-
   void add_frame(int event, const geometry::FoldState& state) {
     report_.frames.push_back({time_, event, state});
     Eigen::VectorXd torques(state.angles.size());
@@ -268,72 +198,108 @@ class Runner {
   }
 
   // Whether every spring's static torque k(θ* − θ) is what holding the sheet at rest there needs
-  // (a probe step with the spring replaced by a holding motor), within the torque of the spring
-  // at the reach tolerance: the spring is within reach_tolerance of where it balances. A soft
+  // (a probe step with the spring replaced by a holding motor, the contacts of its moving side
+  // left out), within the torque of the spring at the reach tolerance, or what is left over is
+  // pushed back by a contact: the spring is within reach_tolerance of where it balances. A soft
   // spring starts so slowly that it stays below settle_speed for settle_time far from its angle,
   // and a damped one creeps in the end with its damper cancelling its spring: neither is settled
-  // while its static torque is unbalanced. Touching facets share the load with the springs in
-  // ways a probe does not split: a sheet at rest in contact is settled.
+  // while its static torque is unbalanced. A contact elsewhere (the root facet on the ground)
+  // carries none of that torque; one that pushes back against the spring may carry the rest.
   bool balanced() {
-    if (!sheet_.contact_points().empty()) return true;
     for (std::size_t j = 0; j < report_.joints.size(); ++j) {
       const int ji = static_cast<int>(j);
       const auto& d = sheet_.drive(ji);
       if (d.kind != detail::JointDrive::Spring) continue;
-      const double exerted = d.spring * sheet_.angle_to(ji, d.target), needed = sheet_.hold_torque_signed(ji);
-      if (std::abs(exerted - needed) > d.spring * o_.reach_tolerance) return false;
+      const double exerted = d.spring * sheet_.angle_to(ji, d.target);
+      if (std::abs(exerted - sheet_.hold_torque_signed(ji)) <= d.spring * o_.reach_tolerance) continue;
+      // What is left may be carried by a contact pushing back: then, released from rest with the
+      // spring's static torque, the sheet stays still (it would not pass settle_speed within
+      // settle_time); a contact that gives way (a free sheet's facet lifting off) carries nothing.
+      if (!opposing_contact(ji, exerted) ||
+          std::abs(sheet_.released_rate(ji, exerted)) * o_.settle_time / o_.time_step > o_.settle_speed)
+        return false;
     }
     return true;
   }
 
-  // A motor short of its angle, at its torque limit, making no progress for stall_time, and too
-  // weak to hold the sheet where it is (a stall), or strong enough but held back by a contact (a
-  // collision); a spring drive never stalls here (it settles, and close_event() judges where).
+  // The deepest contact of the last step that pushes joint j's moving side against a torque of
+  // sign `toward` (toward > 0: one turning j toward larger angles), if any.
+  const detail::ContactPoint* opposing_contact(int j, double toward) const {
+    // Metres of lever per newton: a contact on the axis itself resists no turn.
+    constexpr double kLever = 1e-9;
+    const detail::ContactPoint* deepest = nullptr;
+    for (const auto& c : sheet_.contact_points())
+      if (std::copysign(1.0, toward) * sheet_.contact_moment(j, c) < -kLever && (!deepest || c.depth > deepest->depth))
+        deepest = &c;
+    return deepest;
+  }
+
+  // Motors only (a spring drive settles, and close_event() judges where). A motor short of its
+  // angle, at its torque limit and making no progress for stall_time has stalled when it could not
+  // hold the sheet there without the contacts of its moving side, and is blocked when it could and
+  // a contact pushes against it; else it was a transient (an overshoot braked, the sheet
+  // accelerated) and goes on. One that swings under gravity is never at rest for stall_time: it
+  // has stalled when it came no closer to its angle for stall_time and, where it turned back
+  // closest, could not hold the sheet.
   bool find_stalls(const std::vector<int>& named, int event) {
     if (o_.drive != Drive::Motor) return false;
     bool any = false;
     for (int j : named) {
       const auto& d = sheet_.drive(j);
       const double error = sheet_.angle_to(j, d.target);
-      const bool stuck = std::abs(error) > o_.reach_tolerance && std::copysign(1.0, error) * sheet_.rate(j) < 0.01 * d.speed &&
+      if (std::abs(error) <= o_.reach_tolerance) {
+        stalled_for_[j] = since_best_[j] = 0.0;
+        continue;
+      }
+      const bool stuck = std::copysign(1.0, error) * sheet_.rate(j) < 0.01 * d.speed &&
                          std::abs(sheet_.torque(j)) >= 0.999 * d.max_torque;
+      const bool closer = std::abs(error) < best_[j] - o_.reach_tolerance;
+      if (closer) best_[j] = std::abs(error), best_need_[j] = 0.0;
+      since_best_[j] = closer ? 0.0 : since_best_[j] + o_.time_step;
+      // Turning back where it came closest: what holding the sheet there would need.
+      if (stuck && stalled_for_[j] == 0.0 && std::abs(error) <= best_[j] + o_.reach_tolerance) best_need_[j] = sheet_.hold_torque(j);
       stalled_for_[j] = stuck ? stalled_for_[j] + o_.time_step : 0.0;
+      if (since_best_[j] >= o_.stall_time && best_need_[j] > d.max_torque) {
+        add_stall(j, event, d.max_torque, best_need_[j], nullptr, "where it came closest, ");
+        any = true;
+        continue;
+      }
       if (stalled_for_[j] < o_.stall_time) continue;
-      // Saturated and losing for stall_time may be a transient (an overshoot braked, the sheet
-      // accelerated): it is a stall only when the motor could not even hold the sheet here at rest.
       stalled_for_[j] = 0.0;
-      // Blocked: strong enough, but at rest against something (not turning away from its angle,
-      // as when braking an overshoot while some other facet happens to touch).
-      const bool weak = sheet_.hold_torque(j) > d.max_torque;
-      if (weak || (deepest_contact() && std::abs(sheet_.rate(j)) < 0.01 * d.speed)) {
-        add_stall(j, event, d.max_torque);
+      const double needed = sheet_.hold_torque(j);
+      // Blocked: strong enough, but at rest against a contact (not turning away from its angle,
+      // as when braking an overshoot while some facet happens to touch).
+      const detail::ContactPoint* against =
+          needed <= d.max_torque && std::abs(sheet_.rate(j)) < 0.01 * d.speed ? opposing_contact(j, error) : nullptr;
+      if (needed > d.max_torque || against) {
+        add_stall(j, event, d.max_torque, needed, against, "");
         any = true;
       }
     }
     return any;
   }
 
-  // A stall of joint index j; blocked (a collision) when something touches and holding the sheet
-  // there needs no more than `available`.
-  void add_stall(int j, int event, double available) {
+  // A stall of joint index j: blocked (a collision) by `blocker` when one is given, else too weak
+  // (`where` qualifies the needed torque).
+  void add_stall(int j, int event, double available, double needed, const detail::ContactPoint* blocker, const char* where) {
     const auto& d = sheet_.drive(j);
-    Stall st{pattern_.joints()[j].id, event, time_, sheet_.angle(j), d.target, 0.0, available, {}};
-    st.needed_torque = sheet_.hold_torque(j);
-    const detail::ContactPoint* touch = deepest_contact();
+    Stall st{pattern_.joints()[j].id, event, time_, sheet_.angle(j), d.target, needed, available, {}};
     std::ostringstream msg;
-    msg << "joint " << st.joint << (touch && st.needed_torque <= available ? " blocked" : " stalled") << " in event " << event
-        << " at " << st.angle * 180.0 / M_PI << " deg (t = " << time_ << " s): ";
-    if (touch && st.needed_torque <= available) {
-      st.blocked_by.push_back(pattern_.actors()[touch->a].id);
-      if (touch->b >= 0) st.blocked_by.push_back(pattern_.actors()[touch->b].id);
-      msg << contact_words(*touch) << " touch (penetration " << touch->depth << " m)";
+    msg << "joint " << st.joint << (blocker ? " blocked" : " stalled") << " in event " << event << " at "
+        << st.angle * 180.0 / M_PI << " deg (t = " << time_ << " s): ";
+    if (blocker) {
+      st.blocked_by.push_back(pattern_.actors()[blocker->a].id);
+      if (blocker->b >= 0) st.blocked_by.push_back(pattern_.actors()[blocker->b].id);
+      msg << contact_words(*blocker) << " touch (penetration " << blocker->depth << " m)";
     } else {
-      msg << "it needs " << st.needed_torque << " N·m, has " << st.available_torque << " N·m";
+      msg << where << "it needs " << st.needed_torque << " N·m, has " << st.available_torque << " N·m";
     }
     report_.stalls.push_back(st);
     fail(st.blocked_by.empty() ? geometry::StatusCode::NoProgress : geometry::StatusCode::Collision, msg.str());
   }
 
+  // Closes the event's report. A spring short of its angle when the event settled fails it here
+  // (not after a time-out or another failure: the status already says why it stopped).
   void close_event(DynamicEventReport& er) {
     er.end = time_;
     const geometry::FoldState end = sheet_.state();
@@ -341,13 +307,15 @@ class Runner {
     er.max_closure_error = std::max(er.max_closure_error, e);
     report_.max_closure_error = std::max(report_.max_closure_error, e);
     er.energy = sheet_.kinetic_energy() + sheet_.potential_energy() + sheet_.spring_energy();
-    if (o_.drive == Drive::Spring && report_.stalls.empty()) {
+    if (o_.drive == Drive::Spring && report_.status.ok()) {
       for (std::size_t j = 0; j < report_.joints.size(); ++j) {
         const int ji = static_cast<int>(j);
         const auto& d = sheet_.drive(ji);
-        if (d.kind != detail::JointDrive::Spring || std::abs(sheet_.angle_to(ji, d.target)) <= o_.reach_tolerance) continue;
+        const double short_by = sheet_.angle_to(ji, d.target);
+        if (d.kind != detail::JointDrive::Spring || std::abs(short_by) <= o_.reach_tolerance) continue;
         er.reached = false;
-        add_stall(ji, er.number, d.spring * std::abs(sheet_.angle_to(ji, d.target)));
+        const double available = d.spring * std::abs(short_by), needed = sheet_.hold_torque(ji);
+        add_stall(ji, er.number, available, needed, needed <= available ? opposing_contact(ji, short_by) : nullptr, "");
       }
     }
     if (report_.frames.back().time < time_) add_frame(er.number, end);
@@ -375,35 +343,21 @@ class Runner {
   detail::OdeSheet sheet_;
   geometry::ClosureSystem closure_;
   detail::PostStabiliser stabilise_;  // used when options ask for post-stabilisation
-  std::vector<double> stalled_for_;
+  // Per joint, for find_stalls(): seconds stuck; seconds since it last came closer to its angle;
+  // its closest |error| in this event, radians; the torque holding the sheet there needs, N·m (0:
+  // not probed).
+  std::vector<double> stalled_for_, since_best_, best_, best_need_;
   DynamicReport report_;
   std::unordered_map<long long, std::size_t> contact_index_;  // into report_.contacts, by pair
   double time_ = 0.0;
 };
 
-void check_sequence(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence, Drive drive) {
-  for (const auto& event : sequence.events)
-    for (const auto& fold : event.folds) {
-      const auto j = pattern.joint_index(fold.joint_id);
-      if (!j) throw std::invalid_argument("event " + std::to_string(event.number) + ": no joint " + std::to_string(fold.joint_id));
-      if (!std::isfinite(fold.angle)) throw simulation::SequenceError(fold.line, "fold angle is not finite");
-      // A hinge reads its angle in (−π, π], and ODE ignores a spring's stop beyond ±π.
-      if (std::abs(fold.angle) > M_PI) throw simulation::SequenceError(fold.line, "fold angle beyond ±180°");
-      if (drive == Drive::Motor && (!(fold.speed > 0.0) || !std::isfinite(fold.speed)))
-        throw simulation::SequenceError(fold.line, "speed must be positive and finite");
-      const auto& joint = pattern.joints()[*j];
-      // A damper alone (SpringConst 0) exerts nothing toward the angle: the event could only stall.
-      if (drive == Drive::Spring && !(joint.spring > 0.0))
-        throw simulation::SequenceError(fold.line, "joint " + std::to_string(joint.id) + " has no SpringConst: no spring drives it");
-    }
-}
-
 }  // namespace
 
 DynamicReport simulate_dynamic(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence,
                                const DynamicOptions& options) {
-  check_options(pattern, options);
-  check_sequence(pattern, sequence, options.drive);
+  detail::check_options(pattern, options);
+  detail::check_sequence(pattern, sequence, options.drive);
   const int fixed = !options.hold_fixed ? -1 : options.fixed_actor ? *pattern.actor_index(*options.fixed_actor) : 0;
   const auto start = std::chrono::steady_clock::now();
   std::optional<Runner> runner;

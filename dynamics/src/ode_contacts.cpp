@@ -140,9 +140,11 @@ void OdeContacts::add_prism(int actor, const std::vector<Eigen::Vector2d>& polyg
   polygons_.push_back(std::move(polygons));
 }
 
-void OdeContacts::collide() {
-  points_.clear();
+void OdeContacts::collide(const std::vector<char>* leave_out) {
+  leave_out_ = leave_out;
+  if (!leave_out) points_.clear();
   dSpaceCollide(space_.get(), this, &OdeContacts::near);
+  leave_out_ = nullptr;
 }
 
 void OdeContacts::clear() { dJointGroupEmpty(group_.get()); }
@@ -195,6 +197,7 @@ void OdeContacts::touch(dGeomID o1, dGeomID o2) {
       std::swap(a, b);
     }
   }
+  if (leave_out_ && ((*leave_out_)[a] || (b >= 0 && (*leave_out_)[b]))) return;
   dContactGeom found[kMaxContacts];
   const int n = dCollide(o1, o2, kMaxContacts, found, sizeof(dContactGeom));
   if (n == 0) return;
@@ -209,7 +212,11 @@ void OdeContacts::touch(dGeomID o1, dGeomID o2) {
     dContact c{};
     c.geom = g;
     c.surface.mode = dContactApprox1;
-    c.surface.mu = options_.friction;
+    c.surface.mu = options_.friction.value_or(kDefaultFriction);
+    if (leave_out_) {
+      c.surface.mode |= dContactSoftERP;
+      c.surface.soft_erp = 0.0;
+    }
     // Friction along the sliding direction, when sliding: Coulomb's cone there, not the pyramid of
     // two fixed axes ODE would take.
     dVector3 v1 = {0, 0, 0}, v2 = {0, 0, 0};
@@ -227,7 +234,8 @@ void OdeContacts::touch(dGeomID o1, dGeomID o2) {
     }
     dJointID j = dJointCreateContact(world_, group_.get(), &c);
     dJointAttach(j, b1, b2);
-    points_.push_back({a, b, point, g.depth});
+    // ODE's normal points the way body 1 (actor a) is pushed.
+    if (!leave_out_) points_.push_back({a, b, point, g.depth, normal});
   }
 }
 

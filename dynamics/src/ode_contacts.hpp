@@ -35,6 +35,8 @@ struct ContactPoint {
   int b = -1;      // actor index; −1: the ground
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  // world, metres
   double depth = 0.0;  // overlap of the two prisms (or prism and ground) along the normal, metres
+  // Unit, world: the direction the contact pushes actor a (actor b is pushed the opposite way).
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
 };
 
 // The collision space of one sheet and the contact joints of the current step. Keeps pointers to
@@ -50,7 +52,10 @@ class OdeContacts {
   ~OdeContacts();
 
   // Makes the contact joints of the sheet's current poses (before a step); they hold for one step.
-  void collide();
+  // With `leave_out` (per actor index; a probe step, see OdeSheet::hold_torque_signed()) the
+  // contacts of the actors it marks are not made, the others push no penetration apart (soft ERP
+  // 0: a probe holding the sheet still must not fight them), and points() keeps the last real step's.
+  void collide(const std::vector<char>* leave_out = nullptr);
   // Removes them (after the step).
   void clear();
   // The contact points of the last collide() (vertex-shared points left out), in world metres.
@@ -80,6 +85,7 @@ class OdeContacts {
   JointGroup group_;
   Space space_;
   std::vector<ContactPoint> points_;
+  const std::vector<char>* leave_out_ = nullptr;  // during a probe's collide() only
 };
 
 }  // namespace foldkit::dynamics::detail

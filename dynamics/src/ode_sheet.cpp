@@ -99,9 +99,10 @@ struct OdeSheet::Impl {
   std::unique_ptr<OdeContacts> contacts;  // only when the options ask for contacts or a ground
   geometry::KinematicTree tree;           // rooted at the fixed actor (actor 0 when none is held)
 
-  // One engine step: this pose's contacts, the solver, the contacts removed.
-  void advance() {
-    if (contacts) contacts->collide();
+  // One engine step: this pose's contacts (a probe's leaving out those `leave_out` marks), the
+  // solver, the contacts removed.
+  void advance(const std::vector<char>* leave_out = nullptr) {
+    if (contacts) contacts->collide(leave_out);
     if (options.solver == Solver::Direct) dWorldStep(world.get(), options.time_step);
     else dWorldQuickStep(world.get(), options.time_step);
     if (contacts) contacts->clear();
@@ -175,6 +176,7 @@ OdeSheet::OdeSheet(const geometry::CreasePattern& pattern, const DynamicOptions&
 OdeSheet::~OdeSheet() = default;
 
 void OdeSheet::set_rates(const Eigen::VectorXd& rates) {
+  const EngineScope engine;
   Impl& s = *impl_;
   const std::vector<Eigen::Isometry3d> pose = poses();
   // Down the tree: a child turns as its parent plus its joint's rate about the (common) axis, and
@@ -195,6 +197,7 @@ void OdeSheet::set_rates(const Eigen::VectorXd& rates) {
 }
 
 void OdeSheet::place(const geometry::FoldState& state) {
+  const EngineScope engine;
   Impl& s = *impl_;
   const int root = std::max(s.fixed, 0);
   // The root stays where it is (a held root at its flat pose; a free one where the engine has it).
@@ -214,6 +217,7 @@ void OdeSheet::place(const geometry::FoldState& state) {
 }
 
 void OdeSheet::set_drive(int j, const JointDrive& drive) {
+  const EngineScope engine;
   drives_[j] = drive;
   dJointID h = impl_->hinges[j];
   // Stops first opened wide (ODE ignores a low stop above the high one). ODE tests a hinge's
@@ -237,6 +241,7 @@ void OdeSheet::set_drive(int j, const JointDrive& drive) {
 }
 
 void OdeSheet::step() {
+  const EngineScope engine;
   const DynamicOptions& o = impl_->options;
   for (std::size_t j = 0; j < drives_.size(); ++j) {
     const JointDrive& d = drives_[j];
@@ -245,7 +250,6 @@ void OdeSheet::step() {
     const double command = std::clamp(error / o.approach_time, -d.speed, d.speed);
     dJointSetHingeParam(impl_->hinges[j], dParamVel, command);
   }
-  const EngineScope engine;
   impl_->advance();
 }
 
@@ -292,7 +296,7 @@ double OdeSheet::torque(int j) const {
   return moment.dot(vec(a));
 }
 
-double OdeSheet::hold_torque_signed(int j) {
+double OdeSheet::probe(int j, const JointDrive& drive, double applied, const std::vector<char>& leave_out, double* rate) {
   const EngineScope engine;
   Impl& s = *impl_;
   std::vector<BodyState> saved;
@@ -309,11 +313,13 @@ double OdeSheet::hold_torque_signed(int j) {
   // (frames, --series, the other motors' stall tests) are the real step's.
   const std::vector<dJointFeedback> feedback(s.feedback.begin(), s.feedback.end());
   const JointDrive kept = drives_[j];
-  JointDrive hold{JointDrive::Motor, angle(j), 1.0, dInfinity};  // an equality row: no limit
-  set_drive(j, hold);
+  set_drive(j, drive);
   dJointSetHingeParam(s.hinges[j], dParamVel, 0.0);
-  s.advance();
-  const double needed = torque(j);
+  // ODE's hinge torque turns body 1 about the hinge axis: the fold angle up, either way attached.
+  if (applied != 0.0) dJointAddHingeTorque(s.hinges[j], applied);
+  s.advance(&leave_out);
+  const double exerted = torque(j);
+  if (rate) *rate = this->rate(j);
   for (std::size_t a = 0; a < s.bodies.size(); ++a) {
     const BodyState& b = saved[a];
     const dQuaternion q = {b.orientation.w(), b.orientation.x(), b.orientation.y(), b.orientation.z()};
@@ -324,10 +330,44 @@ double OdeSheet::hold_torque_signed(int j) {
   }
   set_drive(j, kept);
   std::copy(feedback.begin(), feedback.end(), s.feedback.begin());
-  return needed;
+  return exerted;
+}
+
+double OdeSheet::hold_torque_signed(int j) {
+  const JointDrive hold{JointDrive::Motor, angle(j), 1.0, dInfinity};  // an equality row: no limit
+  return probe(j, hold, 0.0, moving_side(j), nullptr);
+}
+
+double OdeSheet::released_rate(int j, double applied) {
+  double rate = 0.0;
+  probe(j, JointDrive{}, applied, std::vector<char>(impl_->bodies.size(), 0), &rate);
+  return rate;
 }
 
 double OdeSheet::hold_torque(int j) { return std::abs(hold_torque_signed(j)); }
+
+std::vector<char> OdeSheet::moving_side(int j) const {
+  const Impl& s = *impl_;
+  const int n = static_cast<int>(s.bodies.size()), root = std::max(s.fixed, 0);
+  int child = s.right[j] == root ? s.left[j] : s.right[j];
+  for (int a = 0; a < n; ++a)
+    if (s.tree.parent_joint[a] == j) child = a;
+  std::vector<char> side(n, 0);
+  for (int a = 0; a < n; ++a)
+    for (int x = a; x >= 0 && !side[a]; x = s.tree.parent[x]) side[a] = x == child;
+  return side;
+}
+
+double OdeSheet::contact_moment(int j, const ContactPoint& c) const {
+  const Impl& s = *impl_;
+  const std::vector<char> side = moving_side(j);
+  const bool on_a = side[c.a], on_b = c.b >= 0 && side[c.b];
+  if (on_a == on_b) return 0.0;  // both on it push each other: no moment about j
+  const Eigen::Vector3d axis = s.orientation(s.left[j]) * s.axis[j], on_axis = poses()[s.left[j]] * s.anchor[j];
+  const Eigen::Vector3d push = on_a ? c.normal : Eigen::Vector3d(-c.normal);
+  // A torque about +axis on the right actor's side turns the fold angle up; on the left's, down.
+  return (side[s.right[j]] ? 1.0 : -1.0) * (c.point - on_axis).cross(push).dot(axis);
+}
 
 const std::vector<ContactPoint>& OdeSheet::contact_points() const {
   static const std::vector<ContactPoint> none;

@@ -13,7 +13,8 @@
 namespace foldkit::dynamics::detail {
 
 // ODE reported an internal error (its error and debug handlers throw this instead of aborting, on a
-// thread inside one of OdeSheet's engine calls; the constructor, step() and hold_torque*() throw it).
+// thread inside one of OdeSheet's engine calls; the constructor, set_drive(), step(), place(),
+// set_rates() and the probes hold_torque*() and released_rate() throw it).
 struct EngineError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -63,10 +64,25 @@ class OdeSheet {
   double torque(int j) const;
   // Torque joint j needs to hold the current pose with the sheet at rest and every motor holding
   // still (a probe step with its limit lifted; every body's state is restored afterwards), N·m,
-  // absolute.
+  // absolute. The contacts of j's moving side are left out (what the joint must carry without
+  // their help: a ground under a flap would carry its weight), and the others push no penetration
+  // apart (a probe holding still against that would read any torque).
   double hold_torque(int j);
   // The same, signed as torque() reads it.
   double hold_torque_signed(int j);
+  // Joint j's rate after one probe step from rest with its drive replaced by the constant torque
+  // `applied` (N·m, signed as torque()), every motor holding still and every contact in (pushing
+  // no penetration apart); every body's state is restored afterwards. rad/s: what the contacts
+  // let that torque start, where hold_torque() cannot tell how much of it they carry.
+  double released_rate(int j, double applied);
+  // Actors on joint j's moving side (per actor index, 1 on it): those beyond j from the root in
+  // the kinematic tree (for a joint closing a loop, the right actor's subtree, or the left's when
+  // the right is the root).
+  std::vector<char> moving_side(int j) const;
+  // The moment about joint j's axis with which contact c pushes j's moving side, per newton of
+  // its normal force, signed as the fold angle: positive turns j toward larger angles, metres.
+  // 0 when neither of c's actors is on that side or both are.
+  double contact_moment(int j, const ContactPoint& c) const;
   // The contact points of the last step (empty without contacts).
   const std::vector<ContactPoint>& contact_points() const;
   // The sheet's thickness for contacts, metres (0 without contacts).
@@ -82,6 +98,12 @@ class OdeSheet {
   double max_rate() const;
 
  private:
+  // One probe step from rest with joint j's drive replaced by `drive` and `applied` N·m added at
+  // it, the other motors holding still, the contacts of the actors `leave_out` marks left out;
+  // returns j's drive torque in it (and its rate after it in *rate, when given) and restores
+  // every body's state, the drive and the joints' feedback.
+  double probe(int j, const JointDrive& drive, double applied, const std::vector<char>& leave_out, double* rate);
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::vector<JointDrive> drives_;

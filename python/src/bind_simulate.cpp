@@ -92,7 +92,7 @@ void bind_dynamic_report_parts(py::module_& m) {
       .def_readonly("time", &dynamics::Stall::time, "When, seconds from the start.")
       .def_readonly("angle", &dynamics::Stall::angle, "Its angle then, radians.")
       .def_readonly("target", &dynamics::Stall::target, "The angle it was driven to, radians.")
-      .def_readonly("needed_torque", &dynamics::Stall::needed_torque, "Torque to hold the sheet there at rest, N·m.")
+      .def_readonly("needed_torque", &dynamics::Stall::needed_torque, "Torque to hold the sheet there at rest without the contacts of its moving side, N·m.")
       .def_readonly("available_torque", &dynamics::Stall::available_torque, "The motor's limit (a spring's k·|θ*−θ|), N·m.")
       .def_readonly("blocked_by", &dynamics::Stall::blocked_by,
                     "Actor IDs of the contact that blocks it (one: the ground); empty: its torque was too small.");
@@ -181,7 +181,7 @@ struct PhysicsArgs {
   std::string drive;
   std::optional<double> ground;
   bool contacts;
-  double friction;
+  std::optional<double> friction;
   std::optional<double> thickness;
   std::optional<std::map<int, double>> joint_torque;
   std::optional<Eigen::VectorXd> start;
@@ -195,7 +195,7 @@ struct PhysicsArgs {
     const std::pair<bool, const char*> named[] = {
         {gravity.has_value(), "gravity"}, {density != d.density, "density"}, {max_torque != d.max_torque, "max_torque"},
         {scale != d.scale, "scale"}, {!fixed.is_none(), "fixed"}, {drive != dynamics::to_string(d.drive), "drive"},
-        {ground.has_value(), "ground"}, {contacts != d.contacts, "contacts"}, {friction != d.friction, "friction"},
+        {ground.has_value(), "ground"}, {contacts != d.contacts, "contacts"}, {friction.has_value(), "friction"},
         {thickness.has_value(), "thickness"}, {joint_torque.has_value(), "joint_torque"}, {start.has_value(), "start"},
         {solver != dynamics::to_string(d.solver), "solver"}, {iterations != d.iterations, "iterations"},
         {projection_interval != d.projection_interval, "projection_interval"}};
@@ -268,7 +268,7 @@ void bind_simulate(py::module_& m) {
          std::optional<double> time_step, std::optional<double> closure_tolerance, bool collisions, bool record_frames, bool poses,
          std::optional<double> max_event_time, std::optional<Eigen::Vector3d> gravity, double density, double max_torque,
          const py::object& fixed, double scale, const std::string& drive, std::optional<double> ground, bool contacts,
-         double friction, std::optional<double> thickness, std::optional<std::map<int, double>> joint_torque,
+         std::optional<double> friction, std::optional<double> thickness, std::optional<std::map<int, double>> joint_torque,
          std::optional<Eigen::VectorXd> start, const std::string& solver, int iterations,
          double projection_interval) -> py::object {
         const auto& sequence = sequence_object.cast<const geometry::FoldSequence&>();
@@ -317,7 +317,7 @@ void bind_simulate(py::module_& m) {
       py::arg("density") = dynamics::DynamicOptions{}.density, py::arg("max_torque") = dynamics::DynamicOptions{}.max_torque,
       py::arg("fixed") = py::none(), py::arg("scale") = dynamics::DynamicOptions{}.scale,
       py::arg("drive") = std::string(dynamics::to_string(dynamics::DynamicOptions{}.drive)), py::arg("ground") = py::none(),
-      py::arg("contacts") = dynamics::DynamicOptions{}.contacts, py::arg("friction") = dynamics::DynamicOptions{}.friction,
+      py::arg("contacts") = dynamics::DynamicOptions{}.contacts, py::arg("friction") = py::none(),
       py::arg("thickness") = py::none(), py::arg("joint_torque") = py::none(), py::arg("start") = py::none(),
       py::arg("solver") = std::string(dynamics::to_string(dynamics::DynamicOptions{}.solver)),
       py::arg("iterations") = dynamics::DynamicOptions{}.iterations,
@@ -325,7 +325,7 @@ void bind_simulate(py::module_& m) {
       "Replays `sequence` on `pattern` as `foldkit simulate`: model 'motor' (CMML speeds), 'spring', 'sync', or 'dynamic' "
       "(a physics engine: returns a DynamicReport; gravity (x, y, z) m/s², density kg/m², max_torque N·m, joint_torque "
       "{joint ID: N·m}, fixed actor ID (None: the first; 'none': no actor held), scale metres per pattern unit, drive "
-      "'motor' or 'spring', ground z of a ground plane (m), contacts=True for facet–facet contacts, friction μ, "
+      "'motor' or 'spring', ground z of a ground plane (m), contacts=True for facet–facet contacts, friction μ (None: 0.5), "
       "thickness m, start angles (radians) to start from, solver 'direct' or 'iterative' with iterations sweeps, "
       "projection_interval s between post-stabilisations (0: none); docs/SIMULATION.md; these are refused for the other models). "
       "time_step, closure_tolerance and max_event_time default to the model's own (None). "

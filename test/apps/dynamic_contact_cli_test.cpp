@@ -60,12 +60,22 @@ TEST(DynamicContactCli, FlapFoldedIntoTheGroundIsBlockedWhereItsEdgeTouches) {
   EXPECT_EQ(j["contacts"][0]["actors"], nlohmann::json::array({2}));
   EXPECT_LE(j["max_penetration"].get<double>(), 0.1 * t);
   EXPECT_DOUBLE_EQ(j["thickness"].get<double>(), t);
+  // The run's settings, defaults included.
+  EXPECT_DOUBLE_EQ(j["ground"].get<double>(), -h);
+  EXPECT_EQ(j["facet_contacts"], false);
+  EXPECT_DOUBLE_EQ(j["friction"].get<double>(), 0.5);
+  EXPECT_EQ(j["fixed"], 1);
+  EXPECT_EQ(j["solver"], "direct");
+  EXPECT_EQ(j["iterations"], 100);
+  EXPECT_DOUBLE_EQ(j["projection_interval"].get<double>(), 0.0);
   // Without the ground the motor reaches its angle, and no contact is reported.
   const auto free = foldkit({"simulate", s.pmml, s.cmml, "--model", "dynamic", "--scale", "0.5", "--json"});
   ASSERT_EQ(free.exit, 0) << free.err;
   const auto jf = nlohmann::json::parse(free.out);
   EXPECT_TRUE(jf["contacts"].empty());
   EXPECT_TRUE(jf["thickness"].is_null());
+  EXPECT_TRUE(jf["ground"].is_null());
+  EXPECT_TRUE(jf["friction"].is_null());  // nothing to touch: no friction
 }
 
 TEST(DynamicContactCli, StartStateAndJointTorque) {
@@ -78,11 +88,34 @@ TEST(DynamicContactCli, StartStateAndJointTorque) {
   EXPECT_NEAR(j["final_angles"][0]["angle"].get<double>(), -60.0, 0.01);
   EXPECT_LT(j["duration"].get<double>(), 1.3);
   EXPECT_GT(j["duration"].get<double>(), 0.9);
-  // Under gravity (m g d = 0.5·9.81·0.25 N·m at density 2, scale 0.5) --max-torque 0.1 stalls;
+  // Under gravity (m g d = 0.5·9.81·0.25 N·m at density 2, scale 0.5) --max-torque 0.1 stalls:
+  // the flap falls and swings below the base, and where it came closest (flat) it needed m g d;
   // --joint-torque 1:2 gives joint 1 its own limit and it lifts.
+  const double mgd = 0.5 * 9.81 * 0.25;
   const std::vector<std::string> heavy = {"simulate", s.pmml, s.cmml, "--model", "dynamic", "--gravity", "0,0,-9.81",
                                           "--density", "2", "--scale", "0.5", "--max-torque", "0.1"};
-  EXPECT_EQ(foldkit(heavy).exit, 3);
+  auto weak = heavy;
+  weak.push_back("--json");
+  const auto stalled = foldkit(weak);
+  ASSERT_EQ(stalled.exit, 3) << stalled.err;
+  const auto js = nlohmann::json::parse(stalled.out);
+  EXPECT_EQ(js["status"], "no-progress");
+  ASSERT_EQ(js["stalls"].size(), 1u);
+  EXPECT_EQ(js["stalls"][0]["joint"], 1);
+  EXPECT_TRUE(js["stalls"][0]["blocked_by"].empty());
+  EXPECT_NEAR(js["stalls"][0]["needed_torque"].get<double>(), mgd, 0.01 * mgd);
+  EXPECT_NE(stalled.err.find("joint 1 stalled"), std::string::npos) << stalled.err;
+  // Resting on the ground the flap is lifted off it, which pushes it up: still a stall needing m g
+  // d (the ground's help left out), not a collision.
+  auto grounded = weak;
+  grounded.insert(grounded.end(), {"--ground", "-0.001", "--thickness", "0.002"});
+  const auto on_ground = foldkit(grounded);
+  ASSERT_EQ(on_ground.exit, 3) << on_ground.err;
+  const auto jg = nlohmann::json::parse(on_ground.out);
+  EXPECT_EQ(jg["status"], "no-progress");
+  ASSERT_EQ(jg["stalls"].size(), 1u);
+  EXPECT_TRUE(jg["stalls"][0]["blocked_by"].empty());
+  EXPECT_NEAR(jg["stalls"][0]["needed_torque"].get<double>(), mgd, 0.01 * mgd);
   auto strong = heavy;
   strong.insert(strong.end(), {"--joint-torque", "1:2"});
   const auto lifted = foldkit(strong);
@@ -97,6 +130,7 @@ TEST(DynamicContactCli, FreeSheetFoldsWithNoActorHeld) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["final_angles"][0]["angle"].get<double>(), 60.0, 0.01);
   EXPECT_NEAR(j["energy"]["potential"].get<double>(), 0.0, 1e-12);  // no gravity
+  EXPECT_EQ(j["fixed"], "none");
 }
 
 TEST(DynamicContactCli, BadContactOptionsAreRefusedWithoutOutput) {

@@ -77,6 +77,7 @@ TEST(DynamicContact, FlapDroppedOntoTheGroundRestsWhereItsEdgeTouches) {
   EXPECT_DOUBLE_EQ(r.thickness, t);
   // Without a ground the same flap swings through that angle.
   o.ground.reset();
+  o.thickness.reset();  // with nothing to touch it would be ignored: refused
   o.record_frames = true;
   const auto free = dynamics::simulate_dynamic(pattern, one_fold(2, -1.5, 0.5), o);
   double lowest = 0.0;
@@ -183,6 +184,7 @@ TEST(DynamicContact, FlapFoldedOntoAnotherStopsOnItInsteadOfPassingThrough) {
   EXPECT_FALSE(r.contacts[0].ground);
   // Without contacts the dynamic model, like the kinematic one, lets B pass through A to its angle.
   o.contacts = false;
+  o.thickness.reset();  // with nothing to touch it would be ignored: refused
   const auto through = dynamics::simulate_dynamic(pattern, seq, o);
   EXPECT_TRUE(through.status.ok()) << through.status.message;
   EXPECT_NEAR(std::abs(through.final_state.angles[1]), M_PI, 2e-4);

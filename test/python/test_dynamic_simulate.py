@@ -101,6 +101,12 @@ def test_joint_torque_start_and_free_sheet():
                    {"ground": float("nan")}, {"thickness": 0.0}, {"start": np.array([0.1, 0.2])}]:
         with pytest.raises(ValueError):
             foldkit.simulate(p, seq, model="dynamic", **kwargs)
+    # Friction and thickness act on contacts only: with nothing to touch refused, as the CLI refuses them.
+    for name, value in [("friction", 0.3), ("thickness", 0.01)]:
+        with pytest.raises(ValueError, match=name + " needs contacts or ground"):
+            foldkit.simulate(p, seq, model="dynamic", **{name: value})
+        r = foldkit.simulate(p, seq, model="dynamic", ground=-1.0, **{name: value})
+        assert r.valid and r.contacts == []
 
 
 def test_iterative_solver_post_stabilised_lifts_the_flap():

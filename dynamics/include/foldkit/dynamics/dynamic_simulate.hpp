@@ -56,6 +56,9 @@ const char* to_string(Solver solver);
 /// @throws std::invalid_argument for any other name
 Solver parse_solver(const std::string& name);
 
+/// Coulomb coefficient μ of every contact when DynamicOptions::friction is empty.
+inline constexpr double kDefaultFriction = 0.5;
+
 /// Options of simulate_dynamic(): every default of the dynamic model, once.
 struct DynamicOptions {
   double density = 1.0;      ///< areal density of the sheet, kg/m² (positive, finite)
@@ -74,10 +77,12 @@ struct DynamicOptions {
   /// Facet–facet contacts (with friction): facets not joined by a crease push each other apart
   /// instead of passing through. Off: no collision space is built (unless ground asks for one).
   bool contacts = false;
-  double friction = 0.5;     ///< Coulomb coefficient μ of every contact (≥ 0, finite)
+  /// Coulomb coefficient μ of every contact (≥ 0, finite); empty: kDefaultFriction. Given, it
+  /// needs contacts or ground (else nothing would use it).
+  std::optional<double> friction;
   /// Thickness of the sheet for contacts, metres: each facet is a prism this thick about its
   /// mid-surface (a zero-thickness sheet has no stable contact); empty: 1e-3 of the sheet's
-  /// bounding-box diagonal times scale. Positive and finite.
+  /// bounding-box diagonal times scale. Positive and finite; given, it needs contacts or ground.
   std::optional<double> thickness;
   double scale = 1.0;        ///< metres per pattern unit (positive, finite)
   /// The state the sheet starts from, at rest (one angle per joint, radians, closed: its loop
@@ -106,13 +111,17 @@ struct DynamicOptions {
   /// Spring drive: an event ends when every joint turns slower than this (rad/s) …
   double settle_speed = 1e-3;
   /// … for this long (seconds), and every spring's static torque k(θ* − θ) is what holding the
-  /// sheet at rest there needs, within k·reach_tolerance (else it is still on its way: a soft
-  /// spring starts slowly; the sheet's contacts, if any, count as settled).
+  /// sheet at rest there needs without the contacts on its moving side, within k·reach_tolerance,
+  /// or the rest is carried by a contact pushing against the spring (else it is still on its way:
+  /// a soft spring starts slowly).
   double settle_time = 0.1;
   /// A motor that is not within reach_tolerance, makes less than a hundredth of its speed of
-  /// progress and uses its full torque for this long (seconds) has stalled, when holding the
-  /// sheet at rest where it is would need more than its torque (else it was a transient, such as
-  /// braking an overshoot, and it goes on).
+  /// progress and uses its full torque for this long (seconds) has stalled when holding the sheet
+  /// at rest where it is, without the contacts on its moving side, would need more than its
+  /// torque; it is blocked when it would not, and a contact there pushes against it (else it was
+  /// a transient, such as braking an overshoot, and it goes on). A motor that comes no closer to
+  /// its angle for this long (swinging under gravity, say) has stalled when, where it came
+  /// closest, it could not hold the sheet.
   double stall_time = 0.1;
   double max_event_time = 60.0;   ///< seconds an event may take before it fails (LimitReached)
   double closure_tolerance = 1e-3;  ///< radians; a larger loop error of the engine's poses fails the sequence
@@ -131,7 +140,9 @@ struct Stall {
   double angle = 0.0;          ///< the joint's angle then, radians
   double target = 0.0;         ///< the angle it was driven to, radians
   /// Torque the joint needs to hold its current pose (N·m, absolute): the engine's answer with
-  /// the joint's limit lifted, the sheet at rest and every other motor holding still.
+  /// the joint's limit lifted, the sheet at rest, every other motor holding still and the
+  /// contacts of the joint's moving side left out (their help not counted). For a motor that
+  /// swung back and forth, where it came closest to its target (the message says so).
   double needed_torque = 0.0;
   double available_torque = 0.0;  ///< the motor's limit (spring drive: k·|θ* − θ|), N·m
   /// Actor IDs of the contact that blocks it (a collision: holding the sheet there needs no more
@@ -209,7 +220,8 @@ struct DynamicReport {
 /// @throws std::invalid_argument for options out of range (a density, torque, scale, time or
 ///         tolerance that is not positive and finite, a time step above approach_time or
 ///         stall_time, gravity, ground, friction or thickness not finite (friction negative,
-///         thickness not positive), an unknown fixed
+///         thickness not positive), friction or thickness given with neither contacts nor
+///         ground, an unknown fixed
 ///         actor, iterations < 1, erp outside (0, 1], a negative or non-finite
 ///         projection_interval, a start state of the wrong size, not finite
 ///         or not closed) or a sequence naming joints the pattern lacks
