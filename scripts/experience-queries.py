@@ -7,11 +7,15 @@ the `resch` scene does: the assignment's signs, each crease scaled by its own dr
 plans from flat through the CLI: cold (`foldkit plan`, RRTConnect) and, for each framework of
 --frameworks, with `--experience DB --experience-framework F` (one database per framework,
 growing over the queries). Prints one line per query; then per half (the first and the second
---goals/2) the solved count and median time of each, the recalls, and each database's final size,
-states and load time (docs/PLANNING.md, "Planning from experience").
+--goals/2) the solved count and median time of each, the recalls, the median load time and wall
+time of the whole `foldkit plan` process, and each database's final size, states and load time
+(docs/PLANNING.md, "Planning from experience"), with the load average before and after.
+
+--baseline CLI plans each framework's queries a second time with another foldkit build, on its own
+database, in the same run (query by query, interleaved): before/after figures under the same load.
 
 Usage: PYTHONPATH=build/python python3 scripts/experience-queries.py build/apps/foldkit OUTDIR
-           [--goals 40] [--time 10] [--frameworks lightning,thunder]
+           [--goals 40] [--time 10] [--frameworks lightning,thunder] [--baseline OLD/foldkit]
 """
 import argparse
 import json
@@ -19,6 +23,7 @@ import os
 import random
 import statistics
 import subprocess
+import time
 
 import numpy as np
 
@@ -40,9 +45,15 @@ def goals_for(pattern, count, seed):
 
 
 def plan(cli, pmml, goal, out, seed, seconds, extra):
+    """The exit status, the JSON, and the process's wall time (load, plan, replay, write)."""
+    t0 = time.monotonic()
     r = subprocess.run([cli, "plan", pmml, "--goal", goal, "-o", out, "--seed", str(seed), "--time", str(seconds), "--json"] + extra,
                        capture_output=True, text=True, check=False)
-    return r.returncode, json.loads(r.stdout) if r.stdout.strip() else {}
+    return r.returncode, json.loads(r.stdout) if r.stdout.strip() else {}, time.monotonic() - t0
+
+
+def median(values):
+    return statistics.median(values) if values else float("nan")
 
 
 def main():
@@ -53,16 +64,23 @@ def main():
     ap.add_argument("--time", type=float, default=10.0)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--frameworks", default="lightning", help="comma-separated: lightning, thunder")
+    ap.add_argument("--baseline", help="another foldkit CLI to run each framework with too (its rows: FRAMEWORK@baseline)")
     a = ap.parse_args()
-    frameworks = a.frameworks.split(",")
-    for f in frameworks:
+    for f in a.frameworks.split(","):
         if f not in ("lightning", "thunder"):
             ap.error(f"--frameworks: unknown framework '{f}' (known: lightning, thunder)")
+    # Per column: (label, cli, framework); the baseline's columns follow each framework's own.
+    columns = []
+    for f in a.frameworks.split(","):
+        columns.append((f, a.cli, f))
+        if a.baseline:
+            columns.append((f + "@baseline", a.baseline, f))
+    print(f"load average before: {os.getloadavg()}", flush=True)
     os.makedirs(a.out, exist_ok=True)
     pmml = os.path.join(a.out, "resch.pmml")
     foldkit.write_pmml(pmml, foldkit.load_pattern(os.path.join(REPO, "bench/data/robbykraft_resch-tess.fold")))
     pattern = foldkit.read_pmml(pmml)
-    dbs = {f: os.path.join(a.out, f"resch.{f}.db") for f in frameworks}
+    dbs = {label: os.path.join(a.out, f"resch.{label}.db") for label, _, _ in columns}
     for db in dbs.values():
         if os.path.exists(db):
             os.remove(db)
@@ -71,28 +89,32 @@ def main():
         goal = os.path.join(a.out, f"goal{i}.cmml")
         foldkit.write_cmml(goal, foldkit.sequence_to(pattern, g, 1.0))
         plan_out = os.path.join(a.out, "plan.cmml")
-        rc, cold = plan(a.cli, pmml, goal, plan_out, i + 1, a.time, [])
-        row = {"cold": (rc, cold.get("seconds"), {})}
-        line = f"query {i}: cold exit {rc} {cold.get('seconds')} s"
-        for f in frameworks:
-            rc, exp = plan(a.cli, pmml, goal, plan_out, i + 1, a.time, ["--experience", dbs[f], "--experience-framework", f])
+        rc, cold, wall = plan(a.cli, pmml, goal, plan_out, i + 1, a.time, [])
+        row = {"cold": (rc, cold.get("seconds"), {}, wall)}
+        line = f"query {i}: cold exit {rc} {cold.get('seconds')} s (wall {wall:.3f} s)"
+        for label, cli, f in columns:
+            rc, exp, wall = plan(cli, pmml, goal, plan_out, i + 1, a.time, ["--experience", dbs[label], "--experience-framework", f])
             e = exp.get("experience", {})
-            row[f] = (rc, exp.get("seconds"), e)
-            line += (f"; {f} exit {rc} {exp.get('seconds')} s, recalled {e.get('recalled')}, recall {e.get('recall_seconds')} s, "
-                     f"load {e.get('load_seconds')} s, {e.get('paths')} paths, {e.get('states')} states, {e.get('bytes')} bytes")
+            row[label] = (rc, exp.get("seconds"), e, wall)
+            line += (f"; {label} exit {rc} {exp.get('seconds')} s (wall {wall:.3f} s), recalled {e.get('recalled')}, "
+                     f"recall {e.get('recall_seconds')} s, load {e.get('load_seconds')} s, {e.get('paths')} paths, "
+                     f"{e.get('states')} states, {e.get('bytes')} bytes")
         rows.append(row)
         print(line, flush=True)
     half = len(rows) // 2
     for name, part in (("first half", rows[:half]), ("second half", rows[half:])):
-        for key in ["cold"] + frameworks:
+        for key in ["cold"] + [label for label, _, _ in columns]:
             times = [r[key][1] for r in part if r[key][0] == 0]
             recalled = sum(bool(r[key][2].get("recalled")) for r in part)
-            print(f"{name}: {key} solved {len(times)}/{len(part)}, median {statistics.median(times) if times else float('nan'):.4f} s"
-                  + ("" if key == "cold" else f", recalled {recalled}"))
-    for f in frameworks:
-        last = rows[-1][f][2] if rows else {}
-        print(f"database {f}: {os.path.getsize(dbs[f]) if os.path.exists(dbs[f]) else 0} bytes, {last.get('paths')} paths, "
+            loads = [r[key][2]["load_seconds"] for r in part if "load_seconds" in r[key][2]]
+            walls = [r[key][3] for r in part]
+            print(f"{name}: {key} solved {len(times)}/{len(part)}, median {median(times):.4f} s, process wall median {median(walls):.3f} s"
+                  + ("" if key == "cold" else f", recalled {recalled}, load median {median(loads):.5f} s (max {max(loads, default=float('nan')):.5f} s)"))
+    for label, _, _ in columns:
+        last = rows[-1][label][2] if rows else {}
+        print(f"database {label}: {os.path.getsize(dbs[label]) if os.path.exists(dbs[label]) else 0} bytes, {last.get('paths')} paths, "
               f"{last.get('states')} states; the last query loaded it ({last.get('loaded')} paths) in {last.get('load_seconds')} s")
+    print(f"load average after: {os.getloadavg()}")
 
 
 if __name__ == "__main__":

@@ -28,7 +28,8 @@ namespace og = ompl::geometric;
 namespace {
 
 constexpr const char* kMagic = "foldkit-experience";
-constexpr int kVersion = 1;
+// Version 2 adds Thunder's roadmap after the paths; version 1 files (paths only) still read.
+constexpr int kVersion = 2;
 
 struct Fnv {
   std::uint64_t h = 1469598103934665603ull;
@@ -42,12 +43,17 @@ struct Fnv {
   }
 };
 
-// OMPL's database warns, when it is destroyed, of paths its own save() did not write; foldkit's
-// caller writes bytes() itself, so the count is cleared then.
+// OMPL's databases warn, when they are destroyed, of paths their own save() did not write;
+// foldkit's caller writes bytes() itself, so the count is cleared then.
 class Database : public ompl::tools::LightningDB {
  public:
   using LightningDB::LightningDB;
   ~Database() override { numUnsavedPaths_ = 0; }
+};
+class Roadmaps : public ompl::tools::ThunderDB {
+ public:
+  using ThunderDB::ThunderDB;
+  ~Roadmaps() override { numPathsInserted_ = 0; }
 };
 
 std::uint32_t crc32(const std::string& body) {
@@ -68,6 +74,9 @@ struct Header {
   std::size_t state_bytes = 0, paths = 0, bytes = 0;
   std::uint64_t pattern = 0;
   std::uint32_t crc = 0;
+  // Version 2: the roadmap section (all 0 when there is none), its records after the paths'.
+  std::size_t roadmap_paths = 0, roadmap_vertices = 0, roadmap_edges = 0, roadmap_bytes = 0;
+  std::uint32_t roadmap_crc = 0;
 };
 
 // Reads the header off `in`; the reason it is not one, or empty.
@@ -75,7 +84,8 @@ std::string read_header(std::istream& in, Header& h) {
   std::string magic;
   int version = 0;
   if (!(in >> magic >> version) || magic != kMagic) return "not a foldkit experience database (it does not start with \"foldkit-experience\")";
-  if (version != kVersion) return "experience database version " + std::to_string(version) + ", this foldkit reads version " + std::to_string(kVersion);
+  if (version != 1 && version != kVersion)
+    return "experience database version " + std::to_string(version) + ", this foldkit reads versions 1 and " + std::to_string(kVersion);
   const auto field = [&](const char* key, auto& value, bool in_hex = false) {
     std::string k;
     if (!(in >> k) || k != key) return false;
@@ -87,6 +97,10 @@ std::string read_header(std::istream& in, Header& h) {
   if (!field("space", h.space) || !field("state-bytes", h.state_bytes) || !field("pattern", h.pattern, true) || !field("paths", h.paths) ||
       !field("bytes", h.bytes) || !field("crc", h.crc, true))
     return "damaged header (expected the lines space, state-bytes, pattern, paths, bytes, crc)";
+  if (version >= 2 && (!field("roadmap-paths", h.roadmap_paths) || !field("roadmap-vertices", h.roadmap_vertices) ||
+                       !field("roadmap-edges", h.roadmap_edges) || !field("roadmap-bytes", h.roadmap_bytes) ||
+                       !field("roadmap-crc", h.roadmap_crc, true)))
+    return "damaged header (expected the lines roadmap-paths, roadmap-vertices, roadmap-edges, roadmap-bytes, roadmap-crc)";
   if (in.get() != '\n') return "damaged header (no line break before the records)";
   return {};
 }
@@ -111,8 +125,8 @@ class AnyPair : public ob::Goal {
 // pairs anything serves, as the roadmap is only built (addPathToRoadmap) and searched between
 // the query's ends (getSimilarPaths).
 std::shared_ptr<ompl::tools::ThunderDB> make_thunder(const ob::SpaceInformationPtr& si) {
-  auto db = std::make_shared<ompl::tools::ThunderDB>(si->getStateSpace());
-  auto spars = std::make_shared<og::SPARSdb>(si);
+  auto db = std::make_shared<Roadmaps>(si->getStateSpace());
+  auto spars = detail::make_roadmap(si);
   auto pdef = std::make_shared<ob::ProblemDefinition>(si);
   pdef->setGoal(std::make_shared<AnyPair>(si));
   spars->setProblemDefinition(pdef);
@@ -180,10 +194,16 @@ void ExperienceDatabase::read(const std::string& bytes, const std::string& name)
          " (another pattern)");
   if (h.pattern != fingerprint_) fail("written for another pattern (its fingerprint " + hex(h.pattern) + ", this one's " + hex(fingerprint_) + ")");
   const auto at = static_cast<std::size_t>(in.tellg());
-  if (bytes.size() - at != h.bytes)
-    fail("damaged: " + std::to_string(bytes.size() - at) + " bytes of records where the header says " + std::to_string(h.bytes));
-  const std::string body = bytes.substr(at);
+  // Compared without adding the two counts, which a hand-made header could make wrap around.
+  if (h.bytes > bytes.size() - at || bytes.size() - at - h.bytes != h.roadmap_bytes)
+    fail("damaged: " + std::to_string(bytes.size() - at) + " bytes of records where the header says " + std::to_string(h.bytes) +
+         (h.roadmap_bytes ? " + " + std::to_string(h.roadmap_bytes) : std::string()));
+  const std::string body = bytes.substr(at, h.bytes), roadmap = bytes.substr(at + h.bytes);
   if (crc32(body) != h.crc) fail("damaged: the records do not match their CRC-32");
+  if (crc32(roadmap) != h.roadmap_crc) fail("damaged: the roadmap's records do not match their CRC-32");
+  if (h.roadmap_paths > h.paths) fail("damaged: a roadmap of " + std::to_string(h.roadmap_paths) + " paths in a file of " + std::to_string(h.paths));
+  if ((h.roadmap_vertices == 0) != (h.roadmap_paths == 0)) fail("damaged: a roadmap of " + std::to_string(h.roadmap_vertices) +
+                                                                " vertices made from " + std::to_string(h.roadmap_paths) + " paths");
   std::vector<og::PathGeometric> loaded;
   std::size_t pos = 0;
   for (std::size_t i = 0; i < h.paths; ++i) {
@@ -198,7 +218,36 @@ void ExperienceDatabase::read(const std::string& bytes, const std::string& name)
     pos += static_cast<std::size_t>(count) * state_bytes;
   }
   if (pos != body.size()) fail("damaged: bytes after the last of its " + std::to_string(h.paths) + " paths");
-  for (const auto& path : loaded) add(path);
+  read_roadmap_section(roadmap, h.roadmap_vertices, h.roadmap_edges, h.roadmap_paths, name);
+  // The paths the roadmap covers are kept (the file holds them) without being added to it again.
+  const std::size_t covered = thunder_ ? paths_from_roadmap_ : 0;
+  for (std::size_t i = 0; i < loaded.size(); ++i) {
+    if (i < covered)
+      paths_.push_back(loaded[i]);
+    else
+      add(loaded[i]);
+  }
+}
+
+// Thunder reads the roadmap into a new one, taken only when all of it reads: a refused file
+// leaves the database as it was. Lightning keeps the section, checked by its CRC, to write back.
+void ExperienceDatabase::read_roadmap_section(const std::string& records, std::size_t vertices, std::size_t edges, std::size_t paths,
+                                              const std::string& name) {
+  paths_from_roadmap_ = 0;
+  if (!thunder_) {
+    roadmap_ = records;
+    roadmap_paths_ = paths;
+    roadmap_vertices_ = vertices;
+    roadmap_edges_ = edges;
+    return;
+  }
+  // A roadmap read into a database that already holds paths would not cover them.
+  if (paths == 0 || !paths_.empty()) return;
+  auto fresh = make_thunder(si_);
+  if (const std::string why = detail::read_roadmap(*fresh->getSPARSdb(), records, vertices, edges); !why.empty())
+    throw ExperienceError(name, "damaged roadmap: " + why);
+  thunder_ = fresh;
+  paths_from_roadmap_ = paths;
 }
 
 // Each path's states, as the space serializes them, checked: finite angles within the space's
@@ -209,12 +258,8 @@ og::PathGeometric ExperienceDatabase::read_path(const char* data, std::size_t co
   const std::size_t state_bytes = space->getSerializationLength();
   og::PathGeometric path(si_);
   ob::State* state = space->allocState();
-  std::vector<double> reals;
   for (std::size_t k = 0; k < count; ++k) {
-    space->deserialize(state, data + k * state_bytes);
-    space->copyToReals(reals, state);
-    const bool finite = std::all_of(reals.begin(), reals.end(), [](double v) { return std::isfinite(v); });
-    if (!finite || !space->satisfiesBounds(state)) {
+    if (!detail::read_state(*space, data + k * state_bytes, state)) {
       space->freeState(state);
       throw ExperienceError(name, "damaged: " + which + ", state " + std::to_string(k + 1) + " is not a closed state within the bounds");
     }
@@ -222,6 +267,13 @@ og::PathGeometric ExperienceDatabase::read_path(const char* data, std::size_t co
   }
   space->freeState(state);
   return path;
+}
+
+bool detail::read_state(const ob::StateSpace& space, const char* data, ob::State* state) {
+  space.deserialize(state, data);
+  std::vector<double> reals;
+  space.copyToReals(reals, state);
+  return std::all_of(reals.begin(), reals.end(), [](double v) { return std::isfinite(v); }) && space.satisfiesBounds(state);
 }
 
 // The records: per path its number of states (8 bytes, this machine's byte order), then the
@@ -239,11 +291,18 @@ std::string ExperienceDatabase::bytes() const {
       body += state;
     }
   }
+  // Thunder's roadmap covers every path it holds; Lightning's copy covers those it covered.
+  const og::SPARSdb* spars = thunder_ ? thunder_->getSPARSdb().get() : nullptr;
+  const std::string roadmap = spars ? detail::roadmap_records(*spars) : roadmap_;
+  const std::size_t vertices = spars ? detail::roadmap_vertices(*spars) : roadmap_vertices_;
+  const std::size_t edges = spars ? spars->getNumEdges() : roadmap_edges_;
+  const std::size_t covered = spars ? (vertices > 0 ? paths_.size() : 0) : roadmap_paths_;
   std::ostringstream out;
-  out << kMagic << ' ' << kVersion << "\nspace " << space_name_ << "\nstate-bytes " << si_->getStateSpace()->getSerializationLength() << "\npattern " << std::hex
-      << fingerprint_ << std::dec << "\npaths " << paths_.size() << "\nbytes " << body.size() << "\ncrc " << std::hex << crc32(body)
-      << std::dec << '\n'
-      << body;
+  out << kMagic << ' ' << kVersion << "\nspace " << space_name_ << "\nstate-bytes " << space->getSerializationLength() << "\npattern "
+      << std::hex << fingerprint_ << std::dec << "\npaths " << paths_.size() << "\nbytes " << body.size() << "\ncrc " << std::hex
+      << crc32(body) << std::dec << "\nroadmap-paths " << covered << "\nroadmap-vertices " << vertices << "\nroadmap-edges " << edges
+      << "\nroadmap-bytes " << roadmap.size() << "\nroadmap-crc " << std::hex << crc32(roadmap) << std::dec << '\n'
+      << body << roadmap;
   return out.str();
 }
 
@@ -259,6 +318,8 @@ void ExperienceDatabase::add(const og::PathGeometric& path) {
 }
 
 std::size_t ExperienceDatabase::paths() const { return paths_.size(); }
+
+std::size_t ExperienceDatabase::edges() const { return thunder_ ? thunder_->getSPARSdb()->getNumEdges() : 0; }
 
 std::size_t ExperienceDatabase::states() const {
   return thunder_ ? thunder_->getSPARSdb()->getNumVertices() : lightning_->getStatesCount();

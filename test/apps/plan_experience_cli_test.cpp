@@ -3,6 +3,7 @@
 // database and seed, and a damaged or foreign database is refused (exit 1) with nothing written.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -51,7 +52,7 @@ TEST(PlanExperienceCli, FirstPlanMakesTheDatabaseTheNextRecallsFromIt) {
   EXPECT_FALSE(j1["recalled"].get<bool>());
   EXPECT_EQ(j1["loaded"].get<int>(), 0);
   EXPECT_EQ(j1["paths"].get<int>(), 1);
-  EXPECT_EQ(slurp(db).rfind("foldkit-experience 1\n", 0), 0u);
+  EXPECT_EQ(slurp(db).rfind("foldkit-experience 2\n", 0), 0u);
   EXPECT_EQ(j1["bytes"].get<std::size_t>(), fs::file_size(db));
 
   const auto second = c.plan(c.g7, db, c.dir + "/p7.cmml");
@@ -153,6 +154,69 @@ TEST(PlanExperienceCli, ThunderUsesTheSameDatabaseFile) {
   EXPECT_NE(alone.err.find("--experience-framework needs --experience DB"), std::string::npos) << alone.err;
   EXPECT_FALSE(fs::exists(never));
   EXPECT_EQ(slurp(db), bytes);
+}
+
+// Thunder writes its roadmap into the file: the next process reads it instead of rebuilding it
+// (the header says how many paths it covers), gives the same plan for the same bytes and seed,
+// refuses a damaged roadmap with the reason and nothing written; Lightning carries the section
+// unchanged, and a file from before the section (version 1) still loads.
+TEST(PlanExperienceCli, ThunderRoadmapTravelsInTheFile) {
+  const Case c;
+  const std::string db = c.dir + "/roadmap.db", never = c.dir + "/never-r.cmml";
+  fs::remove(db);
+  const auto thunder = [&](const std::string& goal, const std::string& to, const char* framework = "thunder") {
+    return foldkit({"plan", c.pattern, "--goal", goal, "--experience", db, "--experience-framework", framework, "--seed", "3", "--time",
+                    "20", "-o", to, "--json"});
+  };
+  ASSERT_EQ(thunder(c.g8, c.dir + "/r8.cmml").exit, 0);
+  const std::string stored = slurp(db);
+  EXPECT_NE(stored.find("\nroadmap-paths 1\n"), std::string::npos) << stored.substr(0, 200);
+  std::string outs[2];
+  for (int run = 0; run < 2; ++run) {
+    std::ofstream(db, std::ios::binary) << stored;
+    outs[run] = c.dir + "/r7-" + std::to_string(run) + ".cmml";
+    const auto r = thunder(c.g7, outs[run]);
+    ASSERT_EQ(r.exit, 0) << r.err;
+    EXPECT_TRUE(nlohmann::json::parse(r.out)["experience"]["recalled"].get<bool>());
+  }
+  EXPECT_EQ(slurp(outs[0]), slurp(outs[1]));
+  const std::string two = slurp(db);
+  EXPECT_NE(two.find("\nroadmap-paths 2\n"), std::string::npos);
+
+  std::string damaged = two;
+  damaged.back() = static_cast<char>(damaged.back() ^ 0x10);  // the roadmap's last record
+  std::ofstream(db, std::ios::binary) << damaged;
+  fs::remove(never);
+  for (const char* framework : {"thunder", "lightning"}) {
+    const auto r = thunder(c.g7, never, framework);
+    EXPECT_EQ(r.exit, 1) << framework;
+    EXPECT_NE(r.err.find(db + ": damaged: the roadmap's records do not match their CRC-32"), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(never));
+  EXPECT_EQ(slurp(db), damaged);
+
+  std::ofstream(db, std::ios::binary) << two;
+  ASSERT_EQ(thunder(c.g8, c.dir + "/l8.cmml", "lightning").exit, 0);
+  const std::string carried = slurp(db);
+  const std::size_t roadmap_bytes = std::stoull(two.substr(two.find("\nroadmap-bytes ") + 15));
+  ASSERT_GT(roadmap_bytes, 0u);
+  EXPECT_EQ(carried.substr(carried.size() - roadmap_bytes), two.substr(two.size() - roadmap_bytes));
+  EXPECT_NE(carried.find("\nroadmap-paths 2\n"), std::string::npos);  // of its 3 paths
+
+  // A version 1 file (Lightning's without the roadmap lines): Thunder rebuilds its roadmap.
+  fs::remove(db);
+  ASSERT_EQ(thunder(c.g8, c.dir + "/v8.cmml", "lightning").exit, 0);
+  std::istringstream lines(slurp(db));
+  std::string v1, line;
+  while (std::getline(lines, line) && line.rfind("roadmap-crc ", 0) != 0)
+    if (line.rfind("roadmap-", 0) != 0) v1 += (v1.empty() ? std::string("foldkit-experience 1") : line) + "\n";
+  v1 += std::string(std::istreambuf_iterator<char>(lines), {});
+  std::ofstream(db, std::ios::binary) << v1;
+  const auto old = thunder(c.g7, c.dir + "/v7.cmml");
+  ASSERT_EQ(old.exit, 0) << old.err;
+  EXPECT_EQ(nlohmann::json::parse(old.out)["experience"]["loaded"].get<int>(), 1);
+  EXPECT_NE(slurp(db).find("foldkit-experience 2\n"), std::string::npos);
+  EXPECT_NE(slurp(db).find("\nroadmap-paths 2\n"), std::string::npos);
 }
 
 }  // namespace

@@ -15,7 +15,11 @@
 /// the states as the space serializes them; a database of another pattern or space, a damaged one,
 /// or states that are not finite and within the space's bounds, are refused with the reason
 /// (docs/PLANNING.md, "Planning from experience"). Both frameworks read the same file: it holds
-/// paths, from which Thunder builds its roadmap when it loads them.
+/// paths, and (version 2) Thunder's roadmap as Thunder last wrote it, with the number of paths it
+/// covers. Thunder reads that roadmap and adds to it only the paths written after it (all of them
+/// when there is none: a version 1 file, or one only Lightning has written); Lightning checks the
+/// section and writes it back unchanged. Rebuilding the roadmap checks every stored path's
+/// motions again (3.4 s per `foldkit plan` at 37 paths on the Resch pattern); reading it does not.
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
@@ -32,6 +36,9 @@ namespace ompl::tools {
 class LightningDB;
 class ThunderDB;
 }  // namespace ompl::tools
+namespace ompl::geometric {
+class SPARSdb;
+}  // namespace ompl::geometric
 
 namespace foldkit::planners {
 
@@ -69,7 +76,8 @@ std::uint64_t pattern_fingerprint(const geometry::CreasePattern& pattern);
 /// The paths of earlier plans on one pattern in one space, loaded from and saved to foldkit's
 /// database file, and held for recall by the framework's own database: OMPL's LightningDB, or a
 /// ThunderDB whose SPARSdb roadmap every path is added to (Thunder's sparse-roadmap settings:
-/// stretch factor 1.2, visibility range 0.05 of the space's extent). Not thread-safe.
+/// stretch factor 1.2, visibility range 0.05 of the space's extent), read back from the file
+/// where it holds one. Not thread-safe.
 class ExperienceDatabase {
  public:
   /// An empty database for the states of `si`'s space.
@@ -86,15 +94,18 @@ class ExperienceDatabase {
 
   /// Adds the paths of a database file's bytes (io::read_file's; the caller reads and writes the
   /// file, so that planners does no file I/O). Empty bytes add nothing: the first plan with a new
-  /// database starts it.
+  /// database starts it. Thunder, into an empty database, reads the file's roadmap and adds only
+  /// the paths it does not cover; Lightning keeps the roadmap's records to write them back.
   /// @param bytes  the file's content
   /// @param name   the file's name, for messages
   /// @throws ExperienceError ("NAME: reason") when the bytes are not a foldkit experience
-  ///         database, are damaged (the CRC, the lengths, a path of fewer than two states, a state
-  ///         not finite or outside the space's bounds), or were written for another pattern or space
+  ///         database, are damaged (the CRCs, the lengths, a path of fewer than two states, a state
+  ///         not finite or outside the space's bounds; for Thunder, a roadmap record that names no
+  ///         guard type or vertex of it), or were written for another pattern or space; nothing of
+  ///         refused bytes is kept
   void read(const std::string& bytes, const std::string& name);
-  /// The database file's bytes: the header, then every path (write them atomically:
-  /// io::write_file_atomic).
+  /// The database file's bytes: the header, then every path, then Thunder's roadmap (Lightning:
+  /// the roadmap's records it read, unchanged; write them atomically: io::write_file_atomic).
   std::string bytes() const;
   /// Adds `path` (at least two states of the database's space); shorter paths are not kept.
   /// Thunder adds it to its roadmap too (SPARSdb::addPathToRoadmap: the path interpolated at the
@@ -102,8 +113,14 @@ class ExperienceDatabase {
   void add(const ompl::geometric::PathGeometric& path);
   /// The number of paths kept.
   std::size_t paths() const;
-  /// Lightning: the number of states over all paths; Thunder: the roadmap's vertices.
+  /// Lightning: the number of states over all paths; Thunder: the roadmap's vertices (SPARSdb's
+  /// count, its query vertex included).
   std::size_t states() const;
+  /// Thunder: the roadmap's edges; Lightning: 0.
+  std::size_t edges() const;
+  /// Thunder: how many of the paths the last read() took from the file's roadmap rather than
+  /// adding them to the roadmap again (0 when the file had none); Lightning: 0.
+  std::size_t paths_from_roadmap() const { return paths_from_roadmap_; }
   /// The framework that recalls.
   ExperienceFramework framework() const { return framework_; }
   /// The framework's recall planner on this database: og::LightningRetrieveRepair, or
@@ -114,6 +131,8 @@ class ExperienceDatabase {
  private:
   ompl::geometric::PathGeometric read_path(const char* data, std::size_t count, const std::string& which,
                                            const std::string& name) const;
+  void read_roadmap_section(const std::string& records, std::size_t vertices, std::size_t edges, std::size_t paths,
+                            const std::string& name);
 
   ompl::base::SpaceInformationPtr si_;
   std::string space_name_;
@@ -122,7 +141,30 @@ class ExperienceDatabase {
   std::vector<ompl::geometric::PathGeometric> paths_;  // as added: what the file holds
   std::shared_ptr<ompl::tools::LightningDB> lightning_;  // Lightning only
   std::shared_ptr<ompl::tools::ThunderDB> thunder_;      // Thunder only
+  // Lightning only: the roadmap section of the file read, written back as it was.
+  std::string roadmap_;
+  std::size_t roadmap_paths_ = 0, roadmap_vertices_ = 0, roadmap_edges_ = 0;
+  std::size_t paths_from_roadmap_ = 0;  // Thunder only: see paths_from_roadmap()
 };
+
+namespace detail {
+/// Deserializes one state of `space` from `data` (getSerializationLength() bytes) into `state`.
+/// @return whether it is a state the database may hold: finite, closed, within the space's bounds
+bool read_state(const ompl::base::StateSpace& space, const char* data, ompl::base::State* state);
+/// An empty SPARSdb roadmap on `si` whose graph roadmap_records() writes and read_roadmap() reads
+/// back (experience_roadmap.cpp; SPARSdb keeps its graph to its subclasses).
+std::shared_ptr<ompl::geometric::SPARSdb> make_roadmap(const ompl::base::SpaceInformationPtr& si);
+/// The roadmap's vertices that hold states (SPARSdb's count less its query vertex).
+std::size_t roadmap_vertices(const ompl::geometric::SPARSdb& roadmap);
+/// The roadmap's records: its vertices (guard type, state), its edges, its interface data.
+/// @throws std::logic_error when `roadmap` was not made by make_roadmap
+std::string roadmap_records(const ompl::geometric::SPARSdb& roadmap);
+/// Reads roadmap_records() of `vertices` vertices and `edges` edges into `roadmap`, empty and made
+/// by make_roadmap, checking every index and state.
+/// @return why the records are not such a roadmap, or empty when they are (then read)
+/// @throws std::logic_error when `roadmap` is not empty or not made by make_roadmap
+std::string read_roadmap(ompl::geometric::SPARSdb& roadmap, const std::string& records, std::size_t vertices, std::size_t edges);
+}  // namespace detail
 
 /// The share of a plan's time limit that recall and repair may take before the planner from
 /// scratch gets the rest. A repair that cannot succeed (the recalled path runs on another branch,
