@@ -184,7 +184,7 @@ struct PhysicsArgs {
   std::optional<double> friction;
   std::optional<double> thickness;
   std::optional<std::map<int, double>> joint_torque;
-  std::optional<Eigen::VectorXd> start;
+  py::object start;  // None: flat; angles (radians); or a FoldSequence, whose end state it starts from
   std::string solver;
   int iterations;
   double projection_interval;
@@ -196,7 +196,7 @@ struct PhysicsArgs {
         {gravity.has_value(), "gravity"}, {density != d.density, "density"}, {max_torque != d.max_torque, "max_torque"},
         {scale != d.scale, "scale"}, {!fixed.is_none(), "fixed"}, {drive != dynamics::to_string(d.drive), "drive"},
         {ground.has_value(), "ground"}, {contacts != d.contacts, "contacts"}, {friction.has_value(), "friction"},
-        {thickness.has_value(), "thickness"}, {joint_torque.has_value(), "joint_torque"}, {start.has_value(), "start"},
+        {thickness.has_value(), "thickness"}, {joint_torque.has_value(), "joint_torque"}, {!start.is_none(), "start"},
         {solver != dynamics::to_string(d.solver), "solver"}, {iterations != d.iterations, "iterations"},
         {projection_interval != d.projection_interval, "projection_interval"}};
     for (const auto& [differs, name] : named)
@@ -238,7 +238,11 @@ py::object simulate_dynamic(const geometry::CreasePattern& p, const geometry::Fo
   o.friction = a.friction;
   o.thickness = a.thickness;
   if (a.joint_torque) o.joint_max_torque = *a.joint_torque;
-  if (a.start) o.start = *a.start;
+  // As plan(start=…): a state, or a FoldSequence (its end state), as the CLI's --start CMML.
+  if (!a.start.is_none())
+    o.start = py::isinstance<geometry::FoldSequence>(a.start)
+                  ? geometry::end_state(p, a.start.cast<const geometry::FoldSequence&>()).angles
+                  : a.start.cast<Eigen::VectorXd>();
   o.solver = dynamics::parse_solver(a.solver);
   o.iterations = a.iterations;
   o.projection_interval = a.projection_interval;
@@ -269,7 +273,7 @@ void bind_simulate(py::module_& m) {
          std::optional<double> max_event_time, std::optional<Eigen::Vector3d> gravity, double density, double max_torque,
          const py::object& fixed, double scale, const std::string& drive, std::optional<double> ground, bool contacts,
          std::optional<double> friction, std::optional<double> thickness, std::optional<std::map<int, double>> joint_torque,
-         std::optional<Eigen::VectorXd> start, const std::string& solver, int iterations,
+         const py::object& start, const std::string& solver, int iterations,
          double projection_interval) -> py::object {
         const auto& sequence = sequence_object.cast<const geometry::FoldSequence&>();
         const std::string source = source_of(sequence_object);
@@ -326,7 +330,7 @@ void bind_simulate(py::module_& m) {
       "(a physics engine: returns a DynamicReport; gravity (x, y, z) m/s², density kg/m², max_torque N·m, joint_torque "
       "{joint ID: N·m}, fixed actor ID (None: the first; 'none': no actor held), scale metres per pattern unit, drive "
       "'motor' or 'spring', ground z of a ground plane (m), contacts=True for facet–facet contacts, friction μ (None: 0.5), "
-      "thickness m, start angles (radians) to start from, solver 'direct' or 'iterative' with iterations sweeps, "
+      "thickness m, start (angles in radians, or a FoldSequence: its end state, as --start CMML) to start from, solver 'direct' or 'iterative' with iterations sweeps, "
       "projection_interval s between post-stabilisations (0: none); docs/SIMULATION.md; these are refused for the other models). "
       "time_step, closure_tolerance and max_event_time default to the model's own (None). "
       "Returns a SimulationReport; with poses=True its `poses` holds each actor's 4×4 pose at every frame, shape "

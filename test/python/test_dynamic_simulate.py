@@ -94,6 +94,9 @@ def test_joint_torque_start_and_free_sheet():
     # Started at the target already, the motor has nothing to do.
     r = foldkit.simulate(p, seq, model="dynamic", start=np.array([math.radians(-60)]))
     assert r.valid and r.joints[0].peak_torque < 1e-6
+    # A FoldSequence starts from its end state, as the CLI's --start CMML and plan(start=…) do.
+    by_sequence = foldkit.simulate(p, seq, model="dynamic", start=seq)
+    assert by_sequence.valid and by_sequence.steps == r.steps and by_sequence.joints[0].peak_torque < 1e-6
     # No actor held and no gravity: the free sheet still folds (the motor turns both panels).
     r = foldkit.simulate(p, seq, model="dynamic", fixed="none")
     assert r.valid and r.final_state[0] == pytest.approx(math.radians(-60), abs=2e-4)
