@@ -107,6 +107,8 @@ int run_planar(const CarpenterArgs& opt) {
                      {"steps", r.steps},
                      {"frames", r.frames.size()},
                      {"lp_solves", r.lp_solves},
+                     {"window_lp_solves", r.window_lp_solves},
+                     {"carried_steps", r.carried_steps},
                      {"method", opt.method},
                      {"seconds", r.seconds},
                      {"time", r.seconds},  // deprecated: the name of `seconds` before issue 37

@@ -166,6 +166,7 @@ nlohmann::json dynamic_report_json(const geometry::CreasePattern& pattern, const
           {"steps", r.steps},
           {"max_closure_error", r.max_closure_error},
           {"max_corrected_error", r.max_corrected_error},
+          {"failed_corrections", r.failed_corrections},
           {"closure_tolerance", r.closure_tolerance},
           {"events", events},
           {"stalls", stalls},

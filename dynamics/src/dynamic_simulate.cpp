@@ -83,8 +83,9 @@ class Runner {
       if (o_.drive == Drive::Motor) {
         d.kind = detail::JointDrive::Motor;
         d.speed = fold.speed;
+        // The run's own limit for this joint, else the pattern's (PMML <MaxTorque>), else the default.
         const auto own = o_.joint_max_torque.find(fold.joint_id);
-        d.max_torque = own != o_.joint_max_torque.end() ? own->second : o_.max_torque;
+        d.max_torque = own != o_.joint_max_torque.end() ? own->second : joint.max_torque.value_or(o_.max_torque);
       } else {
         d.kind = detail::JointDrive::Spring;
         d.spring = joint.spring;
@@ -108,8 +109,9 @@ class Runner {
       if (!sheet_.sane()) throw detail::EngineError("a body moved faster than 1e6 m/s or rad/s");
       // Half a step's slack: an interval of whole steps must not slip a step to rounding.
       if (o_.projection_interval > 0.0 && time_ >= next_projection - 0.5 * o_.time_step) {
-        const double corrected = stabilise_(sheet_).first;
-        report_.max_corrected_error = std::max(report_.max_corrected_error, corrected);
+        const auto c = stabilise_(sheet_);
+        report_.max_corrected_error = std::max(report_.max_corrected_error, c.before);
+        if (!c.moved && c.before > detail::kProjectionTolerance) ++report_.failed_corrections;
         next_projection += o_.projection_interval;
       }
       record_torques();

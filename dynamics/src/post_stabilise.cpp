@@ -1,5 +1,7 @@
 #include "post_stabilise.hpp"
 
+#include <algorithm>
+
 #include "foldkit/geometry/projection.hpp"
 
 namespace foldkit::dynamics::detail {
@@ -26,10 +28,10 @@ Eigen::VectorXd PostStabiliser::tangent_rates(const geometry::FoldState& state, 
   return rates + delta;
 }
 
-std::pair<double, double> PostStabiliser::operator()(OdeSheet& sheet) {
+PostStabiliser::Correction PostStabiliser::operator()(OdeSheet& sheet) {
   const geometry::FoldState engine = sheet.state();
   const double before = closure_.max_error(engine);
-  if (before <= tolerance_) return {before, before};
+  if (before <= tolerance_) return {before, before, false};
   const Eigen::Index n = engine.angles.size();
   geometry::ProjectionOptions po;
   po.tolerance = tolerance_;
@@ -38,15 +40,21 @@ std::pair<double, double> PostStabiliser::operator()(OdeSheet& sheet) {
   po.max_iterations = 20;
   po.held.resize(static_cast<std::size_t>(n));
   for (Eigen::Index j = 0; j < n; ++j) po.held[j] = sheet.drive(static_cast<int>(j)).kind == JointDrive::Motor;
-  const geometry::ProjectionResult r = geometry::project(closure_, engine, po);
-  if (!r.status.ok()) return {before, before};
+  geometry::ProjectionResult r = geometry::project(closure_, engine, po);
+  if (!r.status.ok() && std::find(po.held.begin(), po.held.end(), true) != po.held.end()) {
+    // The motors fix every degree of freedom (a sequence driving every crease): the engine's
+    // angles, motors' included, moved least onto the manifold; the motors go on driving from there.
+    po.held.assign(po.held.size(), false);
+    r = geometry::project(closure_, engine, po);
+  }
+  if (!r.status.ok()) return {before, before, false};
   Eigen::VectorXd rates(n);
   for (Eigen::Index j = 0; j < n; ++j) rates[j] = sheet.rate(static_cast<int>(j));
   sheet.place(r.state);
   // Velocities on the manifold's tangent too: velocities that open the loops would undo the
   // correction within the next step, the solver's few sweeps not removing their error.
   sheet.set_rates(tangent_rates(r.state, rates, po.held));
-  return {before, r.error};
+  return {before, r.error, true};
 }
 
 }  // namespace foldkit::dynamics::detail

@@ -21,9 +21,17 @@ class PostStabiliser {
  public:
   // `tolerance`: the loop error a correction leaves, radians.
   PostStabiliser(const geometry::ClosureSystem& closure, double tolerance) : closure_(closure), tolerance_(tolerance) {}
-  // Corrects `sheet`; it is left as it was when the projection does not close within the
-  // tolerance. Returns the largest loop error before and after, radians.
-  std::pair<double, double> operator()(OdeSheet& sheet);
+  // What one correction did: the largest loop error before and after it (radians), and whether
+  // the sheet was moved (false: closed already, or no projection closed within the tolerance,
+  // and the sheet is left as the engine left it, for the closure checks to judge).
+  struct Correction {
+    double before = 0.0;
+    double after = 0.0;
+    bool moved = false;
+  };
+  // Corrects `sheet`: the closed state nearest it with the motor-driven joints held, or, when
+  // holding them leaves nothing free to close the loops (every crease a motor), with none held.
+  Correction operator()(OdeSheet& sheet);
 
  private:
   // The joint rates nearest `rates` (rad/s) that keep the loops of `state` closed to first order.

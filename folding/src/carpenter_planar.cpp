@@ -287,7 +287,22 @@ std::vector<std::string> carpenter_method_names() {
   return names;
 }
 
+namespace {
+
+// The options' ranges (carpenter_planar's @throws); a NaN fails every test, so each is written so.
+void check_options(const CarpenterPlanarOptions& o) {
+  if (!(o.max_turn > 0.0 && o.max_turn <= M_PI)) throw std::invalid_argument("carpenter: max_turn must lie in (0, pi]");
+  if (!(o.near_radius > 0.0) || !std::isfinite(o.near_radius))
+    throw std::invalid_argument("carpenter: near_radius must be positive and finite");
+  if (!(o.carry_rate > 0.0 && o.carry_rate <= 1.0)) throw std::invalid_argument("carpenter: carry_rate must lie in (0, 1]");
+  if (!(o.repair_window >= 0.0 && o.repair_window <= 1.0))
+    throw std::invalid_argument("carpenter: repair_window must lie in [0, 1]");
+}
+
+}  // namespace
+
 CarpenterPlanarResult carpenter_planar(const PlanarChain& input, const CarpenterPlanarOptions& options) {
+  check_options(options);
   check_simple_chain(input);
   const auto start = std::chrono::steady_clock::now();
   CarpenterPlanarResult result = PlanarRun(input, options).run();

@@ -145,7 +145,7 @@ CarriedVelocity carried_velocity(const std::vector<Vec>& p, std::vector<double> 
     // row: the window grows.
     bool grow = false;
     for (const auto& entry : weak.pairs) grow = !rows.insert(entry.second).second || grow;
-    if (grow) reach *= 2;
+    if (grow) reach = std::min(2 * reach, m);  // the whole chain at most (and no int overflow)
     std::vector<char> in = window_of(rows, dropped, m, reach);
     std::vector<double> trial = speed;
     for (;;) {

@@ -105,6 +105,8 @@ class PatternBuilder {
       if (!std::isfinite(j.spring) || j.spring < 0.0) error(j.line, name + ": spring constant must be finite and non-negative");
       if (!std::isfinite(j.damping) || j.damping < 0.0)
         error(j.line, name + ": damping constant must be finite and non-negative");
+      if (j.max_torque && !(std::isfinite(*j.max_torque) && *j.max_torque > 0.0))
+        error(j.line, name + ": maximum torque must be positive and finite (N·m)");
       for (int id : j.actor_ids)
         if (!actor_by_id_.count(id)) error(j.line, name + " names actor " + std::to_string(id) + ", which does not exist");
       if (j.actor_ids[0] == j.actor_ids[1]) error(j.line, name + " joins actor " + std::to_string(j.actor_ids[0]) + " to itself");
@@ -278,7 +280,7 @@ class PatternBuilder {
       }
       const int joint_index = static_cast<int>(joints_.size());
       for (std::size_t k = 0; k + 1 < chain->size(); ++k) edges_[edge_between((*chain)[k], (*chain)[k + 1])].joint = joint_index;
-      joints_.push_back({js.id, ends, {a, b}, js.spring, js.damping, js.assignment, js.line});
+      joints_.push_back({js.id, ends, {a, b}, js.spring, js.damping, js.assignment, js.line, js.max_torque});
       chains_.push_back(std::move(*chain));
     }
   }

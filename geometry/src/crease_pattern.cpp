@@ -44,7 +44,8 @@ PatternSpec CreasePattern::to_spec() const {
                            j.spring,
                            j.damping,
                            j.assignment,
-                           j.line});
+                           j.line,
+                           j.max_torque});
   return spec;
 }
 

@@ -43,7 +43,7 @@ geometry::ActorSpec read_actor(const detail::XmlInput& in, const XMLElement& e) 
 }
 
 geometry::JointSpec read_joint(const detail::XmlInput& in, const XMLElement& e) {
-  static const char* const known[] = {"ID", "Coords", "ActorIDs", "SpringConst", "DampConst", "Assignment"};
+  static const char* const known[] = {"ID", "Coords", "ActorIDs", "SpringConst", "DampConst", "Assignment", "MaxTorque"};
   for (const XMLElement* c : in.children(e)) {
     bool ok = false;
     for (const char* k : known) ok = ok || has_name(c, k);
@@ -69,6 +69,8 @@ geometry::JointSpec read_joint(const detail::XmlInput& in, const XMLElement& e) 
   joint.spring = in.number(in.only_child(e, "SpringConst"));
   joint.damping = in.number(in.only_child(e, "DampConst"));
   if (e.FirstChildElement("Assignment")) joint.assignment = assignment(in, in.only_child(e, "Assignment"));
+  // foldkit's extension: the joint's motor torque limit in the dynamic model, N·m (checked when built).
+  if (e.FirstChildElement("MaxTorque")) joint.max_torque = in.number(in.only_child(e, "MaxTorque"));
   return joint;
 }
 
@@ -145,6 +147,7 @@ std::string write_pmml(const geometry::PatternSpec& spec) {
         << finite(j.spring, joint + " spring constant") << "</SpringConst>\n    <DampConst>"
         << finite(j.damping, joint + " damping constant") << "</DampConst>\n";
     if (j.assignment != Assignment::Unassigned) out << "    <Assignment>" << geometry::to_string(j.assignment) << "</Assignment>\n";
+    if (j.max_torque) out << "    <MaxTorque>" << finite(*j.max_torque, joint + " maximum torque") << "</MaxTorque>\n";
     out << "  </Joint>\n";
   }
   out << "</PMML>\n";

@@ -133,6 +133,8 @@ void bind_dynamic_report(py::module_& m) {
       .def_readonly("max_closure_error", &DynamicReport::max_closure_error, "Closure drift of the engine's poses, radians.")
       .def_readonly("max_corrected_error", &DynamicReport::max_corrected_error,
                     "Loop error the engine's steps left before the post-stabilisations removed it, radians (0: none).")
+      .def_readonly("failed_corrections", &DynamicReport::failed_corrections,
+                    "Post-stabilisations that found no closed state near the engine's (0: every one closed).")
       .def_readonly("closure_tolerance", &DynamicReport::closure_tolerance, "Radians.")
       .def_readonly("events", &DynamicReport::events, "One DynamicEventReport per event run.")
       .def_readonly("stalls", &DynamicReport::stalls, "Stalls.")

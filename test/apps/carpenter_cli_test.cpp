@@ -155,6 +155,9 @@ TEST(CarpenterCli, MethodOptionSelectsTheGlobalLpOrTheCarriedField) {
     ASSERT_EQ(r.exit, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["method"].get<std::string>(), method);
+    // The carried field's counts, as Python's result has them (0 under the global LP).
+    EXPECT_LE(j["window_lp_solves"].get<std::size_t>(), j["lp_solves"].get<std::size_t>());
+    EXPECT_EQ(j["carried_steps"].get<std::size_t>() > 0, std::string(method) == "carried") << j.dump();
     EXPECT_TRUE(j["straight"].get<bool>());
     EXPECT_GE(j["min_distance_growth"].get<double>(), -1e-12);
     EXPECT_LE(j["max_length_error"].get<double>(), 1e-9);

@@ -165,6 +165,36 @@ TEST(DynamicSimulateCli, IterativeSolverWithPostStabilisationLiftsTheFlap) {
   EXPECT_NE(kinematic.err.find("--solver is an option of --model dynamic"), std::string::npos) << kinematic.err;
 }
 
+// PMML's <MaxTorque> (foldkit's extension) is the joint's own limit: 0.95·m·g·d there stalls the
+// flap whatever --max-torque says for the other joints; --joint-torque overrides the file.
+TEST(DynamicSimulateCli, PmmlMaxTorqueIsTheJointsOwnLimit) {
+  const FlapCase c = flap_case();
+  std::string text = foldkit::test::slurp(c.pmml);
+  const auto at = text.find("</DampConst>");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + std::string("</DampConst>").size(), "\n    <MaxTorque>" + std::to_string(0.95 * kLift) + "</MaxTorque>");
+  const std::string pmml = c.dir + "/limited.pmml";
+  std::ofstream(pmml) << text;
+  auto args = dynamic_args(c, 10 * kLift);
+  args[1] = pmml;
+  const auto r = foldkit(args);
+  ASSERT_EQ(r.exit, 3) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["stalls"].size(), 1u);
+  EXPECT_NEAR(j["stalls"][0]["available_torque"].get<double>(), 0.95 * kLift, 1e-5);
+  EXPECT_NEAR(j["stalls"][0]["needed_torque"].get<double>(), kLift, 0.01 * kLift);
+  args.insert(args.end() - 1, {"--joint-torque", "1:" + std::to_string(1.05 * kLift)});
+  EXPECT_EQ(foldkit(args).exit, 0);
+  // A limit that is not a positive number is the file's error, at its line (exit 1).
+  std::string bad = text;
+  bad.replace(bad.find("<MaxTorque>") + 11, bad.find("</MaxTorque>") - bad.find("<MaxTorque>") - 11, "-1");
+  std::ofstream(pmml) << bad;
+  const auto refused = foldkit(args);
+  EXPECT_EQ(refused.exit, 1);
+  EXPECT_NE(refused.err.find("limited.pmml:"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("maximum torque must be positive"), std::string::npos) << refused.err;
+}
+
 TEST(DynamicSimulateCli, BadInputIsRefusedWithoutOutput) {
   const FlapCase c = flap_case();
   const std::string frames = c.dir + "/never.fold";

@@ -129,6 +129,32 @@ TEST(CarpenterPlanarMethods, CarriedFieldIsDeterministic) {
   EXPECT_EQ(a.lp_solves, b.lp_solves);
 }
 
+// Options out of range are refused before anything runs: a carry floor above the LP's 1 would
+// keep pairs weak for ever, a NaN one would flag none (any field passing), and a NaN window is
+// undefined when cast to a joint count.
+TEST(CarpenterPlanarMethods, OptionsOutOfRangeAreRefused) {
+  PlanarChain chain;
+  chain.points = foldkit::microbench::random_lattice_walk(20, 1);
+  const std::vector<std::pair<void (*)(CarpenterPlanarOptions&), const char*>> bad = {
+      {[](CarpenterPlanarOptions& o) { o.carry_rate = 0.0; }, "carry_rate"},
+      {[](CarpenterPlanarOptions& o) { o.carry_rate = 1.5; }, "carry_rate"},
+      {[](CarpenterPlanarOptions& o) { o.carry_rate = std::numeric_limits<double>::quiet_NaN(); }, "carry_rate"},
+      {[](CarpenterPlanarOptions& o) { o.repair_window = -0.1; }, "repair_window"},
+      {[](CarpenterPlanarOptions& o) { o.repair_window = std::numeric_limits<double>::quiet_NaN(); }, "repair_window"},
+      {[](CarpenterPlanarOptions& o) { o.max_turn = 0.0; }, "max_turn"},
+      {[](CarpenterPlanarOptions& o) { o.near_radius = std::numeric_limits<double>::infinity(); }, "near_radius"}};
+  for (const auto& [set, name] : bad) {
+    CarpenterPlanarOptions o;
+    set(o);
+    try {
+      carpenter_planar(chain, o);
+      ADD_FAILURE() << name << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+  }
+}
+
 // A polygon cannot carry a field (dropping a joint's speed would open it): the CarriedField
 // method convexifies it exactly as the global LP does.
 TEST(CarpenterPlanarMethods, ClosedChainsTakeTheGlobalLpUnderEitherMethod) {

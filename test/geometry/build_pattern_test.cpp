@@ -120,6 +120,18 @@ TEST(BuildPatternRules, SpringAndDampingConstants) {
   s = two_by_two();
   s.joints[0].damping = std::numeric_limits<double>::infinity();
   EXPECT_TRUE(reports(build_pattern(s), "damping constant"));
+  for (double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    s = two_by_two();
+    s.joints[1].max_torque = bad;
+    EXPECT_TRUE(reports(build_pattern(s), "maximum torque must be positive and finite")) << bad;
+  }
+  s = two_by_two();
+  s.joints[1].max_torque = 2.5;
+  const auto built = build_pattern(s);
+  ASSERT_TRUE(built.pattern.has_value());
+  EXPECT_EQ(built.pattern->joints()[1].max_torque, 2.5);
+  EXPECT_EQ(built.pattern->joints()[0].max_torque, std::nullopt);
+  EXPECT_EQ(built.pattern->to_spec().joints[1].max_torque, 2.5);
 }
 
 TEST(BuildPatternRules, JointNamesUnknownOrSameActor) {

@@ -93,6 +93,21 @@ TEST(Pmml, RoundTripIsExact) {
   EXPECT_EQ(io::write_pmml(back), once);
 }
 
+TEST(Pmml, MaxTorqueExtensionReadsWritesAndIsOptional) {
+  const auto s = io::parse_pmml(with("<DampConst>0.25</DampConst>", "<DampConst>0.25</DampConst><MaxTorque>2.5</MaxTorque>"), "x");
+  ASSERT_TRUE(s.joints[0].max_torque.has_value());
+  EXPECT_EQ(*s.joints[0].max_torque, 2.5);
+  const std::string text = io::write_pmml(s);
+  EXPECT_NE(text.find("<MaxTorque>2.5</MaxTorque>"), std::string::npos) << text;
+  EXPECT_EQ(io::parse_pmml(text, "y").joints[0].max_torque, 2.5);
+  // Without it, nothing is written: plain PMML stays the paper's Table 1.
+  geometry::PatternSpec plain = test::two_by_two();
+  EXPECT_EQ(io::write_pmml(plain).find("MaxTorque"), std::string::npos);
+  plain.joints[0].max_torque = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(io::write_pmml(plain), std::invalid_argument);
+  expect_error(with("<DampConst>0.25</DampConst>", "<DampConst>0.25</DampConst><MaxTorque>strong</MaxTorque>"), 19, "MaxTorque");
+}
+
 TEST(Pmml, AcceptsAssignmentExtension) {
   const auto s = io::parse_pmml(with("<DampConst>0.25</DampConst>", "<DampConst>0.25</DampConst><Assignment>M</Assignment>"), "x");
   EXPECT_EQ(s.joints[0].assignment, geometry::Assignment::Mountain);

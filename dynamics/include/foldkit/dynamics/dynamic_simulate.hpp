@@ -195,6 +195,9 @@ struct DynamicReport {
   /// (DynamicOptions::projection_interval), radians: the drift the solver leaves in one interval.
   /// 0 without post-stabilisation.
   double max_corrected_error = 0.0;
+  /// Post-stabilisations that found no closed state near the engine's (the loops then stay as the
+  /// engine left them, and the closure checks judge them): 0 when every correction closed.
+  std::size_t failed_corrections = 0;
   double closure_tolerance = 0.0;  ///< radians
   std::vector<DynamicEventReport> events;  ///< one per event run, in order
   std::vector<Stall> stalls;       ///< joints that stalled (the run stops at the first event with any)

@@ -109,7 +109,10 @@ void check_simple_chain(const PlanarChain& chain);
 /// @param chain    the chain; check_simple_chain() is applied to it first
 /// @param options  step limits, LP strategy, frame recording, progress
 /// @return the frames of the motion and how it ended (failures are a status, not thrown)
-/// @throws std::invalid_argument as check_simple_chain(), for a chain that is not simple
+/// @throws std::invalid_argument as check_simple_chain(), for a chain that is not simple, and for
+///         options out of range: max_turn not in (0, π], near_radius not positive and finite,
+///         carry_rate not in (0, 1] (the LP asks for 1: a higher floor would keep pairs weak for
+///         ever), repair_window not in [0, 1]
 CarpenterPlanarResult carpenter_planar(const PlanarChain& chain, const CarpenterPlanarOptions& options = {});
 
 /// The frames in reverse order: the folding motion from straight (or convex) to the input.

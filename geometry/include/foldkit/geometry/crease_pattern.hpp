@@ -39,6 +39,9 @@ struct Joint {
   double damping = 0.0;         ///< PMML DampConst (≥ 0)
   Assignment assignment = Assignment::Unassigned;  ///< mountain/valley intent, if any
   int line = 0;                 ///< source line; 0 when not read from a file
+  /// foldkit's PMML extension `<MaxTorque>`: the torque limit of this joint's motor in the dynamic
+  /// model, N·m (positive, finite); empty: the run's default (dynamics::DynamicOptions::max_torque).
+  std::optional<double> max_torque;
 };
 
 /// The creases around one interior vertex, sorted counter-clockwise by direction, and the

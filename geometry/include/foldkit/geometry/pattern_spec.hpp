@@ -2,6 +2,7 @@
 /// @file
 /// A crease pattern as written in a file, before any check (PMML, paper Table 1).
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,9 @@ struct JointSpec {
   double damping = 0.0;             ///< PMML DampConst (finite, ≥ 0)
   Assignment assignment = Assignment::Unassigned;  ///< foldkit's PMML extension `<Assignment>`
   int line = 0;                     ///< source line; 0 when not read from a file
+  /// foldkit's PMML extension `<MaxTorque>`: the torque limit of this joint's motor in the dynamic
+  /// model, N·m (positive, finite); empty: the run's default (dynamics::DynamicOptions::max_torque).
+  std::optional<double> max_torque;
 };
 
 /// A whole crease pattern as written: coordinates per triangle, IDs as given.
