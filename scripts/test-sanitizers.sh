@@ -17,6 +17,8 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DFOLDKIT_BUILD_BENCHMARKS
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >&2
 cmake --build build-sanitize -j "$(nproc)" >&2
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+# Leaks inside libraries foldkit does not build, each with its reason there.
+export LSAN_OPTIONS=suppressions=$PWD/scripts/lsan.supp
 # Planning tests' time limits ×10 (test/support/test_time.hpp): the search keeps to its limit, and
 # the instrumented build is about ten times slower.
 export FOLDKIT_TEST_TIME_SCALE=10
