@@ -24,7 +24,7 @@ struct SimulateOptions {
   dynamics::DynamicOptions dyn;
   std::string gravity, drive = dynamics::to_string(dynamics::DynamicOptions{}.drive), series, fixed, start, joint_torque;
   std::string solver = dynamics::to_string(dynamics::DynamicOptions{}.solver);
-  double ground = 0.0, thickness = 0.0, friction = dynamics::kDefaultFriction;
+  double ground = 0.0, thickness = 0.0, friction = dynamics::kDefaultFriction, density = dynamics::kDefaultDensity;
   bool no_collision = false;
   std::size_t max_frames = 1000;
   // The options of one model only, as declared: given to the other model they are refused.
@@ -76,13 +76,16 @@ Eigen::VectorXd start_state(const std::string& cmml, const geometry::CreasePatte
 }
 
 // The physical model's options (foldkit::dynamics): the kinematic options that also apply to it
-// carry over when given; its own defaults otherwise.
+// carry over when given; density, gravity and the fixed actor given here override the pattern's
+// (PMML extensions), which simulate_dynamic() takes where these leave them empty; its own
+// defaults otherwise.
 dynamics::DynamicOptions dynamic_options(const CLI::App& app, const SimulateOptions& opt,
                                          const geometry::CreasePattern& pattern) {
   dynamics::DynamicOptions o = opt.dyn;
   if (app.count("--time-step")) o.time_step = opt.sim.time_step;
   if (app.count("--closure-tolerance")) o.closure_tolerance = opt.sim.closure_tolerance;
   if (app.count("--max-event-time")) o.max_event_time = opt.sim.max_event_time;
+  if (app.count("--density")) o.density = opt.density;
   if (!opt.gravity.empty()) o.gravity = parse_gravity(opt.gravity);
   if (opt.fixed == "none") {
     o.hold_fixed = false;
@@ -101,7 +104,8 @@ dynamics::DynamicOptions dynamic_options(const CLI::App& app, const SimulateOpti
   o.drive = dynamics::parse_drive(opt.drive);
   o.solver = dynamics::parse_solver(opt.solver);
   if (!opt.start.empty()) {
-    const int root = o.hold_fixed && o.fixed_actor ? *pattern.actor_index(*o.fixed_actor) : 0;
+    const dynamics::DynamicOptions run = dynamics::resolve_options(pattern, o);  // the held actor: the file's too
+    const int root = run.hold_fixed && run.fixed_actor ? *pattern.actor_index(*run.fixed_actor) : 0;
     o.start = start_state(opt.start, pattern, root, o.closure_tolerance);
   }
   return o;
@@ -168,12 +172,16 @@ int run_kinematic(const SimulateOptions& opt, const geometry::CreasePattern& pat
 // dynamics::DynamicOptions'.
 void add_dynamic_options(CLI::App* app, SimulateOptions& opt) {
   opt.dynamic_only = {
-      app->add_option("--gravity", opt.gravity, "Dynamic model: gravity X,Y,Z in m/s² (default none)"),
-      positive(app->add_option("--density", opt.dyn.density, "Dynamic model: areal density of the sheet, kg/m²")),
-      positive(app->add_option("--max-torque", opt.dyn.max_torque, "Dynamic model: torque limit of every motor, N·m")),
+      app->add_option("--gravity", opt.gravity,
+                      "Dynamic model: gravity X,Y,Z in m/s² (default: the pattern's <Gravity>, else none)"),
+      app->add_option("--density", opt.density,
+                      "Dynamic model: areal density of the sheet, kg/m² (default: the pattern's <Density>, else 1)")
+          ->check(CLI::PositiveNumber),
+      positive(app->add_option("--max-torque", opt.dyn.max_torque,
+                               "Dynamic model: torque limit of every motor without its own (PMML <MaxTorque>), N·m")),
       app->add_option("--fixed", opt.fixed,
-                      "Dynamic model: ID of the actor held in place (default: the first actor), or none (the whole "
-                      "sheet moves: on --ground, say)"),
+                      "Dynamic model: ID of the actor held in place (default: the pattern's <FixedActor>, else the "
+                      "first actor), or none (the whole sheet moves: on --ground, say)"),
       positive(app->add_option("--scale", opt.dyn.scale, "Dynamic model: metres per pattern unit")),
       app->add_option("--drive", opt.drive,
                       "Dynamic model: what drives an event's joints: motor (CMML speed, --max-torque) or "

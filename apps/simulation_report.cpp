@@ -118,7 +118,10 @@ std::vector<std::string> write_snapshots(const geometry::CreasePattern& pattern,
 }
 
 nlohmann::json dynamic_report_json(const geometry::CreasePattern& pattern, const dynamics::DynamicReport& r,
-                                   const dynamics::DynamicOptions& o) {
+                                   const dynamics::DynamicOptions& given) {
+  // The settings the run had: density, gravity and the held actor from the pattern's file where
+  // the options left them to it.
+  const dynamics::DynamicOptions o = dynamics::resolve_options(pattern, given);
   constexpr double deg = 180.0 / M_PI;
   nlohmann::json events = nlohmann::json::array(), stalls = nlohmann::json::array(), joints = nlohmann::json::array();
   for (const auto& e : r.events)
@@ -137,19 +140,18 @@ nlohmann::json dynamic_report_json(const geometry::CreasePattern& pattern, const
   for (std::size_t j = 0; j < pattern.joints().size(); ++j)
     angles.push_back({{"joint", pattern.joints()[j].id},
                       {"angle", r.final_state.angles[static_cast<Eigen::Index>(j)] * deg}});
-  // The held actor's ID (the first actor's when none was named), or "none".
+  // The held actor's ID, or "none".
   const nlohmann::json fixed = !o.hold_fixed ? nlohmann::json("none")
                                : o.fixed_actor ? nlohmann::json(*o.fixed_actor)
-                               : pattern.actors().empty() ? nlohmann::json(nullptr)
-                                                          : nlohmann::json(pattern.actors().front().id);
+                                               : nlohmann::json(nullptr);
   const bool touching = o.contacts || o.ground;  // friction acts only then
   return {{"ok", r.status.ok()},  // deprecated: status
           {"status", geometry::to_string(r.status.code)},
           {"message", r.status.message},
           {"model", dynamics::kModelName},
           {"drive", dynamics::to_string(o.drive)},
-          {"gravity", {o.gravity.x(), o.gravity.y(), o.gravity.z()}},
-          {"density", o.density},
+          {"gravity", {o.gravity->x(), o.gravity->y(), o.gravity->z()}},
+          {"density", *o.density},
           {"max_torque", o.max_torque},
           {"scale", o.scale},
           {"fixed", fixed},

@@ -26,7 +26,8 @@ std::vector<std::string> write_snapshots(const geometry::CreasePattern& pattern,
 
 // `foldkit simulate --model dynamic --json`'s report (docs/CLI.md): per event whether its joints
 // reached their angles, the stalls (joint, angle, time, needed against available torque), per
-// joint the peak torque, closure drift and energy. Angles in degrees, as in final_angles.
+// joint the peak torque, closure drift and energy. Angles in degrees, as in final_angles. The
+// settings it names are `options` as the run resolved them (dynamics::resolve_options()).
 nlohmann::json dynamic_report_json(const geometry::CreasePattern& pattern, const dynamics::DynamicReport& report,
                                    const dynamics::DynamicOptions& options);
 

@@ -25,13 +25,24 @@ Solver parse_solver(const std::string& name) {
   throw std::invalid_argument("unknown solver '" + name + "' (direct or iterative)");
 }
 
+DynamicOptions resolve_options(const geometry::CreasePattern& pattern, DynamicOptions options) {
+  const geometry::PhysicsSpec& file = pattern.physics();
+  if (!options.density) options.density = file.density.value_or(kDefaultDensity);
+  if (!options.gravity) options.gravity = file.gravity.value_or(Eigen::Vector3d::Zero());
+  if (options.hold_fixed && !options.fixed_actor) {
+    if (file.fixed_actor) options.fixed_actor = file.fixed_actor;
+    else if (!pattern.actors().empty()) options.fixed_actor = pattern.actors().front().id;
+  }
+  return options;
+}
+
 namespace detail {
 
 void check_options(const geometry::CreasePattern& pattern, const DynamicOptions& o) {
   auto positive = [](double v, const char* name) {
     if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument(std::string(name) + " must be positive and finite");
   };
-  positive(o.density, "density");
+  positive(o.density.value_or(kDefaultDensity), "density");
   positive(o.max_torque, "max_torque");
   positive(o.scale, "scale");
   positive(o.time_step, "time_step");
@@ -48,7 +59,7 @@ void check_options(const geometry::CreasePattern& pattern, const DynamicOptions&
   if (o.time_step > std::min(o.approach_time, o.stall_time))
     throw std::invalid_argument("time_step " + std::to_string(o.time_step) + " s is too long for the motors: at most " +
                                 std::to_string(std::min(o.approach_time, o.stall_time)) + " s (approach_time, stall_time)");
-  if (!o.gravity.allFinite()) throw std::invalid_argument("gravity must be finite");
+  if (o.gravity && !o.gravity->allFinite()) throw std::invalid_argument("gravity must be finite");
   if (o.iterations < 1) throw std::invalid_argument("iterations must be at least 1");
   if (!(o.erp > 0.0 && o.erp <= 1.0)) throw std::invalid_argument("erp must be in (0, 1]");
   if (!(o.cfm >= 0.0) || !std::isfinite(o.cfm)) throw std::invalid_argument("cfm must be non-negative and finite");

@@ -357,7 +357,9 @@ class Runner {
 }  // namespace
 
 DynamicReport simulate_dynamic(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence,
-                               const DynamicOptions& options) {
+                               const DynamicOptions& given) {
+  // From here on density, gravity and (when one is held) fixed_actor are set.
+  const DynamicOptions options = resolve_options(pattern, given);
   detail::check_options(pattern, options);
   detail::check_sequence(pattern, sequence, options.drive);
   const int fixed = !options.hold_fixed ? -1 : options.fixed_actor ? *pattern.actor_index(*options.fixed_actor) : 0;

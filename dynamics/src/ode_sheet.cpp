@@ -9,12 +9,15 @@
 #include <ode/ode.h>
 
 #include "foldkit/geometry/kinematics.hpp"
+#include "ode_threading.hpp"
 
 namespace foldkit::dynamics::detail {
 namespace {
 
 Eigen::Vector3d vec(const dReal* v) { return {v[0], v[1], v[2]}; }
 Eigen::Quaterniond quat(const dReal* q) { return {q[0], q[1], q[2], q[3]}; }  // ODE: w, x, y, z
+// The options are resolved (resolve_options()) before a sheet is built: empty means none.
+Eigen::Vector3d gravity_of(const DynamicOptions& o) { return o.gravity.value_or(Eigen::Vector3d::Zero()); }
 
 // A rigid motion seen by every body: what hold_torque() restores after its probe step.
 struct BodyState {
@@ -24,10 +27,11 @@ struct BodyState {
 
 // ODE's error, debug and message handlers are process-wide. They are installed once (thread-safe)
 // and act for foldkit only on a thread inside one of OdeSheet's engine calls (EngineScope): there an
-// error or a failed debug check throws EngineError instead of aborting, and messages are dropped.
-// Elsewhere — another part of the process using ODE — they do what was there before: the handler
-// installed earlier, or ODE's own default (print; ODE then exits on an error, aborts on a failed
-// debug check). Another library that replaces them later takes that choice from foldkit too: an
+// error or a failed debug check throws EngineError instead of aborting, and messages are dropped
+// (inside a world step the throw stops at the call that raised it: ode_threading.hpp). Elsewhere
+// — another part of the process using ODE — they do what was there before: the handler installed
+// earlier, or ODE's own default (print; ODE then exits on an error, aborts on a failed debug
+// check). Another library that replaces them later takes that choice from foldkit too: an
 // engine error then ends the process as ODE's default does.
 thread_local int engine_depth = 0;
 dMessageFunction* previous_error = nullptr;
@@ -88,7 +92,8 @@ struct OdeSheet::Impl {
   const geometry::CreasePattern* pattern = nullptr;
   DynamicOptions options;
   int fixed = 0;  // −1: none
-  World world;    // first: freed last, after the contacts that point into it
+  std::unique_ptr<StepThreading> threading;  // before the world: freed after it
+  World world;    // freed after the contacts that point into it
   std::vector<dBodyID> bodies;
   std::vector<MassProperties> mass;
   std::vector<dJointID> hinges;
@@ -103,8 +108,7 @@ struct OdeSheet::Impl {
   // solver, the contacts removed.
   void advance(const std::vector<char>* leave_out = nullptr) {
     if (contacts) contacts->collide(leave_out);
-    if (options.solver == Solver::Direct) dWorldStep(world.get(), options.time_step);
-    else dWorldQuickStep(world.get(), options.time_step);
+    threading->step(world.get(), options.solver == Solver::Direct ? &dWorldStep : &dWorldQuickStep, options.time_step);
     if (contacts) contacts->clear();
   }
 
@@ -123,16 +127,19 @@ OdeSheet::OdeSheet(const geometry::CreasePattern& pattern, const DynamicOptions&
   s.pattern = &pattern;
   s.options = options;
   s.fixed = fixed;
+  s.threading = std::make_unique<StepThreading>();
   s.world.reset(dWorldCreate());
   dWorldID world = s.world.get();
-  dWorldSetGravity(world, options.gravity.x(), options.gravity.y(), options.gravity.z());
+  s.threading->attach(world);
+  const Eigen::Vector3d gravity = gravity_of(options);
+  dWorldSetGravity(world, gravity.x(), gravity.y(), gravity.z());
   dWorldSetERP(world, options.erp);
   dWorldSetCFM(world, options.cfm);
   dWorldSetQuickStepNumIterations(world, options.iterations);
   dWorldSetAutoDisableFlag(world, 0);
   const int actors = static_cast<int>(pattern.actors().size());
   for (int a = 0; a < actors; ++a) {
-    const MassProperties m = mass_properties(pattern, a, options.density, options.scale);
+    const MassProperties m = mass_properties(pattern, a, options.density.value_or(kDefaultDensity), options.scale);
     dBodyID b = dBodyCreate(world);
     dBodySetPosition(b, m.centroid.x(), m.centroid.y(), m.centroid.z());
     dMass dm;
@@ -405,7 +412,7 @@ double OdeSheet::potential_energy() const {
   const Impl& s = *impl_;
   double e = 0.0;
   for (std::size_t a = 0; a < s.bodies.size(); ++a)
-    e -= s.mass[a].mass * s.options.gravity.dot(vec(dBodyGetPosition(s.bodies[a])) - s.mass[a].centroid);
+    e -= s.mass[a].mass * gravity_of(s.options).dot(vec(dBodyGetPosition(s.bodies[a])) - s.mass[a].centroid);
   return e;
 }
 

@@ -111,6 +111,12 @@ class PatternBuilder {
         if (!actor_by_id_.count(id)) error(j.line, name + " names actor " + std::to_string(id) + ", which does not exist");
       if (j.actor_ids[0] == j.actor_ids[1]) error(j.line, name + " joins actor " + std::to_string(j.actor_ids[0]) + " to itself");
     }
+    const PhysicsSpec& physics = spec_.physics;
+    if (physics.density && !(std::isfinite(*physics.density) && *physics.density > 0.0))
+      error(physics.density_line, "density must be positive and finite (kg/m²)");
+    if (physics.gravity && !physics.gravity->allFinite()) error(physics.gravity_line, "gravity is not finite");
+    if (physics.fixed_actor && !actor_by_id_.count(*physics.fixed_actor))
+      error(physics.fixed_actor_line, "fixed actor " + std::to_string(*physics.fixed_actor) + " does not exist");
   }
 
   void weld_vertices() {
@@ -393,6 +399,7 @@ class PatternBuilder {
   void assemble() {
     CreasePattern p;
     p.title_ = spec_.title;
+    p.physics_ = spec_.physics;
     p.vertices_ = index_->points();
     for (const ActorSpec& a : spec_.actors) p.actors_.push_back({a.id, {}, a.line});
     for (const TriangleRef& t : triangles_) p.actors_[t.actor].triangles.push_back({t.v, t.line});

@@ -46,6 +46,7 @@ PatternSpec CreasePattern::to_spec() const {
                            j.assignment,
                            j.line,
                            j.max_torque});
+  spec.physics = physics_;
   return spec;
 }
 

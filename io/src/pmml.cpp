@@ -74,6 +74,31 @@ geometry::JointSpec read_joint(const detail::XmlInput& in, const XMLElement& e) 
   return joint;
 }
 
+// foldkit's extensions for the dynamic model, children of <PMML> (docs/FORMATS.md); false for
+// any other element. Their values are checked when the pattern is built, each at its line.
+bool read_physics(const detail::XmlInput& in, const XMLElement& e, geometry::PhysicsSpec& physics) {
+  const auto once = [&](bool set) {
+    if (set) in.fail(e, std::string("<PMML> has more than one <") + e.Name() + ">");
+  };
+  if (has_name(&e, "Density")) {
+    once(physics.density.has_value());
+    physics.density = in.number(e);
+    physics.density_line = in.line(e);
+  } else if (has_name(&e, "Gravity")) {
+    once(physics.gravity.has_value());
+    const auto g = in.numbers(e, 3);
+    physics.gravity = geometry::Vec3(g[0], g[1], g[2]);
+    physics.gravity_line = in.line(e);
+  } else if (has_name(&e, "FixedActor")) {
+    once(physics.fixed_actor.has_value());
+    physics.fixed_actor = in.integer(e, "an actor ID");
+    physics.fixed_actor_line = in.line(e);
+  } else {
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 geometry::PatternSpec parse_pmml(const std::string& text, const std::string& name) {
@@ -90,7 +115,7 @@ geometry::PatternSpec parse_pmml(const std::string& text, const std::string& nam
       spec.actors.push_back(read_actor(in, *c));
     } else if (has_name(c, "Joint")) {
       spec.joints.push_back(read_joint(in, *c));
-    } else {
+    } else if (!read_physics(in, *c, spec.physics)) {
       in.fail(*c, std::string("unknown element <") + c->Name() + "> in <PMML>");
     }
   }
@@ -127,6 +152,15 @@ std::string write_pmml(const geometry::PatternSpec& spec) {
   std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<PMML>\n";
   out << "  <Title>" << detail::escape_xml(spec.title) << "</Title>\n";
+  // foldkit's extensions, only when set: a plain PMML writes back as the paper's Table 1.
+  const geometry::PhysicsSpec& physics = spec.physics;
+  if (physics.density) out << "  <Density>" << finite(*physics.density, "density") << "</Density>\n";
+  if (physics.gravity) {
+    const std::string what = "gravity";
+    out << "  <Gravity>" << finite(physics.gravity->x(), what) << ' ' << finite(physics.gravity->y(), what) << ' '
+        << finite(physics.gravity->z(), what) << "</Gravity>\n";
+  }
+  if (physics.fixed_actor) out << "  <FixedActor>" << *physics.fixed_actor << "</FixedActor>\n";
   for (const auto& a : spec.actors) {
     out << "  <Actor>\n    <ID>" << a.id << "</ID>\n";
     for (const auto& t : a.triangles) {

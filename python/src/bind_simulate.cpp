@@ -175,11 +175,13 @@ void bind_dynamic_report(py::module_& m) {
       });
 }
 
-// The physical options, each defaulting to dynamics::DynamicOptions' member.
+// The physical options, each defaulting to dynamics::DynamicOptions' member (density, gravity,
+// fixed: None, which leaves them to the pattern's PMML and then to that default).
 struct PhysicsArgs {
-  std::optional<Eigen::Vector3d> gravity;
-  double density, max_torque, scale;
-  py::object fixed;  // None: the first actor; an actor ID; "none": no actor held
+  std::optional<Eigen::Vector3d> gravity;  // None: the pattern's <Gravity>, else none
+  std::optional<double> density;           // None: the pattern's <Density>, else kDefaultDensity
+  double max_torque, scale;
+  py::object fixed;  // None: the pattern's <FixedActor>, else the first actor; an actor ID; "none": no actor held
   std::string drive;
   std::optional<double> ground;
   bool contacts;
@@ -195,7 +197,7 @@ struct PhysicsArgs {
   std::string given() const {
     const dynamics::DynamicOptions d;
     const std::pair<bool, const char*> named[] = {
-        {gravity.has_value(), "gravity"}, {density != d.density, "density"}, {max_torque != d.max_torque, "max_torque"},
+        {gravity.has_value(), "gravity"}, {density.has_value(), "density"}, {max_torque != d.max_torque, "max_torque"},
         {scale != d.scale, "scale"}, {!fixed.is_none(), "fixed"}, {drive != dynamics::to_string(d.drive), "drive"},
         {ground.has_value(), "ground"}, {contacts != d.contacts, "contacts"}, {friction.has_value(), "friction"},
         {thickness.has_value(), "thickness"}, {joint_torque.has_value(), "joint_torque"}, {!start.is_none(), "start"},
@@ -207,7 +209,8 @@ struct PhysicsArgs {
   }
 };
 
-// fixed=: None (the first actor), an actor ID of the pattern, or "none" (no actor held).
+// fixed=: None (the pattern's <FixedActor>, else the first actor), an actor ID of the pattern, or
+// "none" (no actor held).
 void set_fixed(dynamics::DynamicOptions& o, const geometry::CreasePattern& p, const py::object& fixed) {
   if (fixed.is_none()) return;
   if (py::isinstance<py::str>(fixed)) {
@@ -223,15 +226,17 @@ void set_fixed(dynamics::DynamicOptions& o, const geometry::CreasePattern& p, co
 py::object simulate_dynamic(const geometry::CreasePattern& p, const geometry::FoldSequence& sequence, const std::string& source,
                             const PhysicsArgs& a, std::optional<double> time_step, std::optional<double> closure_tolerance,
                             std::optional<double> max_event_time, bool record_frames) {
+  // density, gravity, fixed: given here, over the pattern's (PMML extensions), which
+  // simulate_dynamic() takes where these stay empty.
   dynamics::DynamicOptions o;
-  require_positive(a.density, "density");
+  if (a.density) require_positive(*a.density, "density");
   require_positive(a.max_torque, "max_torque");
   require_positive(a.scale, "scale");
   o.density = a.density;
   o.max_torque = a.max_torque;
   o.scale = a.scale;
-  if (a.gravity) o.gravity = *a.gravity;
-  require(o.gravity.allFinite(), "gravity", "finite", o.gravity.sum());
+  o.gravity = a.gravity;
+  if (a.gravity) require(a.gravity->allFinite(), "gravity", "finite", a.gravity->sum());
   set_fixed(o, p, a.fixed);
   o.drive = dynamics::parse_drive(a.drive);
   // The rest are checked by simulate_dynamic itself (std::invalid_argument: ValueError).
@@ -272,8 +277,8 @@ void bind_simulate(py::module_& m) {
       "simulate",
       [](const geometry::CreasePattern& p, const py::object& sequence_object, const std::string& model,
          std::optional<double> time_step, std::optional<double> closure_tolerance, bool collisions, bool record_frames, bool poses,
-         std::optional<double> max_event_time, std::optional<Eigen::Vector3d> gravity, double density, double max_torque,
-         const py::object& fixed, double scale, const std::string& drive, std::optional<double> ground, bool contacts,
+         std::optional<double> max_event_time, std::optional<Eigen::Vector3d> gravity, std::optional<double> density,
+         double max_torque, const py::object& fixed, double scale, const std::string& drive, std::optional<double> ground, bool contacts,
          std::optional<double> friction, std::optional<double> thickness, std::optional<std::map<int, double>> joint_torque,
          const py::object& start, const std::string& solver, int iterations,
          double projection_interval) -> py::object {
@@ -320,7 +325,7 @@ void bind_simulate(py::module_& m) {
       py::arg("time_step") = py::none(), py::arg("closure_tolerance") = py::none(),
       py::arg("collisions") = simulation::SimulationOptions{}.collisions, py::arg("record_frames") = true, py::arg("poses") = false,
       py::arg("max_event_time") = py::none(), py::arg("gravity") = py::none(),
-      py::arg("density") = dynamics::DynamicOptions{}.density, py::arg("max_torque") = dynamics::DynamicOptions{}.max_torque,
+      py::arg("density") = py::none(), py::arg("max_torque") = dynamics::DynamicOptions{}.max_torque,
       py::arg("fixed") = py::none(), py::arg("scale") = dynamics::DynamicOptions{}.scale,
       py::arg("drive") = std::string(dynamics::to_string(dynamics::DynamicOptions{}.drive)), py::arg("ground") = py::none(),
       py::arg("contacts") = dynamics::DynamicOptions{}.contacts, py::arg("friction") = py::none(),
@@ -329,8 +334,10 @@ void bind_simulate(py::module_& m) {
       py::arg("iterations") = dynamics::DynamicOptions{}.iterations,
       py::arg("projection_interval") = dynamics::DynamicOptions{}.projection_interval,
       "Replays `sequence` on `pattern` as `foldkit simulate`: model 'motor' (CMML speeds), 'spring', 'sync', or 'dynamic' "
-      "(a physics engine: returns a DynamicReport; gravity (x, y, z) m/s², density kg/m², max_torque N·m, joint_torque "
-      "{joint ID: N·m}, fixed actor ID (None: the first; 'none': no actor held), scale metres per pattern unit, drive "
+      "(a physics engine: returns a DynamicReport; gravity (x, y, z) m/s², density kg/m² (None: the pattern's PMML "
+      "<Gravity>, <Density>, else none, 1), max_torque N·m (joints without their own <MaxTorque>), joint_torque "
+      "{joint ID: N·m}, fixed actor ID (None: the pattern's <FixedActor>, else the first; 'none': no actor held), "
+      "scale metres per pattern unit, drive "
       "'motor' or 'spring', ground z of a ground plane (m), contacts=True for facet–facet contacts, friction μ (None: 0.5), "
       "thickness m, start (angles in radians, or a FoldSequence: its end state, as --start CMML) to start from, solver 'direct' or 'iterative' with iterations sweeps, "
       "projection_interval s between post-stabilisations (0: none); docs/SIMULATION.md; these are refused for the other models). "

@@ -46,7 +46,7 @@ TEST(DynamicRobustness, BadOptionsAreRefused) {
   refuse([](auto& o) { o.density = -1.0; });
   refuse([](auto& o) { o.max_torque = -1.0; });
   refuse([](auto& o) { o.max_torque = NAN; });
-  refuse([](auto& o) { o.gravity.x() = NAN; });
+  refuse([](auto& o) { o.gravity = Eigen::Vector3d(NAN, 0, -9.81); });
   refuse([](auto& o) { o.scale = 0.0; });
   refuse([](auto& o) { o.time_step = INFINITY; });
   refuse([](auto& o) { o.time_step = 0.5; });  // longer than the motors' approach_time

@@ -90,7 +90,7 @@ TEST(DynamicVerdict, SoftSpringLiftingAFlapOffTheGroundCreepsOnInsteadOfSettling
   o.drive = dynamics::Drive::Spring;
   o.density = 0.01;
   o.max_event_time = T;
-  const double mgd = o.density * kScale * kScale * kG * kScale / 2.0;
+  const double mgd = *o.density * kScale * kScale * kG * kScale / 2.0;
   const auto r = dynamics::simulate_dynamic(pattern, one_fold(1, target, 0.5), o);
   EXPECT_EQ(r.status.code, geometry::StatusCode::LimitReached) << r.status.message;
   EXPECT_TRUE(r.stalls.empty());

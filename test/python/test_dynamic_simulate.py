@@ -132,3 +132,35 @@ def test_physics_options_are_refused_for_the_kinematic_models(kwargs):
     seq = foldkit.sequence_to(p, np.array([0.5]), speed=1.0)
     with pytest.raises(ValueError, match="model='dynamic'"):
         foldkit.simulate(p, seq, **kwargs)
+
+
+def unequal_panels(physics):
+    """Actor 1 the unit square, actor 2 the rectangle [1,3]×[0,1], hinged by joint 1 on x = 1."""
+    return ("<PMML>\n  <Title>unequal panels</Title>\n" + physics +
+            "  <Actor><ID>1</ID><Triangle>0 0 1 0 1 1</Triangle><Triangle>0 0 1 1 0 1</Triangle></Actor>\n"
+            "  <Actor><ID>2</ID><Triangle>1 0 3 0 3 1</Triangle><Triangle>1 0 3 1 1 1</Triangle></Actor>\n"
+            "  <Joint><ID>1</ID><Coords>1 0 1 1</Coords><ActorIDs>1 2</ActorIDs><SpringConst>0</SpringConst>"
+            "<DampConst>0</DampConst></Joint>\n</PMML>\n")
+
+
+def test_pmml_physics_are_the_defaults_and_keywords_override_them():
+    # The file: ρ = 2 kg/m², g down, actor 2 held. At scale 0.5 actor 1 weighs 0.5 kg, its centroid
+    # 0.25 m from the hinge; actor 2 twice as heavy, twice as far.
+    physics = "  <Density>2</Density>\n  <Gravity>0 0 -9.81</Gravity>\n  <FixedActor>2</FixedActor>\n"
+    p = foldkit.parse_pmml(unequal_panels(physics), "panels.pmml")
+    seq = foldkit.sequence_to(p, np.array([math.radians(-60)]), speed=math.radians(30))
+    lift = 0.5 * G * 0.25
+
+    def needed(limit, **kwargs):
+        r = foldkit.simulate(p, seq, model="dynamic", scale=0.5, max_torque=limit, **kwargs)
+        assert r.status.code == "no-progress", r.status
+        return r.stalls[0].needed_torque
+
+    assert needed(0.95 * lift) == pytest.approx(lift, rel=0.01)
+    r = foldkit.simulate(p, seq, model="dynamic", scale=0.5, max_torque=1.05 * lift)
+    assert r.valid and r.potential_energy == pytest.approx(lift * math.sin(math.pi / 3), rel=1e-3)
+    assert needed(0.45 * lift, density=1.0) == pytest.approx(0.5 * lift, rel=0.01)
+    assert needed(1.05 * lift, gravity=(0, 0, -2 * G)) == pytest.approx(2 * lift, rel=0.01)
+    assert needed(1.05 * lift, fixed=1) == pytest.approx(4 * lift, rel=0.01)
+    # The kinematic models ignore the file's physics (and refuse it only as keywords).
+    assert foldkit.simulate(p, seq).valid

@@ -59,15 +59,28 @@ Solver parse_solver(const std::string& name);
 /// Coulomb coefficient μ of every contact when DynamicOptions::friction is empty.
 inline constexpr double kDefaultFriction = 0.5;
 
-/// Options of simulate_dynamic(): every default of the dynamic model, once.
+/// Areal density of the sheet, kg/m², when neither DynamicOptions::density nor the pattern's
+/// PMML `<Density>` gives one.
+inline constexpr double kDefaultDensity = 1.0;
+
+/// Options of simulate_dynamic(): every default of the dynamic model, once. Density, gravity and
+/// the fixed actor may also come from the pattern's file (foldkit's PMML extensions,
+/// geometry::CreasePattern::physics()): an option set here overrides the file, and the file
+/// overrides the default named here (resolve_options()).
 struct DynamicOptions {
-  double density = 1.0;      ///< areal density of the sheet, kg/m² (positive, finite)
-  double max_torque = 1.0;   ///< torque limit of every motor, N·m (positive, finite)
+  /// Areal density of the sheet, kg/m² (positive, finite); empty: the pattern's `<Density>`, else
+  /// kDefaultDensity.
+  std::optional<double> density;
+  /// Torque limit of every motor without its own (PMML `<MaxTorque>`, joint_max_torque), N·m
+  /// (positive, finite).
+  double max_torque = 1.0;
   /// Torque limits of some motors, N·m (positive, finite), by joint ID (a joint the pattern
-  /// has); the others have max_torque.
+  /// has): over the pattern's `<MaxTorque>`; the others have that, else max_torque.
   std::map<int, double> joint_max_torque;
-  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< m/s², world axes of the flat sheet (default none)
-  /// Actor ID of the actor held in place (kinematic: it never moves); empty: the first actor.
+  /// m/s², world axes of the flat sheet (finite); empty: the pattern's `<Gravity>`, else none.
+  std::optional<Eigen::Vector3d> gravity;
+  /// Actor ID of the actor held in place (kinematic: it never moves); empty: the pattern's
+  /// `<FixedActor>`, else the first actor.
   std::optional<int> fixed_actor;
   /// false: no actor is held (fixed_actor ignored): the whole sheet moves, e.g. on the ground.
   bool hold_fixed = true;
@@ -219,7 +232,14 @@ struct DynamicReport {
   geometry::FoldState final_state;   ///< the engine's angles at the end
 };
 
-/// Runs `sequence` on `pattern` in the physics engine from the resting sheet at options.start.
+/// `options` with what they leave empty filled in as simulate_dynamic() runs them: density and
+/// gravity from the pattern's file (geometry::CreasePattern::physics()) or the defaults
+/// (kDefaultDensity, none), and fixed_actor, when an actor is held, from the file or the first
+/// actor. What a report of the run should name as its settings.
+DynamicOptions resolve_options(const geometry::CreasePattern& pattern, DynamicOptions options);
+
+/// Runs `sequence` on `pattern` in the physics engine from the resting sheet at options.start,
+/// with resolve_options(pattern, options).
 /// @throws std::invalid_argument for options out of range (a density, torque, scale, time or
 ///         tolerance that is not positive and finite, a time step above approach_time or
 ///         stall_time, gravity, ground, friction or thickness not finite (friction negative,

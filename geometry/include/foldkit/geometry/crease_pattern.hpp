@@ -112,6 +112,9 @@ class CreasePattern {
   const std::vector<VertexStar>& interior_vertices() const { return stars_; }
   /// The facet adjacency graph.
   const FacetGraph& facet_graph() const { return graph_; }
+  /// What the file says about the sheet's physics for the dynamic model (foldkit's PMML
+  /// extensions `<Density>`, `<Gravity>`, `<FixedActor>`; all empty when it says nothing).
+  const PhysicsSpec& physics() const { return physics_; }
 
   /// The index of the actor with ID `id`, or nothing.
   std::optional<int> actor_index(int id) const;
@@ -133,6 +136,7 @@ class CreasePattern {
   std::vector<bool> on_boundary_;
   std::vector<VertexStar> stars_;
   FacetGraph graph_;
+  PhysicsSpec physics_;
   std::unordered_map<int, int> actor_by_id_;
   std::unordered_map<int, int> joint_by_id_;
 };

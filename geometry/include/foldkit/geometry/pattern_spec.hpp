@@ -38,11 +38,24 @@ struct JointSpec {
   std::optional<double> max_torque;
 };
 
+/// foldkit's PMML extensions that describe the sheet to the dynamic model (docs/FORMATS.md):
+/// each empty unless the file sets it; a run's own option overrides it, and it overrides the
+/// run's built-in default (dynamics::DynamicOptions). The kinematic models ignore them.
+struct PhysicsSpec {
+  std::optional<double> density;   ///< `<Density>`: areal density of the sheet, kg/m² (positive, finite)
+  std::optional<Vec3> gravity;     ///< `<Gravity>`: m/s², in the axes of the flat sheet (finite)
+  std::optional<int> fixed_actor;  ///< `<FixedActor>`: ID of the actor held in place (an actor of the pattern)
+  int density_line = 0;            ///< source line of `<Density>`; 0 when not read from a file
+  int gravity_line = 0;            ///< source line of `<Gravity>`; 0 when not read from a file
+  int fixed_actor_line = 0;        ///< source line of `<FixedActor>`; 0 when not read from a file
+};
+
 /// A whole crease pattern as written: coordinates per triangle, IDs as given.
 struct PatternSpec {
   std::string title;               ///< free text
   std::vector<ActorSpec> actors;   ///< in file order
   std::vector<JointSpec> joints;   ///< in file order
+  PhysicsSpec physics;             ///< foldkit's extensions for the dynamic model (all empty in plain PMML)
 };
 
 }  // namespace foldkit::geometry

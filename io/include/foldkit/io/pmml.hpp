@@ -12,8 +12,12 @@ namespace foldkit::io {
 /// that). The title keeps its inner whitespace; leading and trailing whitespace is trimmed.
 /// @param text  the file's content
 /// @param name  the file name used in error messages
+/// foldkit's extensions for the dynamic model (`<Density>`, `<Gravity>`, `<FixedActor>`, at most
+/// one each under `<PMML>`; `<MaxTorque>` per joint) are read into the spec, their ranges left to
+/// build_pattern() too.
 /// @throws ParseError for anything that is not PMML: unknown elements, missing or repeated
-///         fields, non-integer IDs, non-finite numbers, no actor, text that is not UTF-8
+///         fields, non-integer IDs, non-finite numbers, a `<Gravity>` without exactly three
+///         numbers, no actor, text that is not UTF-8
 geometry::PatternSpec parse_pmml(const std::string& text, const std::string& name);
 /// Reads and parses the PMML file at `path`.
 /// @throws ParseError when the file cannot be read or is not PMML
@@ -26,10 +30,12 @@ geometry::PatternSpec read_pmml_spec(const std::string& path);
 ///         ParseError at the line of the first error, whose message says how many more there are
 geometry::CreasePattern read_pmml(const std::string& path, const geometry::BuildOptions& options = {});
 
-/// The PMML text of `spec`; an assignment is written only when it is not Unassigned. The title
-/// is written so that the file stays valid XML (characters XML forbids become U+FFFD).
+/// The PMML text of `spec`; an assignment is written only when it is not Unassigned, foldkit's
+/// other extensions (`<MaxTorque>`, `<Density>`, `<Gravity>`, `<FixedActor>`) only when set. The
+/// title is written so that the file stays valid XML (characters XML forbids become U+FFFD).
 /// @throws std::invalid_argument ("…: not a finite number") for a non-finite coordinate, spring
-///         or damping constant: a written file never holds NaN or inf
+///         or damping constant, maximum torque, density or gravity: a written file never holds NaN
+///         or inf
 std::string write_pmml(const geometry::PatternSpec& spec);
 /// The PMML text of `pattern` (its CreasePattern::to_spec(): vertex coordinates after merging).
 std::string write_pmml(const geometry::CreasePattern& pattern);
