@@ -13,7 +13,7 @@ import { $, app, files, log, setNumber, task, checkedValid } from './page.js';
 import { showProblemList } from './problems.js';
 import { parameters, download, baseName } from './page_fields.js';
 import { stiffnessNow } from './stiffness_panel.js';
-import { simulateOptions, showPhysics, physicsSelectionChanged, physicsTime, wirePhysics } from './physics_panel.js';
+import { simulateOptions, showPhysics, physicsSelectionChanged, physicsTime, wirePhysics, physicsFromPattern, startFromShown } from './physics_panel.js';
 
 // --- the pattern -----------------------------------------------------------------------------
 
@@ -94,6 +94,7 @@ function selectionChanged(selection) {
   if (joints.length) {
     $('spring').value = joints[0].spring;
     $('damping').value = joints[0].damping;
+    $('joint-torque').value = joints[0].maxTorque ?? '';
     const event = app.sequence.events.find((e) => e.number === app.currentEvent);
     const fold = event && event.folds.find((f) => f.joint === joints[0].id);
     if (fold) {
@@ -214,7 +215,9 @@ async function simulateNow() {
   const version = model.version;
   const f = files();
   const { sequence, sequenceEdits } = app;
-  const sim = await task('simulate', () => session.simulate(model, sequence, f, options));
+  // The state shown, in degrees per joint (model.joints() order), when the run starts from it.
+  const start = startFromShown() ? Array.from(view.angles(), (r) => (r * 180) / Math.PI) : null;
+  const sim = await task('simulate', () => session.simulate(model, sequence, f, options, start));
   if (!sim) return null;
   if (!current(model, version)) return log('the pattern changed while it was simulated: simulate again');
   sim.files = f;
@@ -273,6 +276,7 @@ async function planNow() {
 // --- files -----------------------------------------------------------------------------------
 
 function setModel(model) {
+  physicsFromPattern(model);
   editor.setModel(model);
   editor.resize();
   editor.fit();
@@ -383,7 +387,12 @@ function wire() {
     const damping = Number($('damping').value);
     if (!(spring >= 0 && damping >= 0 && Number.isFinite(spring) && Number.isFinite(damping)))
       return log('spring and damping must be finite and not negative');
-    for (const id of editor.selection.joints || []) app.model.setJoint(id, { spring, damping });
+    // The joint's own motor limit (PMML <MaxTorque>); empty: none, the run's max torque.
+    const torqueText = $('joint-torque').value.trim();
+    const maxTorque = torqueText ? Number(torqueText) : null;
+    if (maxTorque !== null && !(Number.isFinite(maxTorque) && maxTorque > 0))
+      return log(`max torque: give a positive number of N·m, or leave it empty for the run's; not "${torqueText}"`);
+    for (const id of editor.selection.joints || []) app.model.setJoint(id, { spring, damping, maxTorque });
     editor.commit();  // an undoable edit like any other; it tells patternChanged
   });
   $('event-number').addEventListener('change', () => { app.currentEvent = Number($('event-number').value) || 0; showSequence(); });

@@ -33,6 +33,10 @@ export class PatternModel {
     /** @type {{v: number[], actor: number}[]} */
     this.triangles = [];
     this.title = title;
+    /** foldkit's PMML extensions for the dynamic model (docs/FORMATS.md): the sheet's density
+     * (kg/m²), gravity ([x, y, z], m/s²) and fixed actor (an ID), each null where unset (the
+     * file had none); written back as read. */
+    this.physics = { density: null, gravity: null, fixedActor: null };
     /** Problems fromPMML tolerated (each 'LINE: message'); foldkit validate reports them as errors. */
     this.warnings = [];
     // Properties are kept for every edge that still exists, shared or not, so that an edge
@@ -80,15 +84,17 @@ export class PatternModel {
       triangles[4 * i + 2] = t.v[2];
       triangles[4 * i + 3] = t.actor;
     });
-    const edges = [], spring = [], damping = [];
+    const edges = [], spring = [], damping = [], maxTorque = [];
     let assignment = '';
     for (const [key, p] of this._props) {
       edges.push(...keyEnds(key), p.id);
       spring.push(p.spring);
       damping.push(p.damping);
       assignment += p.assignment;
+      maxTorque.push(p.maxTorque ?? null);
     }
-    return { title: this.title, vertices, triangles, joints: { edges, spring, damping, assignment }, nextJointId: this._nextJointId };
+    const physics = { ...this.physics, gravity: this.physics.gravity && [...this.physics.gravity] };
+    return { title: this.title, vertices, triangles, joints: { edges, spring, damping, assignment, maxTorque }, nextJointId: this._nextJointId, physics };
   }
 
   /** A model from snapshot(). */
@@ -108,9 +114,13 @@ export class PatternModel {
       this.triangles.push({ v: [obj.triangles[i], obj.triangles[i + 1], obj.triangles[i + 2]], actor: obj.triangles[i + 3] });
     this._props = new Map();
     const j = obj.joints;
-    for (let k = 0; k < j.spring.length; ++k)
-      this._props.set(edgeKey(j.edges[3 * k], j.edges[3 * k + 1]),
-        { id: j.edges[3 * k + 2], spring: j.spring[k], damping: j.damping[k], assignment: j.assignment[k] });
+    for (let k = 0; k < j.spring.length; ++k) {
+      const p = { id: j.edges[3 * k + 2], spring: j.spring[k], damping: j.damping[k], assignment: j.assignment[k] };
+      if (j.maxTorque && j.maxTorque[k] !== null && j.maxTorque[k] !== undefined) p.maxTorque = j.maxTorque[k];
+      this._props.set(edgeKey(j.edges[3 * k], j.edges[3 * k + 1]), p);
+    }
+    const ph = obj.physics ?? {};
+    this.physics = { density: ph.density ?? null, gravity: ph.gravity ? [...ph.gravity] : null, fixedActor: ph.fixedActor ?? null };
     this._nextJointId = obj.nextJointId;
     this.warnings = [];
     this._commit();
@@ -152,7 +162,7 @@ export class PatternModel {
       if (B.x < A.x || (B.x === A.x && B.y < A.y)) [va, vb] = [vb, va];
       const actors = actorsOf(this, edges[0]);
       list.push({ id, a: { ...this.vertices[va] }, b: { ...this.vertices[vb] }, va, vb, actors,
-        spring: p.spring, damping: p.damping, assignment: p.assignment, key: edges[0].key, keys: edges.map((e) => e.key) });
+        spring: p.spring, damping: p.damping, assignment: p.assignment, maxTorque: p.maxTorque ?? null, key: edges[0].key, keys: edges.map((e) => e.key) });
     }
     list.sort((x, y) => x.id - y.id);
     this._joints = { version: this._version, list, byId: new Map(list.map((j) => [j.id, j])) };
@@ -176,18 +186,23 @@ export class PatternModel {
     return this._joints.byId.get(id) ?? null;
   }
 
-  /** Set a joint's spring, damping and/or assignment ('M', 'V', 'F' or 'U'). */
-  setJoint(id, { spring, damping, assignment } = {}) {
+  /** Set a joint's spring, damping, assignment ('M', 'V', 'F' or 'U') and/or motor torque limit
+   * (`maxTorque`, N·m, positive; null: none, the run's --max-torque). */
+  setJoint(id, { spring, damping, assignment, maxTorque } = {}) {
     const j = this.joint(id);
     if (!j) throw new Error(`no joint ${id}`);
     if (spring !== undefined && !(Number.isFinite(spring) && spring >= 0)) throw new Error('spring constant must be finite and non-negative');
     if (damping !== undefined && !(Number.isFinite(damping) && damping >= 0)) throw new Error('damping constant must be finite and non-negative');
     if (assignment !== undefined && !ASSIGNMENTS.has(assignment)) throw new Error('assignment must be M, V, F or U');
+    if (maxTorque !== undefined && maxTorque !== null && !(Number.isFinite(maxTorque) && maxTorque > 0))
+      throw new Error('maximum torque must be positive and finite (N·m)');
     for (const key of j.keys) {
       const p = this._props.get(key);
       if (spring !== undefined) p.spring = spring;
       if (damping !== undefined) p.damping = damping;
       if (assignment !== undefined) p.assignment = assignment;
+      if (maxTorque === null) delete p.maxTorque;
+      else if (maxTorque !== undefined) p.maxTorque = maxTorque;
     }
     this._version++;
     return this.joint(id);

@@ -115,7 +115,7 @@ export function copyTriangles(model, indices) {
   for (const e of model.edges()) {
     const p = model._props.get(e.key);
     if (p && e.kind === 'joint' && e.triangles.every((t) => set.has(t)))
-      edges.push({ a: vmap.get(e.i), b: vmap.get(e.j), joint: p.id, spring: p.spring, damping: p.damping, assignment: p.assignment });
+      edges.push({ a: vmap.get(e.i), b: vmap.get(e.j), joint: p.id, spring: p.spring, damping: p.damping, assignment: p.assignment, maxTorque: p.maxTorque });
   }
   return { vertices, triangles, edges, bounds: boxOf(vertices) };
 }
@@ -134,7 +134,11 @@ export function paste(model, clipboard, dx = 0, dy = 0) {
     const edge = topo.byKey.get(key);
     if (!edge || edge.kind !== 'joint' || model._props.has(key)) continue;
     const id = e.joint ?? key;
-    if (!copies.has(id)) copies.set(id, { id: model._takeJointId(), spring: e.spring, damping: e.damping, assignment: e.assignment });
+    if (!copies.has(id)) {
+      const props = { id: model._takeJointId(), spring: e.spring, damping: e.damping, assignment: e.assignment };
+      if (e.maxTorque !== undefined && e.maxTorque !== null) props.maxTorque = e.maxTorque;
+      copies.set(id, props);
+    }
     model._props.set(key, copies.get(id));
   }
   model._commit();

@@ -11,6 +11,7 @@ import { PatternModel } from './model.js';
 export function readModel(text) {
   const spec = readPMML(text);
   const model = new PatternModel({ title: spec.title });
+  model.physics = { ...spec.physics };
   const seenActor = new Map(), seenJoint = new Map();
   for (const a of spec.actors) {
     if (seenActor.has(a.id)) model.warnings.push(`${a.line}: duplicate actor ID ${a.id} (also at line ${seenActor.get(a.id)})`);
@@ -38,6 +39,7 @@ export function readModel(text) {
     }
     // Every edge of the joint's segment shares one properties object: one crease, one ID.
     const props = { id: duplicate ? 0 : j.id, spring: j.spring, damping: j.damping, assignment: j.assignment };
+    if (j.maxTorque !== undefined) props.maxTorque = j.maxTorque;
     for (let k = 0; k + 1 < chain.length; ++k) {
       const key = edgeKey(chain[k], chain[k + 1]);
       if (model._props.has(key)) model.warnings.push(`${j.line}: joint ${j.id} covers an edge another joint already covers`);
@@ -55,10 +57,17 @@ export function readModel(text) {
   return model;
 }
 
-/** PMML text of `model`: actors in ID order with their triangles, then the joints in ID order. */
+/** PMML text of `model`: the title, foldkit's physics extensions where set, actors in ID order
+ * with their triangles, then the joints in ID order (each with its MaxTorque where set). */
 export function writeModel(model) {
   const out = ['<?xml version="1.0" encoding="UTF-8"?>', '<PMML>'];
   if (model.title) out.push(`  <Title>${escapeXml(model.title)}</Title>`);
+  // foldkit's extensions, after the title and only when set, as foldkit writes them: a plain
+  // PMML writes back as the paper's Table 1.
+  const { density, gravity, fixedActor } = model.physics;
+  if (density !== null) out.push(`  <Density>${formatNumber(density, 'density')}</Density>`);
+  if (gravity !== null) out.push(`  <Gravity>${gravity.map((g) => formatNumber(g, 'gravity')).join(' ')}</Gravity>`);
+  if (fixedActor !== null) out.push(`  <FixedActor>${fixedActor}</FixedActor>`);
   const byActor = model._trianglesByActor();
   for (const id of [...byActor.keys()].sort((a, b) => a - b)) {
     out.push('  <Actor>', `    <ID>${id}</ID>`);
@@ -77,6 +86,7 @@ export function writeModel(model) {
       `    <SpringConst>${f(j.spring, 'spring constant')}</SpringConst>`,
       `    <DampConst>${f(j.damping, 'damping constant')}</DampConst>`);
     if (j.assignment !== 'U') out.push(`    <Assignment>${j.assignment}</Assignment>`);
+    if (j.maxTorque !== null) out.push(`    <MaxTorque>${f(j.maxTorque, 'maximum torque')}</MaxTorque>`);
     out.push('  </Joint>');
   }
   out.push('</PMML>', '');

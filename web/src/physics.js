@@ -1,5 +1,6 @@
 // The physics switch's arguments and words: what the page's fields become as `simulate`'s
-// options (`--model dynamic`, `--gravity`, `--max-torque`, `--density`, and the solver's
+// options (`--model dynamic`, `--gravity`, `--max-torque`, `--density`, `--fixed`, `--ground`,
+// `--scale`, and the solver's
 // `--solver`, `--iterations`, `--time-step`, `--projection-interval`; docs/SIMULATION.md "Dynamic
 // simulation"), and what a physical run's stalls say. Pure, for node's tests.
 
@@ -28,13 +29,35 @@ function positive(text) {
   return text && Number.isFinite(value) && value > 0 ? value : null;
 }
 
+/** The page's gravity where the pattern's file has none (m/s², "X Y Z"). */
+export const DEFAULT_GRAVITY = '0 0 -9.81';
+
+/**
+ * The physics fields' text from a pattern's own values (PatternModel.physics: foldkit's PMML
+ * extensions <Density>, <Gravity>, <FixedActor>, each null where the file has none): the file's
+ * value where it has one, else the page's default (density 1 kg/m², gravity DEFAULT_GRAVITY, the
+ * fixed actor empty: the first actor). So a field left as the pattern opened sends the file's
+ * own value, which `simulate` would have used anyway.
+ */
+export function physicsDefaults(physics = {}) {
+  return {
+    density: physics.density != null ? String(physics.density) : '1',
+    gravity: physics.gravity != null ? physics.gravity.map(String).join(' ') : DEFAULT_GRAVITY,
+    fixed: physics.fixedActor != null ? String(physics.fixedActor) : '',
+  };
+}
+
 /**
  * `simulate`'s options from the physics fields (their text as typed): {options} to add to the
  * request, or {error} saying what is wrong. `gravity`: "X Y Z" (or X,Y,Z) in m/s², empty for
- * none; `torque`: the motors' limit in N·m, positive; `density`: the sheet's areal density in
- * kg/m², positive (default 1, the model's); `solver`: a key of SOLVERS (default exact).
+ * none; `torque`: the motors' limit in N·m, positive (joints with their own PMML <MaxTorque>
+ * keep it); `density`: the sheet's areal density in kg/m², positive (default 1, the model's);
+ * `fixed`: the actor held in place, an actor ID or "none" (empty: not sent, the pattern's
+ * <FixedActor> or the first actor); `ground`: a ground plane's height in metres (empty: none);
+ * `scale`: metres per pattern unit, positive (empty: not sent, 1); `solver`: a key of SOLVERS
+ * (default exact).
  */
-export function physicsOptions({ gravity, torque, density = '1', solver = 'exact' }) {
+export function physicsOptions({ gravity, torque, density = '1', fixed = '', ground = '', scale = '', solver = 'exact' }) {
   const options = { model: PHYSICS_MODEL };
   const g = gravity.trim();
   if (g) {
@@ -52,6 +75,24 @@ export function physicsOptions({ gravity, torque, density = '1', solver = 'exact
   const areal = positive(d);
   if (areal === null) return { error: `density: give a positive number of kg/m² (of sheet), not "${d}"` };
   options.density = areal;
+  const f = fixed.trim();
+  if (f) {
+    if (f.toLowerCase() === 'none') options.fixed = 'none';
+    else if (/^[+-]?\d+$/.test(f) && Number.isSafeInteger(Number(f))) options.fixed = String(Number(f));
+    else return { error: `fixed actor: give an actor ID or "none", or leave it empty for the first actor; not "${f}"` };
+  }
+  const z = ground.trim();
+  if (z) {
+    const height = Number(z);
+    if (!Number.isFinite(height)) return { error: `ground: give the ground's height in metres, or leave it empty for none; not "${z}"` };
+    options.ground = height;
+  }
+  const s = scale.trim();
+  if (s) {
+    const metres = positive(s);
+    if (metres === null) return { error: `scale: give a positive number of metres per pattern unit, not "${s}"` };
+    options.scale = metres;
+  }
   if (!Object.hasOwn(SOLVERS, solver))
     return { error: `solver: choose one of ${Object.keys(SOLVERS).join(', ')}, not "${solver}"` };
   return { options: { ...options, ...SOLVERS[solver] } };

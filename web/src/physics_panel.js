@@ -1,10 +1,11 @@
 // The run panel's physics switch beside Simulate: kinematic (foldkit's fast referee) or physics
-// (`simulate --model dynamic`: masses, gravity, torque-limited motors; the sheet's density and
-// the solver, exact or fast, as physics.js's SOLVERS). After a physical run the
+// (`simulate --model dynamic`: masses, gravity, torque-limited motors; the sheet's density, the
+// scale, the fixed actor, a ground, the start state and the solver, as physics.js's SOLVERS; the
+// pattern's own density, gravity and fixed actor are the fields' defaults). After a physical run the
 // page shows its verdict, the selected joints' torque against time and the stalls on the
 // timeline; the numbers are foldkit's (`--json` and the series it wrote, NAME-series.json).
 import { $, app, log } from './page.js';
-import { physicsOptions, physicsVerdict, stallLabel } from './physics.js';
+import { physicsOptions, physicsDefaults, physicsVerdict, stallLabel } from './physics.js';
 import { TorquePlot, plottedJoints } from './torque_plot.js';
 
 const plot = new TorquePlot($('torque-plot'));
@@ -19,12 +20,26 @@ export function simulateOptions() {
   const ticked = $('collisions').checked;
   if (!physicsOn()) return ticked ? {} : { 'no-collision': true };
   const { options, error } = physicsOptions({ gravity: $('gravity').value, torque: $('max-torque').value,
-    density: $('density').value, solver: $('physics-solver').value });
+    density: $('density').value, fixed: $('fixed-actor').value, ground: $('ground').value, scale: $('physics-scale').value,
+    solver: $('physics-solver').value });
   if (error) {
     log(error);
     return null;
   }
   return ticked ? { ...options, contacts: true } : options;
+}
+
+/** Whether a physical run starts from the state the 3D view shows (--start) rather than flat. */
+export const startFromShown = () => physicsOn() && $('physics-start').checked;
+
+/** The physics fields from a pattern just opened or generated: its own density, gravity and
+ * fixed actor (PMML's extensions) where it has them, else the page's defaults (physics.js,
+ * physicsDefaults); the run then sends what the file says unless a field is changed. */
+export function physicsFromPattern(model) {
+  const d = physicsDefaults(model.physics);
+  $('density').value = d.density;
+  $('gravity').value = d.gravity;
+  $('fixed-actor').value = d.fixed;
 }
 
 function showSwitch() {

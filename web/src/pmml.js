@@ -26,10 +26,10 @@ function onlyChild(el, tag) {
   return found[0];
 }
 
-function readInteger(el) {
+function readInteger(el, expected = 'an integer') {
   const t = leafText(el);
   const v = INTEGER.test(t) ? Number(t) : NaN;
-  if (!Number.isSafeInteger(v) || Math.abs(v) > INT_MAX) throw new Error(`${el.line}: <${el.name}> must be an integer, found '${t.slice(0, 40)}'`);
+  if (!Number.isSafeInteger(v) || Math.abs(v) > INT_MAX) throw new Error(`${el.line}: <${el.name}> must be ${expected}, found '${t.slice(0, 40)}'`);
   return v;
 }
 
@@ -57,7 +57,37 @@ function readActorSpec(el) {
   return actor;
 }
 
-const JOINT_TAGS = new Set(['ID', 'Coords', 'ActorIDs', 'SpringConst', 'DampConst', 'Assignment']);
+const JOINT_TAGS = new Set(['ID', 'Coords', 'ActorIDs', 'SpringConst', 'DampConst', 'Assignment', 'MaxTorque']);
+
+// One number of an element that holds one (C++: "<X> must hold one number, found N").
+function readNumber(el) {
+  const values = readNumbers(el);
+  if (values.length !== 1) throw new Error(`${el.line}: <${el.name}> must hold one number, found ${values.length}`);
+  return values[0];
+}
+
+// foldkit's extensions for the dynamic model, children of <PMML> (docs/FORMATS.md), as the C++
+// reader (io/src/pmml.cpp) reads them: each at most once, anywhere among the children; false for
+// any other element. Their ranges (density positive, the fixed actor an actor of the pattern)
+// are foldkit validate's to check, at their lines, as the C++ reader leaves them to build_pattern.
+function readPhysics(el, physics) {
+  const once = (set) => {
+    if (set) throw new Error(`${el.line}: <PMML> has more than one <${el.name}>`);
+  };
+  if (el.name === 'Density') {
+    once(physics.density !== null);
+    physics.density = readNumber(el);
+  } else if (el.name === 'Gravity') {
+    once(physics.gravity !== null);
+    physics.gravity = readNumbers(el, 3);
+  } else if (el.name === 'FixedActor') {
+    once(physics.fixedActor !== null);
+    physics.fixedActor = readInteger(el, 'an actor ID');
+  } else {
+    return false;
+  }
+  return true;
+}
 
 function readJointSpec(el) {
   for (const c of elementsOf(el)) if (!JOINT_TAGS.has(c.name)) throw new Error(`${c.line}: unknown element <${c.name}> in <Joint>`);
@@ -79,18 +109,23 @@ function readJointSpec(el) {
     joint.assignment = leafText(a);
     if (!ASSIGNMENTS.has(joint.assignment)) throw new Error(`${a.line}: <Assignment> must be M, V, F or U, found '${joint.assignment.slice(0, 40)}'`);
   }
+  // foldkit's extension: the joint's motor torque limit in the dynamic model, N·m (foldkit
+  // validate checks that it is positive, at its line).
+  if (el.children.some((c) => c.name === 'MaxTorque')) joint.maxTorque = readNumber(onlyChild(el, 'MaxTorque'));
   return joint;
 }
 
 /**
  * Read PMML text into a spec: {title, actors: [{id, triangles: [{c: [6 numbers], line}], line}],
- * joints: [{id, coords: [4 numbers], actors: [2 IDs], spring, damping, assignment, line}]}.
+ * joints: [{id, coords: [4 numbers], actors: [2 IDs], spring, damping, assignment, maxTorque?, line}],
+ * physics: {density, gravity: [x, y, z], fixedActor}} (foldkit's extensions, each null where the
+ * file has none; a joint's maxTorque is absent where it has none).
  * Throws Error('LINE: message') on malformed input.
  */
 export function readPMML(text) {
   const root = parseXml(text);
   if (root.name !== 'PMML') throw new Error(`${root.line}: the root element is <${root.name}>, expected <PMML>`);
-  const spec = { title: '', actors: [], joints: [] };
+  const spec = { title: '', actors: [], joints: [], physics: { density: null, gravity: null, fixedActor: null } };
   let titled = false;
   for (const c of elementsOf(root)) {
     if (c.name === 'Title') {
@@ -99,7 +134,7 @@ export function readPMML(text) {
       spec.title = leafText(c);
     } else if (c.name === 'Actor') spec.actors.push(readActorSpec(c));
     else if (c.name === 'Joint') spec.joints.push(readJointSpec(c));
-    else throw new Error(`${c.line}: unknown element <${c.name}> in <PMML>`);
+    else if (!readPhysics(c, spec.physics)) throw new Error(`${c.line}: unknown element <${c.name}> in <PMML>`);
   }
   return spec;
 }

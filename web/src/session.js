@@ -14,7 +14,7 @@ export function sessionFiles(name, folder = '') {
   return {
     pattern: `${base}.pmml`, sequence: `${base}.cmml`, frames: `${base}-frames.fold`, state: `${base}-state.cmml`,
     folded: `${base}-fold.cmml`, plan: `${base}-plan.cmml`, loadcase: `${base}.loadcase`, fold: `${base}.fold`, svg: `${base}.svg`,
-    series: `${base}-series.json`,
+    series: `${base}-series.json`, start: `${base}-start.cmml`,
   };
 }
 
@@ -57,12 +57,16 @@ export async function checkPattern(model, files) {
   return { ok: true, problems: [], info, dof };
 }
 
-/** DOF and closure error of one state (joint id → degrees), from `foldkit dof --state`. */
-export async function stateDof(files, jointIds, degrees) {
+// One state (joint id → degrees) as a CMML of one event.
+function stateCMML(jointIds, degrees) {
   // Within rounding of ±180° a trajectory's angle may lie just outside CMML's [-180, 180].
   const angle = (d) => Math.max(-180, Math.min(180, d));
-  const sequence = { title: 'state', events: [{ number: 0, folds: jointIds.map((joint, k) => ({ joint, angle: angle(degrees[k]), speed: 1 })) }] };
-  await api.writeFile(files.state, writeCMML(sequence));
+  return writeCMML({ title: 'state', events: [{ number: 0, folds: jointIds.map((joint, k) => ({ joint, angle: angle(degrees[k]), speed: 1 })) }] });
+}
+
+/** DOF and closure error of one state (joint id → degrees), from `foldkit dof --state`. */
+export async function stateDof(files, jointIds, degrees) {
+  await api.writeFile(files.state, stateCMML(jointIds, degrees));
   return (await api.verb('dof', { pattern: files.pattern, state: files.state })).result;
 }
 
@@ -79,9 +83,15 @@ export function frameBudget(joints) {
  * `joints` order), final, times (seconds per frame), series}. `options` are simulate's arguments
  * (e.g. {'no-collision': true}); with {model: 'dynamic'} foldkit also writes every joint's angle
  * and torque every 0.01 s (`--series NAME-series.json`), which is `series` ({time, event,
- * joints: [{joint, angle, torque}]}); else `series` is null. */
-export async function simulate(model, sequence, files, options = {}) {
+ * joints: [{joint, angle, torque}]}); else `series` is null. `start`: the state the dynamic
+ * model starts from (degrees per joint, in model.joints() order), written as NAME-start.cmml
+ * and sent as `start`; null: flat. */
+export async function simulate(model, sequence, files, options = {}, start = null) {
   const path = await sequencePath(sequence, files, model);
+  if (start) {
+    await api.writeFile(files.start, stateCMML(model.joints().map((j) => j.id), start));
+    options = { ...options, start: files.start };
+  }
   const physical = options.model === PHYSICS_MODEL;
   const run = await api.verb('simulate', { pattern: files.pattern, sequence: path, frames: files.frames,
     'max-frames': frameBudget(model.joints().length), ...(physical ? { series: files.series } : {}), ...options });

@@ -163,6 +163,11 @@ export class View3D {
     this.fit({ reset: true });
   }
 
+  /** The angles the view shows (radians, one per joint in the pattern's joint order): a copy. */
+  angles() {
+    return this._angles ? Float64Array.from(this._angles) : new Float64Array(0);
+  }
+
   /**
    * Folds the sheet: recomputes the facet poses and rewrites every position in place.
    * @param {ArrayLike<number>} angles radians, one per joint in the pattern's joint order

@@ -3,10 +3,14 @@
 // its second panel lifted by one motor to −120°, simulated with physics on, first with a torque
 // that lifts it and then with one that stalls, then with the fast solver on a lighter sheet; the
 // torque plot and the stall marks against `foldkit simulate --model dynamic` on the files the
-// page saved.
+// page saved. Then a PMML with foldkit's physics extensions (<Density>, <Gravity>, <FixedActor>,
+// a crease's <MaxTorque>): opened, kept and written back, its values the fields' defaults and
+// used; the fixed actor, ground, scale and start-from-the-state-shown fields as the requests
+// the page sends and as foldkit's report of what it used; a malformed extension refused at its
+// line.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync, readFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { foldkit, browserSuite, openApp, idle } from './harness.js';
 
@@ -186,4 +190,145 @@ test('the physics switch simulates a flap against gravity: its torque plotted, i
   assert.equal(shown.panelHidden, true);
   assert.deepEqual(shown.timelineStalls, []);
   assert.deepEqual(page.errors, []);
+});
+
+// A flap whose PMML carries foldkit's extensions (docs/FORMATS.md): its density, gravity and held
+// actor, and its crease's own motor limit. Actor 2 is held and gravity is along −x, so panel 1
+// hangs from it as panel 2 hangs above: lifting it needs 0.9·m·g·d = 4.41 N·m, which the
+// crease's own 4.2 N·m lacks.
+const EXTENDED = `<?xml version="1.0" encoding="UTF-8"?>
+<PMML>
+  <Title>flap</Title>
+  <Density>0.9</Density>
+  <Gravity>-9.81 0 0</Gravity>
+  <FixedActor>2</FixedActor>
+  <Actor>
+    <ID>1</ID>
+    <Triangle>0 0 1 0 1 1</Triangle>
+    <Triangle>0 0 1 1 0 1</Triangle>
+  </Actor>
+  <Actor>
+    <ID>2</ID>
+    <Triangle>1 0 2 0 2 1</Triangle>
+    <Triangle>1 0 2 1 1 1</Triangle>
+  </Actor>
+  <Joint>
+    <ID>1</ID>
+    <Coords>1 0 1 1</Coords>
+    <ActorIDs>1 2</ActorIDs>
+    <SpringConst>1</SpringConst>
+    <DampConst>0.1</DampConst>
+    <MaxTorque>4.2</MaxTorque>
+  </Joint>
+</PMML>
+`;
+const LIFT_CMML = '<CMML><Title>lift</Title><Fold><EventNumber>1</EventNumber><ID>1</ID><FoldAngle>120</FoldAngle><Velocity>30</Velocity></Fold></CMML>\n';
+
+test('a PMML with foldkit\'s physics extensions opens, keeps them, and gives the physics fields; fixed actor, ground, scale and start are sent', limit, async () => {
+  const { root, server } = await suite.serve('extensions', ['flap.pmml', 'flap.cmml'], (dir) => {
+    writeFileSync(join(dir, 'flap.pmml'), EXTENDED);
+    writeFileSync(join(dir, 'flap.cmml'), LIFT_CMML);
+    // The same with a malformed gravity, at line 5.
+    writeFileSync(join(dir, 'bad.pmml'), EXTENDED.replace('<Gravity>-9.81 0 0</Gravity>', '<Gravity>-9.81 0</Gravity>'));
+  });
+  const page = await openApp(suite.browser(), server.url);
+  const requests = [];
+  page.on('request', (r) => { if (r.method() === 'POST' && new URL(r.url()).pathname === '/api/simulate') requests.push(JSON.parse(r.postData())); });
+
+  // Opened: the model holds the extensions, the physics fields show the file's values, the
+  // crease's own limit is in the joint panel; the PMML the page wrote back (its session's
+  // file) has them as foldkit writes them.
+  assert.deepEqual(await page.evaluate(() => window.foldkit.model.physics), { density: 0.9, gravity: [-9.81, 0, 0], fixedActor: 2 });
+  assert.equal(await page.evaluate(() => window.foldkit.model.joint(1).maxTorque), 4.2);
+  const field = (id) => page.$eval(`#${id}`, (e) => e.value);
+  assert.deepEqual([await field('density'), await field('gravity'), await field('fixed-actor')], ['0.9', '-9.81 0 0', '2']);
+  const name = await field('name');  // the session's name: the page does not overwrite what it opened
+  assert.notEqual(name, 'flap');
+  const written = readFileSync(join(root, `${name}.pmml`), 'utf8');
+  assert.match(written, /<Title>flap<\/Title>\n {2}<Density>0\.9<\/Density>\n {2}<Gravity>-9\.81 0 0<\/Gravity>\n {2}<FixedActor>2<\/FixedActor>\n/);
+  assert.match(written, /<MaxTorque>4\.2<\/MaxTorque>/);
+  foldkit(['validate', join(root, `${name}.pmml`)]);
+  const p = await page.evaluate(() => window.foldkit.editor.toClient({ x: 1, y: 0.5 }));
+  await page.mouse.click(p.x, p.y);
+  assert.equal(await field('joint-torque'), '4.2');
+
+  // Physics on, the fields as the file gave them (max torque left at 1 N·m: the crease keeps its
+  // own 4.2): the lift stalls needing 0.9·m·g·d, with 4.2 N·m, panel 1 lifted (actor 2 held).
+  await page.select('#sim-model', 'physics');
+  await simulate(page);
+  let shown = await shownPhysics(page);
+  let result = await page.evaluate(() => window.foldkit.simulation.result);
+  let sent = requests.at(-1);
+  assert.deepEqual([sent.density, sent.gravity, sent.fixed, sent['max-torque']], [0.9, '-9.81,0,0', '2', 1]);
+  assert.ok(!('ground' in sent) && !('start' in sent), 'no ground, no start');
+  assert.equal(shown.verdict, 'invalid: no-progress');
+  assert.equal(result.fixed, 2);
+  assert.equal(result.stalls[0].available_torque, 4.2);
+  assert.ok(Math.abs(result.stalls[0].needed_torque - 0.9 * LIFT) < 0.01 * LIFT, `needs 0.9·m·g·d: ${result.stalls[0].needed_torque}`);
+
+  // Wrong fields are refused with the reason, nothing sent.
+  const before = requests.length;
+  for (const [id, value, message] of [['fixed-actor', 'first', /^fixed actor: give an actor ID or "none"/], ['ground', 'low', /^ground: give the ground's height in metres/],
+    ['physics-scale', '0', /^scale: give a positive number of metres per pattern unit, not "0"/]]) {
+    const old = await field(id);
+    await setField(page, id, value);
+    await simulate(page);
+    assert.match((await shownPhysics(page)).log, message);
+    await setField(page, id, old);
+  }
+  assert.equal(requests.length, before);
+
+  // Nothing held: the sheet falls freely and the same crease lifts it (no stall): the fixed actor
+  // changed the torque the lift needs.
+  await setField(page, 'fixed-actor', 'none');
+  await simulate(page);
+  result = await page.evaluate(() => window.foldkit.simulation.result);
+  assert.equal(requests.at(-1).fixed, 'none');
+  assert.equal(result.fixed, 'none');
+  assert.equal((await shownPhysics(page)).verdict, 'valid', result.message);
+  assert.deepEqual(result.stalls, []);
+
+  // Start from the state shown: the scrubber at the end (120°), sent as NAME-start.cmml with that
+  // angle; the motor is there already, so the run is short.
+  const duration = result.duration;
+  await page.evaluate(() => window.foldkit.timeline.seek(1e9));
+  const shownAngle = await page.evaluate(() => (window.foldkit.view.angles()[0] * 180) / Math.PI);
+  assert.ok(Math.abs(shownAngle - 120) < 0.5, `shown at ${shownAngle}°`);
+  await page.$eval('#physics-start', (e) => { e.checked = true; });
+  await simulate(page);
+  sent = requests.at(-1);
+  assert.equal(sent.start, `${name}-start.cmml`);
+  const start = readFileSync(join(root, `${name}-start.cmml`), 'utf8');
+  const angle = Number(start.match(/<FoldAngle>([^<]+)<\/FoldAngle>/)[1]);
+  assert.ok(Math.abs(angle - shownAngle) < 1e-6, `start at ${angle}°`);
+  result = await page.evaluate(() => window.foldkit.simulation.result);
+  assert.equal(result.status, 'success', result.message);
+  assert.ok(result.duration < duration / 2, `${result.duration} s from the state shown, ${duration} s from flat`);
+  await page.$eval('#physics-start', (e) => { e.checked = false; });
+
+  // Scale and ground: sent, and used.
+  await setField(page, 'fixed-actor', '');
+  await setField(page, 'physics-scale', '0.5');
+  await setField(page, 'ground', '-2');
+  await simulate(page);
+  sent = requests.at(-1);
+  assert.deepEqual([sent.scale, sent.ground, 'fixed' in sent, 'start' in sent], [0.5, -2, false, false]);
+  result = await page.evaluate(() => window.foldkit.simulation.result);
+  assert.deepEqual([result.scale, result.ground, result.fixed], [0.5, -2, 2]);
+
+  // The joint panel sets the crease's own limit, written to the PMML.
+  await setField(page, 'joint-torque', '7.5');
+  await page.click('#set-joint');
+  await page.evaluate(() => window.foldkit.checkNow());
+  await idle(page);
+  assert.match(readFileSync(join(root, `${name}.pmml`), 'utf8'), /<MaxTorque>7\.5<\/MaxTorque>/);
+
+  // A malformed extension: the file is refused at its line, the pattern on screen kept.
+  await page.focus('#open');
+  await page.waitForFunction(() => [...document.querySelectorAll('#open option')].some((o) => o.value === 'bad.pmml'));
+  await page.select('#open', 'bad.pmml');
+  await idle(page);
+  assert.match((await shownPhysics(page)).log, /5: <Gravity> needs 3 numbers, found 2/);
+  assert.deepEqual(await page.evaluate(() => window.foldkit.model.physics), { density: 0.9, gravity: [-9.81, 0, 0], fixedActor: 2 });
+  assert.deepEqual(page.errors.filter((e) => !/needs 3 numbers/.test(e)), []);
 });

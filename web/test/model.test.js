@@ -237,6 +237,110 @@ test('malformed input throws with the line number', () => {
   assertThrowsLine('', 1, /empty/);
 });
 
+// foldkit's PMML extensions for the dynamic model (docs/FORMATS.md): <Density>, <Gravity> and
+// <FixedActor> anywhere among <PMML>'s children, <MaxTorque> in a joint. A two-panel strip.
+const EXTENDED = `<?xml version="1.0" encoding="UTF-8"?>
+<PMML>
+  <Title>strip</Title>
+  <Actor>
+    <ID>1</ID>
+    <Triangle>0 0 1 0 1 1</Triangle>
+    <Triangle>0 0 1 1 0 1</Triangle>
+  </Actor>
+  <FixedActor>2</FixedActor>
+  <Actor>
+    <ID>2</ID>
+    <Triangle>1 0 2 0 2 1</Triangle>
+    <Triangle>1 0 2 1 1 1</Triangle>
+  </Actor>
+  <Gravity>9.81 0 -0.5</Gravity>
+  <Joint>
+    <ID>1</ID>
+    <Coords>1 0 1 1</Coords>
+    <ActorIDs>1 2</ActorIDs>
+    <SpringConst>1</SpringConst>
+    <DampConst>0.1</DampConst>
+    <MaxTorque>2.5</MaxTorque>
+  </Joint>
+  <Density>0.08</Density>
+</PMML>
+`;
+
+test('foldkit\'s physics extensions are read, kept through edits and undo, and written back where foldkit writes them', () => {
+  const m = PatternModel.fromPMML(EXTENDED);
+  assert.deepEqual(m.physics, { density: 0.08, gravity: [9.81, 0, -0.5], fixedActor: 2 });
+  assert.equal(m.joint(1).maxTorque, 2.5);
+  const text = m.toPMML();
+  // After the title, in foldkit's order (io/src/pmml.cpp's writer); the joint's after its assignment.
+  assert.match(text, /<Title>strip<\/Title>\n {2}<Density>0\.08<\/Density>\n {2}<Gravity>9\.81 0 -0\.5<\/Gravity>\n {2}<FixedActor>2<\/FixedActor>\n {2}<Actor>/);
+  assert.match(text, /<DampConst>0\.1<\/DampConst>\n {4}<MaxTorque>2\.5<\/MaxTorque>\n {2}<\/Joint>/);
+  const back = PatternModel.fromPMML(text);
+  assert.deepEqual(back.physics, m.physics);
+  assert.equal(back.joint(1).maxTorque, 2.5);
+  assert.equal(back.toPMML(), text, 'the text is stable');
+  // Snapshots (undo) keep them; a joint's limit is set and removed as its other properties.
+  assert.equal(PatternModel.fromSnapshot(JSON.parse(JSON.stringify(m.snapshot()))).toPMML(), text);
+  m.setJoint(1, { maxTorque: 4 });
+  assert.match(m.toPMML(), /<MaxTorque>4<\/MaxTorque>/);
+  assert.throws(() => m.setJoint(1, { maxTorque: 0 }), /positive/);
+  m.setJoint(1, { maxTorque: null });
+  assert.ok(!m.toPMML().includes('MaxTorque'), 'none: not written');
+  // A copied crease keeps its limit.
+  const c = PatternModel.fromPMML(EXTENDED);
+  paste(c, copyTriangles(c, c.triangles.map((_, t) => t)), 0, 2);
+  assert.deepEqual(c.joints().map((j) => j.maxTorque), [2.5, 2.5]);
+  // A plain PMML gets none of them.
+  const plain = PatternModel.fromPMML(fixture('boat.pmml'));
+  assert.deepEqual(plain.physics, { density: null, gravity: null, fixedActor: null });
+  assert.ok(!/Density|Gravity|FixedActor|MaxTorque/.test(plain.toPMML()));
+});
+
+test('malformed extensions are refused at their line, as foldkit refuses them', () => {
+  const at = (line, element) => EXTENDED.split('\n').map((l, k) => (k + 1 === line ? `  ${element}` : l)).join('\n');
+  // Line 3 is the title: an extension put there or beside it.
+  const cases = [
+    [at(9, '<FixedActor>x</FixedActor>'), 9, /^9: <FixedActor> must be an actor ID, found 'x'$/],
+    [at(9, '<FixedActor>1.5</FixedActor>'), 9, /<FixedActor> must be an actor ID/],
+    [at(15, '<Gravity>0 -9.81</Gravity>'), 15, /^15: <Gravity> needs 3 numbers, found 2$/],
+    [at(15, '<Gravity>0,0,-9.81</Gravity>'), 15, /'0,0,-9\.81' is not a finite number/],
+    [at(15, '<Gravity>0 0 inf</Gravity>'), 15, /'inf' is not a finite number/],
+    [at(24, '<Density>nan</Density>'), 24, /^24: <Density>: 'nan' is not a finite number$/],
+    [at(24, '<Density>1 2</Density>'), 24, /^24: <Density> must hold one number, found 2$/],
+    [at(22, '<MaxTorque>fast</MaxTorque>'), 22, /^22: <MaxTorque>: 'fast' is not a finite number$/],
+    [at(3, '<Density>1</Density>'), 24, /^24: <PMML> has more than one <Density>$/],
+    [at(3, '<Gravity>0 0 -1</Gravity>'), 15, /^15: <PMML> has more than one <Gravity>$/],
+    [at(3, '<FixedActor>1</FixedActor>'), 9, /^9: <PMML> has more than one <FixedActor>$/],
+    [EXTENDED.replace('<MaxTorque>2.5</MaxTorque>', '<MaxTorque>1</MaxTorque><MaxTorque>2</MaxTorque>'), 22, /<Joint> has more than one <MaxTorque>/],
+    [EXTENDED.replace('<Density>', '<Weight>1</Weight><Density>'), 24, /unknown element <Weight> in <PMML>/],
+  ];
+  for (const [text, line, pattern] of cases) assertThrowsLine(text, line, pattern);
+});
+
+test('foldkit reads the extensions the page writes as the page does, and writes them as the page does', needsCli, () => {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'foldkit-web-'));
+  try {
+    const file = path.join(dir, 'strip.pmml');
+    const m = PatternModel.fromPMML(EXTENDED);
+    fs.writeFileSync(file, m.toPMML());
+    const v = cli(['validate', file]);
+    assert.equal(v.status, 0, v.stdout + v.stderr);
+    // foldkit's writer (convert PMML → PMML) writes the same text.
+    const out = path.join(dir, 'again.pmml');
+    const c = cli(['convert', file, out]);
+    assert.equal(c.status, 0, c.stderr);
+    assert.equal(fs.readFileSync(out, 'utf8'), m.toPMML());
+    // What foldkit refuses at a line, the page refuses at the same line.
+    const bad = EXTENDED.replace('<Gravity>9.81 0 -0.5</Gravity>', '<Gravity>9.81 0</Gravity>');
+    fs.writeFileSync(file, bad);
+    const r = cli(['validate', file]);
+    assert.notEqual(r.status, 0);
+    assert.match(r.stdout + r.stderr, /strip\.pmml:15: <Gravity> needs 3 numbers, found 2/);
+    assertThrowsLine(bad, 15, /<Gravity> needs 3 numbers, found 2/);
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+});
+
 // ------------------------------------------------------------------------------ writing
 
 test('toPMML → fromPMML is identical: triangles, joints, IDs, properties, exact numbers', () => {

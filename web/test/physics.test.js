@@ -9,7 +9,7 @@ import { mkdtempSync, writeFileSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { spawnSync } from 'node:child_process';
-import { physicsOptions, physicsVerdict, stallText, stallLabel, SOLVERS } from '../src/physics.js';
+import { physicsOptions, physicsDefaults, physicsVerdict, stallText, stallLabel, SOLVERS, DEFAULT_GRAVITY } from '../src/physics.js';
 import { plottedJoints, curvePoints, pathData, plotFrame, torquePlotSvg } from '../src/torque_plot.js';
 
 const cli = process.env.FOLDKIT_CLI;
@@ -71,6 +71,54 @@ test('the physics fields become simulate\'s options, or say what is wrong', () =
   // The first wrong field is the one named.
   assert.match(physicsOptions({ gravity: 'down', torque: '0', density: '0', solver: 'x' }).error, /^gravity/);
   assert.match(physicsOptions({ gravity: '', torque: '1', density: '0', solver: 'x' }).error, /^density/);
+});
+
+test('the fixed actor, ground and scale fields become --fixed, --ground and --scale; the pattern\'s own values are the fields\' defaults', () => {
+  const base = { gravity: '', torque: '1' };
+  const exact = SOLVERS.exact;
+  // Empty: not sent (the pattern's <FixedActor> or the first actor; no ground; scale 1).
+  assert.deepEqual(physicsOptions({ ...base, fixed: ' ', ground: '', scale: '' }).options, { model: 'dynamic', 'max-torque': 1, density: 1, ...exact });
+  assert.deepEqual(physicsOptions({ ...base, fixed: ' 2 ', ground: '-0.25', scale: '0.5' }).options,
+    { model: 'dynamic', 'max-torque': 1, density: 1, fixed: '2', ground: -0.25, scale: 0.5, ...exact });
+  assert.equal(physicsOptions({ ...base, fixed: 'None' }).options.fixed, 'none');
+  assert.equal(physicsOptions({ ...base, fixed: '+7' }).options.fixed, '7');
+  assert.equal(physicsOptions({ ...base, ground: '0' }).options.ground, 0);
+  for (const fixed of ['first', '1.5', '1 2', '1e3'])
+    assert.equal(physicsOptions({ ...base, fixed }).error, `fixed actor: give an actor ID or "none", or leave it empty for the first actor; not "${fixed}"`, fixed);
+  for (const ground of ['low', '1 2', 'inf', 'NaN'])
+    assert.match(physicsOptions({ ...base, ground }).error, /^ground: give the ground's height in metres, or leave it empty for none/, ground);
+  for (const scale of ['0', '-1', 'big', 'inf'])
+    assert.equal(physicsOptions({ ...base, scale }).error, `scale: give a positive number of metres per pattern unit, not "${scale}"`, scale);
+  // The fields a pattern opens with: its own values, else the page's.
+  assert.deepEqual(physicsDefaults({ density: 0.08, gravity: [9.81, 0, -0.5], fixedActor: 2 }), { density: '0.08', gravity: '9.81 0 -0.5', fixed: '2' });
+  assert.deepEqual(physicsDefaults({ density: null, gravity: null, fixedActor: null }), { density: '1', gravity: DEFAULT_GRAVITY, fixed: '' });
+  // … which the page then sends as the file says them.
+  const d = physicsDefaults({ density: 0.08, gravity: [9.81, 0, -0.5], fixedActor: 2 });
+  assert.deepEqual(physicsOptions({ ...d, torque: '1' }).options, { model: 'dynamic', gravity: '9.81,0,-0.5', 'max-torque': 1, density: 0.08, fixed: '2', ...exact });
+});
+
+test('the fixed actor and the scale change the torque a lift needs, as the page sends them', { skip: !cli && 'FOLDKIT_CLI not set' }, () => {
+  // The flap of flap() at 4.66 N·m (0.95 m·g·d) lifted to −60°: held by actor 1 it stalls;
+  // with nothing held (--fixed none) the sheet falls freely and the motor lifts it; at scale 2
+  // (4 times the mass, twice the lever: 8 m·g·d at the horizontal) it stalls much sooner.
+  const dir = mkdtempSync(join(tmpdir(), 'foldkit-physics-'));
+  const pmml = join(dir, 'flap.pmml');
+  const cmml = join(dir, 'lift.cmml');
+  assert.equal(spawnSync(cli, ['generate', 'strip', '--panels', '2', '-o', pmml]).status, 0);
+  writeFileSync(cmml, '<CMML><Title>lift</Title><Fold><EventNumber>1</EventNumber><ID>1</ID><FoldAngle>-120</FoldAngle><Velocity>30</Velocity></Fold></CMML>\n');
+  const run = (fields) => simulatePage(pmml, cmml, { gravity: '9.81 0 0', torque: '4.66', solver: 'exact', ...fields });
+  const held = run({});
+  assert.equal(held.exit, 3);
+  assert.equal(held.result.fixed, 1);
+  assert.ok(Math.abs(held.result.stalls[0].needed_torque - 4.905) < 0.05, `${held.result.stalls[0].needed_torque}`);
+  const free = run({ fixed: 'none' });
+  assert.equal(free.exit, 0, free.result.message);
+  assert.equal(free.result.fixed, 'none');
+  const scaled = run({ scale: '2', ground: '-5' });
+  assert.equal(scaled.exit, 3);
+  assert.deepEqual([scaled.result.scale, scaled.result.ground], [2, -5]);
+  const [s1, s2] = [held.result.stalls[0], scaled.result.stalls[0]];
+  assert.ok(s2.needed_torque > 1.5 * 4.905 && s2.angle > s1.angle + 30, `scale 2: ${s2.needed_torque} N·m at ${s2.angle}°`);
 });
 
 test('the 10 ms solver choices lift the flap as the exact one: the same final angle, torques, stall; density\'s effect', { skip: !cli && 'FOLDKIT_CLI not set' }, (t) => {
