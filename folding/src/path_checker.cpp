@@ -23,17 +23,11 @@ double fraction_of(const geometry::FoldState& s) { return s.angles.size() ? s.an
 
 PathChecker::PathChecker(const geometry::CreasePattern& pattern)
     : pattern_(pattern), tree_(geometry::make_tree(pattern)), margin_(0.25 * simulation::smallest_feature(pattern)),
-      world_(pattern, with_margin(margin_)) {}
+      world_(pattern, with_margin(margin_)), motion_(pattern) {}
 
 std::string PathChecker::crossing(const geometry::FoldState& a, const geometry::FoldState& b) {
   const auto pa = geometry::facet_poses(pattern_, tree_, a), pb = geometry::facet_poses(pattern_, tree_, b);
-  double moved = 0.0;
-  for (std::size_t f = 0; f < pattern_.actors().size(); ++f)
-    for (const auto& t : pattern_.actors()[f].triangles)
-      for (int v : t.v) {
-        const Eigen::Vector3d p(pattern_.vertices()[v].x(), pattern_.vertices()[v].y(), 0.0);
-        moved = std::max(moved, (pa[f] * p - pb[f] * p).norm());
-      }
+  const double moved = motion_.largest(pa, pb);
   const int parts = std::max(1, static_cast<int>(std::ceil(moved / margin_)));
   for (int k = first_ ? 0 : 1; k <= parts; ++k) {
     const geometry::FoldState s{a.angles + (static_cast<double>(k) / parts) * (b.angles - a.angles)};

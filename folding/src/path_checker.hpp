@@ -6,6 +6,7 @@
 #include "foldkit/geometry/fold_state.hpp"
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/simulation/collision_world.hpp"
+#include "foldkit/simulation/corner_motion.hpp"
 
 namespace foldkit::folding {
 
@@ -13,7 +14,7 @@ namespace foldkit::folding {
 double fraction_of(const geometry::FoldState& s);
 
 // Follows the path through a collision world, in order, with sub-steps so that no facet corner
-// moves farther between two checks than the world's margin (its memory of stacked facets needs
+// moves farther between two checks than the world's margin, up to a rigid motion of the sheet (its memory of stacked facets needs
 // that). The pattern must outlive the checker.
 class PathChecker {
  public:
@@ -31,6 +32,7 @@ class PathChecker {
   geometry::KinematicTree tree_;
   double margin_;
   simulation::CollisionWorld world_;
+  simulation::CornerMotion motion_;  // how far the facets move between two states, up to a rigid motion
   bool first_ = true;
 };
 

@@ -5,15 +5,12 @@
 #include <cstdint>
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
-#include <fcl/geometry/bvh/BVH_model.h>
-#include <fcl/narrowphase/collision.h>
 
 #include "foldkit/geometry/kinematics.hpp"
-#include "foldkit/geometry/triangle_overlap.hpp"
 #include "facet_chain.hpp"
-#include "facet_mesh.hpp"
 #include "grid_broad_phase.hpp"
-#include "triangle_crossing.hpp"
+#include "pair_budget.hpp"
+#include "world_facet.hpp"
 
 namespace foldkit::simulation {
 
@@ -30,22 +27,13 @@ namespace {
 
 using geometry::CreasePattern;
 
-// FCL bounds a rotated object by the cube around its bounding sphere; a facet's own corners give a
-// much tighter box, which keeps the broad phase from pairing every neighbour of a folded sheet.
-class FacetObject : public fcl::CollisionObjectd {
- public:
-  using fcl::CollisionObjectd::CollisionObjectd;
-  void set_box(const fcl::AABBd& box) { aabb = box; }
-};
-
-struct Facet {
-  std::vector<Eigen::Vector3d> points;          // flat position (z = 0), the facet's own coordinates
-  std::vector<std::array<int, 3>> triangles;    // into points
-  std::vector<geometry::Tri2> flat;             // the triangles in the plane
-  std::unique_ptr<FacetObject> object;
-};
-
-enum Side : int { Below = -1, On = 0, Above = 1, Across = 2 };
+using detail::Facet;
+using detail::Side;
+using detail::Below;
+using detail::On;
+using detail::Above;
+using detail::Across;
+using detail::kDirectTrianglePairs;
 
 struct Memory {
   int side = On;      // last side seen other than On
@@ -60,6 +48,13 @@ struct PairState {
   Memory memory;
   int chain_begin = -1;  // into chain_pool; -1 until searched
   int chain_size = 0;
+  int apex = -1;         // the vertex every crease of the chain passes through, if any
+  // The pair's verdict holds until its chain's weighted travel exceeds spent_at + budget
+  // (detail::side_budget, straddle_budget); 0: test it at every check.
+  double budget = 0.0;
+  double spent_at = 0.0;
+  double deadline = 0.0;  // the pair is skipped while the global travel is below this
+  double lever_sum = 0.0;  // its chain's weights' sum
 };
 
 }  // namespace
@@ -78,6 +73,12 @@ struct CollisionWorld::Impl {
   std::vector<PairState> pair_states;
   std::vector<int> chain_pool;
   std::vector<int> chain_actors;  // beside chain_pool: the actor each step enters
+  std::vector<double> chain_weight;  // beside chain_pool: a step's lever (1 round an apex)
+  // How far the joints have turned over this motion's checks; a pair's chain, weighted by its
+  // levers, bounds by it how far its second facet moved in its first's coordinates.
+  detail::Travel travel;
+  std::vector<double> diameter;  // per actor: the largest distance between two of its points
+  std::size_t skipped = 0;       // pairs the last check skipped on their budget
   long sample = 0;
   std::vector<std::pair<int, int>> candidates;
   std::size_t mesh_tests = 0;
@@ -105,7 +106,7 @@ struct CollisionWorld::Impl {
   // held together by a few loops, and its placement by the tree is as good as any.
   static constexpr std::size_t kMaxVisited = 256;
 
-  Impl(const CreasePattern& p, const CollisionOptions& o) : pattern(&p), options(o) {
+  Impl(const CreasePattern& p, const CollisionOptions& o) : pattern(&p), options(o), travel(p.joints().size()) {
     tol = o.tolerance * p.diagonal();
     hinged.resize(p.actors().size());
     slots.resize(p.actors().size());
@@ -122,7 +123,7 @@ struct CollisionWorld::Impl {
     }
     hinged_pairs /= 2;
     facets.reserve(p.actors().size());
-    for (std::size_t a = 0; a < p.actors().size(); ++a) facets.push_back(make_facet(static_cast<int>(a)));
+    for (std::size_t a = 0; a < p.actors().size(); ++a) facets.push_back(detail::make_facet(p, static_cast<int>(a)));
     for (std::size_t j = 0; j < p.joints().size(); ++j) {
       const auto& joint = p.joints()[j];
       axes.push_back(geometry::joint_axis(p, static_cast<int>(j)));
@@ -130,6 +131,12 @@ struct CollisionWorld::Impl {
                        geometry::side_of(p, static_cast<int>(j), joint.actors[1])});
     }
     enter.resize(2 * p.joints().size());
+    for (const auto& f : facets) {
+      double d = 0.0;
+      for (const auto& x : f.points)
+        for (const auto& y : f.points) d = std::max(d, (x - y).norm());
+      diameter.push_back(d);
+    }
     turn_stamp.assign(p.joints().size(), -1);
     reach.resize(p.actors().size());
     reach_stamp.assign(p.actors().size(), -1);
@@ -137,21 +144,6 @@ struct CollisionWorld::Impl {
       for (auto& f : facets) manager.registerObject(f.object.get());
       manager.setup();
     }
-  }
-
-  Facet make_facet(int actor) const {
-    const detail::FacetMesh mesh = detail::facet_mesh(*pattern, actor);
-    Facet f;
-    f.points = mesh.points;
-    f.triangles = mesh.triangles;
-    for (const auto& t : mesh.triangles)
-      f.flat.push_back({pattern->vertices()[mesh.vertices[t[0]]], pattern->vertices()[mesh.vertices[t[1]]],
-                        pattern->vertices()[mesh.vertices[t[2]]]});
-    auto model = detail::fcl_model<fcl::OBBRSSd>(mesh);
-    model->computeLocalAABB();
-    f.object = std::make_unique<FacetObject>(model);
-    f.object->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(actor)));
-    return f;
   }
 
   // How far the given poses disagree across a crease: the two facets of each crease put its ends
@@ -241,15 +233,23 @@ struct CollisionWorld::Impl {
     return enter[step];
   }
 
+  // The pair's record. check() asks in (a, b) order, so a cursor walks a's list forward; a binary
+  // search per pair mispredicted its branches for a tenth of a check.
   PairState& pair(int a, int b) {
     auto& list = slots[a];
-    auto it = std::lower_bound(list.begin(), list.end(), std::make_pair(b, -1));
-    if (it == list.end() || it->first != b) {
-      it = list.insert(it, {b, static_cast<int>(pair_states.size())});
+    if (a != cursor_actor || cursor > list.size() || (cursor > 0 && list[cursor - 1].first >= b)) {
+      cursor_actor = a;
+      cursor = static_cast<std::size_t>(std::lower_bound(list.begin(), list.end(), std::make_pair(b, -1)) - list.begin());
+    }
+    while (cursor < list.size() && list[cursor].first < b) ++cursor;
+    if (cursor == list.size() || list[cursor].first != b) {
+      list.insert(list.begin() + static_cast<std::ptrdiff_t>(cursor), {b, static_cast<int>(pair_states.size())});
       pair_states.emplace_back();
     }
-    return pair_states[it->second];
+    return pair_states[list[cursor].second];
   }
+  int cursor_actor = -1;
+  std::size_t cursor = 0;
 
   struct Steps {
     const int* begin;
@@ -264,6 +264,12 @@ struct CollisionWorld::Impl {
       ps.chain_size = static_cast<int>(steps.size());
       chain_pool.insert(chain_pool.end(), steps.begin(), steps.end());
       for (int step : steps) chain_actors.push_back(step == kNoChain ? -1 : entered(step));
+      detail::Levers levers;
+      if (steps[0] != kNoChain) levers = detail::chain_levers(*pattern, steps, diameter);
+      levers.weights.resize(steps.size(), 0.0);
+      ps.apex = levers.apex;
+      ps.lever_sum = levers.sum;
+      chain_weight.insert(chain_weight.end(), levers.weights.begin(), levers.weights.end());
     }
     return {chain_pool.data() + ps.chain_begin, chain_actors.data() + ps.chain_begin, ps.chain_size};
   }
@@ -296,97 +302,94 @@ struct CollisionWorld::Impl {
   }
   // The actor a chain step enters.
   int entered(int step) const { return pattern->joints()[step >> 1].actors[step & 1]; }
-
-  // Where b lies relative to a's plane; `rel` maps b's coordinates into a's.
-  Side side_of(const Facet& b, const Eigen::Isometry3d& rel) const {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const auto& p : b.points) {
-      const double z = (rel * p).z();
-      lo = std::min(lo, z);
-      hi = std::max(hi, z);
-    }
-    if (lo >= -tol && hi <= tol) return On;
-    if (lo >= -tol) return Above;
-    if (hi <= tol) return Below;
-    return Across;
+  // The chain's weighted travel so far (see travel).
+  double spent(Steps steps) const {
+    double sum = 0.0;
+    const double* w = chain_weight.data() + (steps.begin - chain_pool.data());
+    for (int i = 0; i < steps.size; ++i) sum += w[i] * travel.joint(steps.begin[i] >> 1);
+    return sum;
   }
-
-  bool overlap_in_plane(const Facet& a, const Facet& b, const Eigen::Isometry3d& rel) const {
-    for (const auto& t : b.triangles) {
-      geometry::Tri2 shadow;
-      for (int k = 0; k < 3; ++k) shadow[k] = (rel * b.points[t[k]]).head<2>();
-      for (const auto& s : a.flat)
-        if (geometry::triangles_overlap(s, shadow, tol)) return true;
-    }
-    return false;
+  // Whether the pair's last verdict still holds: first by the deadline, then by its own chain,
+  // which moves the deadline on by what is left of the budget.
+  bool certified(PairState& ps, Steps steps) {
+    if (ps.budget <= 0.0) return false;
+    if (travel.global() < ps.deadline) return true;
+    const double left = ps.budget - (spent(steps) - ps.spent_at);
+    if (!(left > 0.0)) return false;
+    ps.deadline = travel.global() + left / ps.lever_sum;
+    return true;
   }
-
-  // The deepest crossing of a's and b's triangles, with b placed by `rel` in a's coordinates; its point
-  // in world coordinates by a's pose. Every crossing triangles_cross finds is one FCL reports (FCL
-  // reports touching pairs too: fcl#502), so both ways find the same crossings; for small facets
-  // (a Miura parallelogram is two triangles) every pair is tested directly, because FCL's
-  // collide() on two BVH models cost more in setting up its traversal than the triangle tests
-  // themselves (a quarter of a check at Miura 40×40).
+  // How far the pair may move before it must be tested again, given how it was found now.
+  void certify(int a, int b, PairState& ps, Steps steps, const Eigen::Isometry3d& rel, Side side) {
+    ps.budget = 0.0;
+    if (!options.certificates || steps.begin[0] == kNoChain || side == On) return;
+    Eigen::Vector3d apex;
+    detail::Motion motion{nullptr, tol};
+    if (ps.apex >= 0) {
+      apex = Eigen::Vector3d(pattern->vertices()[ps.apex].x(), pattern->vertices()[ps.apex].y(), 0.0);
+      motion.apex = &apex;
+    }
+    if (side == Across && facets[a].triangles.size() * facets[b].triangles.size() > kDirectTrianglePairs) return;
+    placed.clear();
+    for (const auto& p : facets[b].points) placed.push_back(rel * p);
+    const detail::PlacedPair pair{facets[a].points, facets[a].triangles, placed, facets[b].triangles, rel.linear().col(2)};
+    double budget = detail::pair_budget(pair, motion, side, a_heights, b_heights);
+    // Round-off in the heights and angles is far below this.
+    budget -= motion.apex ? 1e-12 : 1e-9 * tol;
+    if (budget <= 0.0) return;
+    ps.budget = budget;
+    ps.spent_at = spent(steps);
+    ps.deadline = travel.global() + budget / ps.lever_sum;
+  }
+  std::vector<Eigen::Vector3d> placed;  // certify's scratch
+  detail::Heights a_heights, b_heights;
+  // The deepest crossing of a's and b's triangles (detail::deepest_crossing), its point in world
+  // coordinates by a's pose.
   std::optional<Crossing> mesh_crossing(int a, int b, const Eigen::Isometry3d& rel, const std::vector<Eigen::Isometry3d>& poses) {
     ++mesh_tests;
-    const Facet& fa = facets[a];
-    const Facet& fb = facets[b];
-    const std::size_t most = fa.triangles.size() * fb.triangles.size();
-    std::optional<detail::TriangleCrossing> deepest;
-    auto judge = [&](std::size_t ta, std::size_t tb) {
-      detail::Tri3 x, y;
-      for (int k = 0; k < 3; ++k) {
-        x[k] = fa.points[fa.triangles[ta][k]];
-        y[k] = rel * fb.points[fb.triangles[tb][k]];
-      }
-      if (auto cut = detail::triangles_cross(x, y, tol); cut && (!deepest || cut->depth > deepest->depth)) deepest = cut;
-    };
-    if (most <= kDirectTrianglePairs) {
-      for (std::size_t ta = 0; ta < fa.triangles.size(); ++ta)
-        for (std::size_t tb = 0; tb < fb.triangles.size(); ++tb) judge(ta, tb);
-    } else {
-      fcl::CollisionRequestd request(most, true);
-      fcl::CollisionResultd result;
-      fcl::collide(fa.object->collisionGeometry().get(), fcl::Transform3d::Identity(), fb.object->collisionGeometry().get(),
-                   fcl::Transform3d(rel.matrix()), request, result);
-      for (std::size_t c = 0; c < result.numContacts(); ++c) {
-        const auto& contact = result.getContact(c);
-        const bool swapped = contact.o1 != fa.object->collisionGeometry().get();
-        judge(static_cast<std::size_t>(swapped ? contact.b2 : contact.b1), static_cast<std::size_t>(swapped ? contact.b1 : contact.b2));
-      }
-    }
+    const auto deepest = detail::deepest_crossing(facets[a], facets[b], rel, tol);
     if (!deepest) return std::nullopt;
     return Crossing{{a, b}, poses[a] * deepest->point, CrossingKind::Mesh, deepest->depth};
   }
-  // Most triangle pairs mesh_crossing tests one by one rather than through FCL's BVH.
-  static constexpr std::size_t kDirectTrianglePairs = 16;
 
   std::optional<Crossing> test(int a, int b, const std::vector<Eigen::Isometry3d>& poses) {
     PairState& ps = pair(a, b);
-    const Eigen::Isometry3d rel = relative(a, b, chain(a, b, ps), poses);
-    const Side side = side_of(facets[b], rel);
+    const Steps steps = chain(a, b, ps);
     Memory& m = ps.memory;
+    // Certified to be on the same side, crossing nothing, as at its last test (certify): its
+    // memory is what that test left, seen now.
+    if (certified(ps, steps)) {
+      m.sample = sample;
+      ++skipped;
+      return std::nullopt;
+    }
+    const Eigen::Isometry3d rel = relative(a, b, steps, poses);
+    const Side side = detail::side_of(facets[b], rel, tol);
     const bool seen_last = m.sample == sample - 1;
     const int before = seen_last ? m.side : On;
     m.sample = sample;
     if (side == Across) {
       m.side = On;
-      return mesh_crossing(a, b, rel, poses);
+      auto crossing = mesh_crossing(a, b, rel, poses);
+      if (!crossing) certify(a, b, ps, steps, rel, side);
+      return crossing;
     }
     if (side == On) {
       m.side = before;
       return std::nullopt;
     }
     m.side = side;
+    ps.budget = 0.0;
     // Wholly on one side of a's plane at the last check and wholly on the other now, without
     // passing across it in between: b went through a unless it went round a's edge.
-    if (before != On && before != side && overlap_in_plane(facets[a], facets[b], rel)) {
+    if (before != On && before != side && detail::overlap_in_plane(facets[a], facets[b], rel, tol)) {
       Eigen::Vector3d centre = Eigen::Vector3d::Zero();
       for (const auto& p : facets[b].points) centre += rel * p;
       centre /= static_cast<double>(facets[b].points.size());
       centre.z() = 0.0;
       return Crossing{{a, b}, poses[a] * centre, CrossingKind::Stacked};
     }
+    certify(a, b, ps, steps, rel, side);
     return std::nullopt;
   }
 
@@ -397,7 +400,9 @@ struct CollisionWorld::Impl {
     if (static_cast<std::size_t>(at.angles.size()) != pattern->joints().size())
       throw std::invalid_argument("CollisionWorld::check: state does not hold one angle per joint");
     mesh_tests = 0;
+    skipped = 0;
     start(at);
+    travel.advance(at.angles);
     place(poses);
     find_candidates();
     std::vector<Crossing> found;
@@ -443,12 +448,17 @@ std::optional<Crossing> CollisionWorld::mesh_crossing(int a, int b, const std::v
 }
 
 void CollisionWorld::reset() {
-  for (auto& state : impl_->pair_states) state.memory = Memory{};
+  for (auto& state : impl_->pair_states) {
+    state.memory = Memory{};
+    state.budget = 0.0;
+  }
+  impl_->travel.reset();
   impl_->sample = 0;
 }
 double CollisionWorld::tolerance() const { return impl_->tol; }
 std::size_t CollisionWorld::checked_pairs() const { return impl_->candidates.size(); }
 std::size_t CollisionWorld::mesh_tests() const { return impl_->mesh_tests; }
 std::size_t CollisionWorld::skipped_pairs() const { return impl_->hinged_pairs; }
+std::size_t CollisionWorld::certified_pairs() const { return impl_->skipped; }
 
 }  // namespace foldkit::simulation

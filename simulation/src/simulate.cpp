@@ -11,6 +11,7 @@
 #include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/geometry/projection.hpp"
+#include "foldkit/simulation/corner_motion.hpp"
 
 namespace foldkit::simulation {
 
@@ -70,7 +71,7 @@ std::string seconds(double t) {
 class Replay {
  public:
   Replay(const geometry::CreasePattern& pattern, const SimulationOptions& options)
-      : pattern_(pattern), options_(options), tree_(geometry::make_tree(pattern)), closure_(pattern) {
+      : pattern_(pattern), options_(options), tree_(geometry::make_tree(pattern)), closure_(pattern), motion_(pattern) {
     // Slivers (sector angles of 1e-6 rad) would ask for millions of checks per step; below a
     // thousandth of the sheet's size the bound stops shrinking (docs/SIMULATION.md).
     sweep_ = options.max_sweep * std::max(smallest_feature(pattern), 1e-3 * pattern.diagonal());
@@ -78,14 +79,6 @@ class Replay {
       CollisionOptions c = options.collision;
       c.margin = sweep_;
       world_.emplace(pattern, c);
-    }
-    for (const auto& actor : pattern.actors()) {
-      std::vector<Eigen::Vector3d> corners;
-      std::set<int> seen;
-      for (const auto& t : actor.triangles)
-        for (int v : t.v)
-          if (seen.insert(v).second) corners.emplace_back(pattern.vertices()[v].x(), pattern.vertices()[v].y(), 0.0);
-      corners_.push_back(std::move(corners));
     }
     report_.model = options.model;
     report_.time_step = options.time_step;
@@ -144,13 +137,11 @@ class Replay {
   }
 
   // Checks the states between `before` and `after` (a step of h seconds from t), in sub-steps
-  // short enough that no facet corner moves more than the sweep bound and no joint more than
-  // max_step_angle between two checks.
+  // short enough that no facet corner moves more than the sweep bound (up to a rigid motion of
+  // the whole sheet: CornerMotion) and no joint more than max_step_angle between two checks.
   void sweep(const geometry::FoldState& before, const geometry::FoldState& after, double t, double h, int event) {
     std::vector<Eigen::Isometry3d> end = geometry::facet_poses(pattern_, tree_, after);
-    double moved = 0.0;
-    for (std::size_t a = 0; a < corners_.size(); ++a)
-      for (const auto& p : corners_[a]) moved = std::max(moved, (end[a] * p - poses_[a] * p).norm());
+    const double moved = motion_.largest(poses_, end);
     const double turned = (after.angles - before.angles).cwiseAbs().maxCoeff();
     const double parts = std::max({1.0, std::ceil(moved / sweep_), std::ceil(turned / options_.max_step_angle)});
     const int n = static_cast<int>(std::min(parts, 1e6));
@@ -230,7 +221,7 @@ class Replay {
   geometry::KinematicTree tree_;
   geometry::ClosureSystem closure_;
   std::optional<CollisionWorld> world_;
-  std::vector<std::vector<Eigen::Vector3d>> corners_;
+  CornerMotion motion_;
   std::vector<Eigen::Isometry3d> poses_;
   double sweep_ = 0.0;
   double time_ = 0.0;
