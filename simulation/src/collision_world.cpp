@@ -336,7 +336,7 @@ struct CollisionWorld::Impl {
     double budget = detail::pair_budget(pair, motion, side, a_heights, b_heights);
     // Round-off in the heights and angles is far below this.
     budget -= motion.apex ? 1e-12 : 1e-9 * tol;
-    if (budget <= 0.0) return;
+    if (budget <= 0.0 || !(ps.lever_sum > 0.0)) return;
     ps.budget = budget;
     ps.spent_at = spent(steps);
     ps.deadline = travel.global() + budget / ps.lever_sum;
