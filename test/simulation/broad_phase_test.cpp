@@ -7,11 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "../../simulation/src/grid_broad_phase.hpp"
-#include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/geometry/kinematics.hpp"
-#include "foldkit/geometry/projection.hpp"
 #include "foldkit/simulation/collision_world.hpp"
+#include "closed_miura_path.hpp"
 
 namespace foldkit::simulation {
 namespace {
@@ -112,18 +111,7 @@ TEST(GridBroadPhase, SameChecksAsTheTreeOnRandomMotions) {
 // stack: the broad phase keeps many pairs and the memory of sides is exercised.
 TEST(GridBroadPhase, SameChecksAsTheTreeOnAClosedFold) {
   const CreasePattern miura = build_or_throw(gen::miura(12, 12));
-  const geometry::ClosureSystem sys(miura);
-  std::vector<FoldState> path;
-  FoldState s = FoldState::flat(miura);
-  for (double m = 0.1; m <= 3.05; m += 0.05) {
-    FoldState rough = s;
-    for (std::size_t j = 0; j < miura.joints().size(); ++j)
-      rough.angles[static_cast<Eigen::Index>(j)] = miura.joints()[j].assignment == geometry::Assignment::Mountain ? m : -m;
-    const auto r = geometry::project(sys, rough);
-    ASSERT_TRUE(r.status.ok()) << m;
-    s = r.state;
-    path.push_back(s);
-  }
+  const auto path = testing::closed_miura_path(miura, 0.1, 0.05, 3.05);
   std::size_t crossings = 0;
   expect_same_worlds_along(miura, path, &crossings);
   EXPECT_EQ(crossings, 0u);

@@ -9,11 +9,10 @@
 
 #include "../../simulation/src/pair_budget.hpp"
 #include "../../simulation/src/triangle_crossing.hpp"
-#include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/geometry/kinematics.hpp"
-#include "foldkit/geometry/projection.hpp"
 #include "foldkit/simulation/collision_world.hpp"
+#include "closed_miura_path.hpp"
 
 namespace foldkit::simulation {
 namespace {
@@ -82,17 +81,7 @@ TEST(CertifiedPairs, SameChecksOnRandomMotionsThatCross) {
 TEST(CertifiedPairs, SameChecksOnClosedFoldsAndAGenuineCrossing) {
   std::size_t crossings = 0, skipped = 0;
   const CreasePattern miura = build_or_throw(gen::miura(12, 12));
-  const geometry::ClosureSystem sys(miura);
-  std::vector<FoldState> path;
-  FoldState s = FoldState::flat(miura);
-  for (double m = 0.02; m <= 3.1; m += 0.02) {
-    FoldState rough = s;
-    for (std::size_t j = 0; j < miura.joints().size(); ++j)
-      rough.angles[static_cast<Eigen::Index>(j)] = miura.joints()[j].assignment == geometry::Assignment::Mountain ? m : -m;
-    const auto r = geometry::project(sys, rough);
-    ASSERT_TRUE(r.status.ok()) << m;
-    path.push_back(s = r.state);
-  }
+  const auto path = testing::closed_miura_path(miura, 0.02, 0.02, 3.1);
   skipped += expect_same_checks(miura, path, &crossings);
   EXPECT_EQ(crossings, 0u);
   const CreasePattern waterbomb = build_or_throw(gen::waterbomb(6, 6));
