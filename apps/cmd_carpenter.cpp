@@ -109,6 +109,7 @@ int run_planar(const CarpenterArgs& opt) {
                      {"lp_solves", r.lp_solves},
                      {"window_lp_solves", r.window_lp_solves},
                      {"carried_steps", r.carried_steps},
+                     {"held_steps", r.held_steps},
                      {"method", opt.method},
                      {"seconds", r.seconds},
                      {"time", r.seconds},  // deprecated: the name of `seconds` before issue 37

@@ -27,20 +27,6 @@ constexpr int kFirstReach = 2;
 constexpr int kMinRows = 64;
 constexpr double kRowShare = 1.0;
 
-// Velocities of an open chain whose joints turn at `speed` (per vertex), bar 0 fixed: bar a turns
-// at ω_a = Σ_{k ≤ a} speed_k, and v_{a+1} = v_a + ω_a·J(p_{a+1} − p_a).
-std::vector<Vec> velocities(const std::vector<Vec>& p, const std::vector<double>& speed) {
-  const int m = static_cast<int>(p.size());
-  std::vector<Vec> v(p.size(), Vec::Zero());
-  double omega = 0.0;
-  for (int a = 0; a + 1 < m; ++a) {
-    if (a > 0) omega += speed[a];
-    const Vec d = p[a + 1] - p[a];
-    v[a + 1] = v[a] + omega * Vec(-d.y(), d.x());
-  }
-  return v;
-}
-
 // The smallest weighted rate over all pairs and the pairs below `floor`.
 struct Weak {
   double rate_min = struts::kRateCap;
@@ -126,7 +112,7 @@ CarriedVelocity carried_velocity(const std::vector<Vec>& p, std::vector<double> 
   const StrutModel model(p, false);
   const int m = model.vertices();
   CarriedVelocity out;
-  std::vector<Vec> v = velocities(p, speed);
+  std::vector<Vec> v = open_chain_velocities(p, speed);
   Weak weak = weak_pairs(model, p, v, speed, floor);
   std::set<std::pair<int, int>> rows;
   int reach = kFirstReach;
@@ -159,7 +145,7 @@ CarriedVelocity carried_velocity(const std::vector<Vec>& p, std::vector<double> 
       if (std::count(in.begin(), in.end(), 1) == joints) return out;
     }
     speed = std::move(trial);
-    v = velocities(p, speed);
+    v = open_chain_velocities(p, speed);
     weak = weak_pairs(model, p, v, speed, floor);
   }
   if (!weak.pairs.empty()) return out;

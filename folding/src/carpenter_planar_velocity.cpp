@@ -75,8 +75,12 @@ struct Solved {
 // Struts found violated are added to the same Clp model, which re-solves from its last basis.
 class StepLp {
  public:
-  StepLp(const StrutModel& model, const std::vector<Vec>& p, const std::vector<StrutModel::Row>& rows)
-      : m_(model.vertices()), joint_column_(static_cast<std::size_t>(model.vertices()), -1), lp_(build(model, p, rows)) {}
+  StepLp(const StrutModel& model, const std::vector<Vec>& p, const std::vector<StrutModel::Row>& rows,
+         const RigidEnds& rigid)
+      : m_(model.vertices()),
+        joint_column_(static_cast<std::size_t>(model.vertices()), -1),
+        rigid_(rigid),
+        lp_(build(model, p, rows)) {}
 
   void add_strut(const StrutModel::Row& r) { lp_.add_row(strut_row(r), 1.0, kInf); }
   int size() const { return lp_.rows() + lp_.columns(); }  // rows + columns
@@ -170,8 +174,9 @@ class StepLp {
   std::vector<int>& joint_column = joint_column_;
   for (int k = 0; k < m; ++k)
     if (model.is_joint(k)) {
-      joint_column[k] = lp.add_column(0.0, kSpeedBox, 1.0);
-      lp.add_column(0.0, kSpeedBox, 1.0);
+      const double bound = rigid_.holds_joint(k, m) ? 0.0 : kSpeedBox;  // a held joint keeps its angle
+      joint_column[k] = lp.add_column(0.0, bound, 1.0);
+      lp.add_column(0.0, bound, 1.0);
     }
   const int bars = model.closed() ? m : m - 1;
   for (int a = 0; a < bars; ++a) {
@@ -203,21 +208,34 @@ class StepLp {
 
   int m_;
   std::vector<int> joint_column_;
+  RigidEnds rigid_;
   IncrementalLp lp_;
 };
 
 }  // namespace
 
+std::vector<Vec> open_chain_velocities(const std::vector<Vec>& p, const std::vector<double>& speed) {
+  const int m = static_cast<int>(p.size());
+  std::vector<Vec> v(p.size(), Vec::Zero());
+  double omega = 0.0;
+  for (int a = 0; a + 1 < m; ++a) {
+    if (a > 0) omega += speed[a];
+    const Vec d = p[a + 1] - p[a];
+    v[a + 1] = v[a] + omega * Vec(-d.y(), d.x());
+  }
+  return v;
+}
+
 ExpansiveVelocity expansive_velocity(const std::vector<Vec>& p, bool closed, const std::vector<std::pair<int, int>>& seed,
                                      double near_radius, bool all_struts, const std::vector<int>* key,
-                                     BasisMemo* memo) {
+                                     BasisMemo* memo, const RigidEnds& rigid) {
   const StrutModel model(p, closed);
   const int m = model.vertices();
   std::vector<StrutModel::Row> rows;
   std::unordered_set<std::int64_t> present;
   auto add = [&](int a, int b) {
     if (a > b) std::swap(a, b);
-    if (a < 0 || b >= m || a == b || model.is_bar(a, b)) return;
+    if (a < 0 || b >= m || a == b || model.is_bar(a, b) || rigid.holds_pair(a, b, m)) return;
     if (present.insert(pair_key(a, b, m)).second) rows.push_back(model.row(a, b));
   };
   if (all_struts) {
@@ -229,7 +247,7 @@ ExpansiveVelocity expansive_velocity(const std::vector<Vec>& p, bool closed, con
   }
 
   ExpansiveVelocity out;
-  auto lp = std::make_unique<StepLp>(model, p, rows);
+  auto lp = std::make_unique<StepLp>(model, p, rows, rigid);
   // Last step's optimal basis, on points moved a little, is nearly primal feasible and nearly
   // dual feasible; the primal simplex repairs it in fewer iterations than the dual (29 against
   // 37 per LP, 3.3 → 2.3 ms, on a 400-link chain). Rows added by constraint generation leave a
@@ -245,16 +263,20 @@ ExpansiveVelocity expansive_velocity(const std::vector<Vec>& p, bool closed, con
     round_cap = 2 * lp->size();
   }
   for (;;) {
-    Solved s = lp->solve(round_method, round_cap);
+    // A probe's every round is capped too: its failure only means another hold is tried.
+    Solved s = lp->solve(round_method, rigid.probe ? 2 * lp->size() : round_cap);
     round_method = IncrementalLp::Method::Dual;
     round_cap = 0;
-    if (s.status != LpSolution::Status::Optimal) {
+    if (s.status != LpSolution::Status::Optimal && !rigid.probe) {
       // Clp has called LPs of this shape infeasible or unbounded from a warm basis, and now and
       // then from scratch too: a fresh dual, then a fresh primal simplex decide. The model that
-      // solved carries on (later struts, the basis remembered for the next step).
+      // solved carries on (later struts, the basis remembered for the next step). The fresh
+      // primal stops, as the warm one, after twice the LP's size in iterations: on a double
+      // spiral of 2 × 90 points (issue 36) it cycled for over ten minutes after the dual had
+      // called the LP infeasible in 999 iterations.
       for (const auto method : {IncrementalLp::Method::Dual, IncrementalLp::Method::Primal}) {
-        auto fresh = std::make_unique<StepLp>(model, p, rows);
-        s = fresh->solve(method);
+        auto fresh = std::make_unique<StepLp>(model, p, rows, rigid);
+        s = fresh->solve(method, method == IncrementalLp::Method::Primal ? 2 * fresh->size() : 0);
         if (s.status == LpSolution::Status::Optimal) {
           lp = std::move(fresh);
           break;
@@ -267,11 +289,19 @@ ExpansiveVelocity expansive_velocity(const std::vector<Vec>& p, bool closed, con
       out.status = to_string(s.status);
       return out;
     }
+    // Held ends: the field is rebuilt from the joint speeds, so that a held body moves exactly
+    // rigidly (the LP's own velocities carry its tolerances).
+    if (rigid.any()) {
+      for (int k = 0; k < m; ++k)
+        if (rigid.holds_joint(k, m)) s.joint_speed[k] = 0.0;
+      s.v = open_chain_velocities(p, s.joint_speed);
+    }
     // Every pair's weighted rate, from the solution itself: a strut the LP has not seen, or one
     // its tolerances let slip, shows here.
     double rate_min = kRateCap;
     std::vector<std::pair<double, std::pair<int, int>>> violated;
     auto check = [&](int a, int b, double g) {
+      if (rigid.holds_pair(a, b, m)) return;  // distance fixed by construction
       rate_min = std::min(rate_min, g);
       if (g < 1.0 - 1e-6 && !present.count(pair_key(a, b, m))) violated.push_back({g, {a, b}});
     };

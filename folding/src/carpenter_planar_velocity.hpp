@@ -30,18 +30,38 @@ struct BasisMemo {
   bool valid = false;
 };
 
+// Ends of an open chain held rigid (issue 36's spirals): the first `prefix` vertices move as
+// one body with bar 0, and so do the last `suffix` ones; their joints keep their angles and pairs
+// inside one such body keep their distance, so they get no strut. Fewer than 3 holds nothing.
+struct RigidEnds {
+  int prefix = 0;
+  int suffix = 0;
+  bool probe = false;  // a failed LP is not solved again from scratch (the caller tries other holds)
+  bool any() const { return prefix >= 3 || suffix >= 3; }
+  // Joint k (a vertex) is held.
+  bool holds_joint(int k, int m) const { return (prefix >= 3 && k < prefix - 1) || (suffix >= 3 && k > m - suffix); }
+  // Pair (a < b) lies inside one held body.
+  bool holds_pair(int a, int b, int m) const { return (prefix >= 3 && b < prefix) || (suffix >= 3 && a >= m - suffix); }
+};
+
 // Minimise Σ|θ̇| over the joints subject to bars (v_{a+1} − v_a)·(p_{a+1} − p_a) = 0 (and the
 // closing bar when `closed`), bar 0 pinned, and w_ab·(v_b − v_a)·(p_b − p_a) ≥ 1 on every other
 // pair (positive weights, see the source). The LP starts with the struts in `seed` and the
 // pairs closer than `near_radius`, and adds the most violated of all pairs until none is
 // violated; `all_struts` puts every pair in at once. With `key` (input vertex of each vertex,
 // all below the memo's size) and `memo`, the first LP starts from the basis in `memo`, which is
-// then replaced by this step's. Not solved when no strictly expansive
+// then replaced by this step's. With `rigid`, held joints keep their angles, pairs inside a
+// held body get no strut and v is rebuilt from the joint speeds. Not solved when no strictly expansive
 // motion exists (straight / convex) or the LP fails.
 ExpansiveVelocity expansive_velocity(const std::vector<Eigen::Vector2d>& p, bool closed,
                                      const std::vector<std::pair<int, int>>& seed, double near_radius,
                                      bool all_struts, const std::vector<int>* key = nullptr,
-                                     BasisMemo* memo = nullptr);
+                                     BasisMemo* memo = nullptr, const RigidEnds& rigid = {});
+
+// Velocities of an open chain whose joints turn at `speed` (per vertex), bar 0 fixed: bar a turns
+// at ω_a = Σ_{k ≤ a} speed_k, and v_{a+1} = v_a + ω_a·J(p_{a+1} − p_a).
+std::vector<Eigen::Vector2d> open_chain_velocities(const std::vector<Eigen::Vector2d>& p,
+                                                   const std::vector<double>& speed);
 
 // A field carried over from the last step (CarpenterPlanarMethod::CarriedField), mended.
 struct CarriedVelocity {

@@ -165,6 +165,7 @@ void bind_carpenter(py::module_& m) {
       .def_readonly("lp_solves", &R::lp_solves, "LPs solved (window LPs included).")
       .def_readonly("window_lp_solves", &R::window_lp_solves, "Window LPs that mended a carried field (method 'carried').")
       .def_readonly("carried_steps", &R::carried_steps, "Steps on a carried, perhaps mended, field (method 'carried').")
+      .def_readonly("held_steps", &R::held_steps, "Steps with part of an open chain held rigid (a spiral's slow ends; CARPENTER.md).")
       .def_readonly("max_struts", &R::max_struts, "Most strut rows any LP held.")
       .def_readonly("seconds", &R::seconds, "Wall-clock seconds of the run.")
       .def_readonly("max_length_error", &R::max_length_error, "Largest bar-length change over the frames.")

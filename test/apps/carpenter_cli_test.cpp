@@ -166,6 +166,24 @@ TEST(CarpenterCli, MethodOptionSelectsTheGlobalLpOrTheCarriedField) {
   EXPECT_EQ(foldkit({"carpenter", chain, "--method", "simplex"}).exit, 2);
 }
 
+// Issue 36: a simple 90-point spiral (test/data/carpenter_spiral90.txt) was refused by both methods
+// ("the expansive-motion LP failed at step 0 (infeasible)"); now it straightens, some steps with
+// the spiral's slow centre held rigid (`held_steps`).
+TEST(CarpenterCli, NinetyPointSpiralStraightensByBothMethods) {
+  const std::string chain = foldkit::test::data_path("carpenter_spiral90.txt");
+  for (const char* method : {"lp", "carried"}) {
+    SCOPED_TRACE(method);
+    const CliResult r = foldkit({"carpenter", chain, "--method", method, "--json", "-o", write_temp("spiral90.json", "")});
+    ASSERT_EQ(r.exit, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_TRUE(j["straight"].get<bool>());
+    EXPECT_GT(j["held_steps"].get<std::size_t>(), 0u);
+    EXPECT_LE(j["held_steps"].get<std::size_t>(), j["steps"].get<std::size_t>());
+    EXPECT_GE(j["min_distance_growth"].get<double>(), -1e-12);
+    EXPECT_LE(j["max_length_error"].get<double>(), 1e-9);
+  }
+}
+
 TEST(CarpenterCli, SingleVertexPmmlIsFlattenedOnTheSphere) {
   // A degree-4 vertex folded to a closed state (projected by foldkit project), then flattened.
   const std::string pattern = write_temp("v4.pmml", "");

@@ -14,52 +14,14 @@
 #include <vector>
 
 #include "carpenter_inputs.hpp"
+#include "carpenter_oracle.hpp"
 
 namespace {
 
 using namespace foldkit::folding;
 using Vec = Eigen::Vector2d;
-using foldkit::microbench::segment_gap;
-
-struct Oracle {
-  double length_error = 0.0;  // max |bar − input bar| / input bar
-  double vertex_growth = std::numeric_limits<double>::infinity();  // min d_new − d_old, every vertex pair
-  double bar_growth = std::numeric_limits<double>::infinity();     // the same, non-adjacent bars
-  double min_gap = std::numeric_limits<double>::infinity();        // smallest non-adjacent bar gap
-};
-
-// Non-adjacent bars a < b of an n-vertex chain (closed: bar n − 1 joins the last vertex to 0).
-template <typename F>
-void for_bar_pairs(std::size_t n, bool closed, F&& f) {
-  const std::size_t bars = closed ? n : n - 1;
-  for (std::size_t a = 0; a < bars; ++a)
-    for (std::size_t b = a + 2; b < bars; ++b)
-      if (!(closed && a == 0 && b == bars - 1)) f(a, b);
-}
-
-Oracle check_frames(const std::vector<Frame2>& frames, const Frame2& input, bool closed) {
-  Oracle o;
-  const std::size_t n = input.size(), bars = closed ? n : n - 1;
-  auto bar_gap = [&](const Frame2& p, std::size_t a, std::size_t b) {
-    return segment_gap(p[a], p[(a + 1) % n], p[b], p[(b + 1) % n]);
-  };
-  for (std::size_t f = 0; f < frames.size(); ++f) {
-    const Frame2& p = frames[f];
-    for (std::size_t b = 0; b < bars; ++b) {
-      const double l0 = (input[(b + 1) % n] - input[b]).norm();
-      o.length_error = std::max(o.length_error, std::abs((p[(b + 1) % n] - p[b]).norm() - l0) / l0);
-    }
-    for_bar_pairs(n, closed, [&](std::size_t a, std::size_t b) { o.min_gap = std::min(o.min_gap, bar_gap(p, a, b)); });
-    if (f == 0) continue;
-    const Frame2& q = frames[f - 1];
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = i + 1; j < n; ++j) o.vertex_growth = std::min(o.vertex_growth, (p[j] - p[i]).norm() - (q[j] - q[i]).norm());
-    for_bar_pairs(n, closed, [&](std::size_t a, std::size_t b) {
-      o.bar_growth = std::min(o.bar_growth, bar_gap(p, a, b) - bar_gap(q, a, b));
-    });
-  }
-  return o;
-}
+using foldkit::test::carpenter::check_frames;
+using foldkit::test::carpenter::Oracle;
 
 CarpenterPlanarResult run(const Frame2& input, bool closed, CarpenterPlanarMethod method, std::size_t stride = 1) {
   CarpenterPlanarOptions options;

@@ -275,3 +275,13 @@ def test_plan_experience_database_is_shared_with_the_cli(cli, cli_experience, tm
     with pytest.raises(foldkit.ParseError, match="m.db: not a foldkit experience database"):
         foldkit.plan(p, foldkit.fold(p, fraction=0.7).states[-1], experience=str(db))
     assert db.read_bytes() == b"not a database"
+
+
+def test_carpenter_holds_a_spirals_slow_end_as_the_cli_does(cli, data, tmp_path):
+    # The 90-point spiral: no LP over the whole chain solves in doubles, so part of it is
+    # held rigid for some steps (held_steps, the CLI's JSON key of the same name).
+    chain = data / "carpenter_spiral90.txt"
+    rc, expected, err = cli("carpenter", chain, "--method", "lp", "-o", tmp_path / "out.json")
+    assert rc == 0, err
+    r = foldkit.carpenter(foldkit.read_chain(str(chain)), method="lp")
+    assert r.status.ok and r.held_steps == expected["held_steps"] > 0 and r.steps == expected["steps"]

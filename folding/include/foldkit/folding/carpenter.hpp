@@ -89,6 +89,9 @@ struct CarpenterPlanarResult {
   std::size_t lp_solves = 0;   ///< LPs solved, every constraint-generation round counted
   std::size_t carried_steps = 0;  ///< steps taken on a carried (perhaps mended) field (CarriedField)
   std::size_t window_lp_solves = 0;  ///< of lp_solves, the small window LPs that mended a carried field
+  /// Steps whose field held one end of an open chain rigid because the LP over the whole chain
+  /// failed (spirals: the speeds it needs span more than doubles resolve; docs/CARPENTER.md)
+  std::size_t held_steps = 0;
   std::size_t max_struts = 0;  ///< most strut rows any LP held
   double seconds = 0.0;        ///< wall-clock time of the run
   /// Over every recorded frame: max |bar length − input length| (length units).
