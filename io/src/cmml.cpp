@@ -186,14 +186,19 @@ std::optional<geometry::FoldSequence> read_sliced(const Pull& pull, const std::s
     } else {
       body = body.substr(0, fold_end + 7);
     }
-    if (!plain_body(body)) return std::nullopt;
     // The slice keeps its lines: it starts on the line <CMML> or the last slice ended on.
-    const std::string piece = (first ? head : std::string()) + "<CMML>" + std::string(body) + "</CMML>";
-    try {
-      const detail::XmlInput in(piece, name, first ? 1 : line);
-      reading.read(in, in.root("CMML"));
-    } catch (const ParseError&) {
-      return std::nullopt;  // the whole file's reading says what is wrong, and where
+    // Foldkit's own folds are read without building an XML document (read_plain_folds: it accepts
+    // no markup that plain_body refuses); the first slice, which holds the title, and any slice
+    // out of that shape are read as XML.
+    if (first || !detail::read_plain_folds(body, line, reading.folds)) {
+      if (!plain_body(body)) return std::nullopt;
+      const std::string piece = (first ? head : std::string()) + "<CMML>" + std::string(body) + "</CMML>";
+      try {
+        const detail::XmlInput in(piece, name, first ? 1 : line);
+        reading.read(in, in.root("CMML"));
+      } catch (const ParseError&) {
+        return std::nullopt;  // the whole file's reading says what is wrong, and where
+      }
     }
     line += static_cast<int>(std::count(body.begin(), body.end(), '\n'));
     pending.consume(body.size());
@@ -282,11 +287,16 @@ geometry::FoldSequence read_cmml(const std::string& path) {
   return parse_cmml_whole(read_file(path), path);
 }
 
-void write_cmml_file(const std::string& path, const geometry::FoldSequence& sequence) {
-  detail::AtomicFile file(path);
-  emit_cmml(sequence, [&file](std::string_view piece) { file.write(piece); });
-  file.commit();
+PendingCmmlFile::PendingCmmlFile(const std::string& path, const geometry::FoldSequence& sequence)
+    : file_(std::make_unique<detail::AtomicFile>(path)) {
+  emit_cmml(sequence, [this](std::string_view piece) { file_->write(piece); });
 }
+
+PendingCmmlFile::~PendingCmmlFile() = default;
+
+void PendingCmmlFile::commit() { file_->commit(); }
+
+void write_cmml_file(const std::string& path, const geometry::FoldSequence& sequence) { PendingCmmlFile(path, sequence).commit(); }
 
 std::string write_cmml(const geometry::FoldSequence& sequence) {
   std::string text;

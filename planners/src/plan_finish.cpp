@@ -1,6 +1,7 @@
 #include "plan_finish.hpp"
 
 #include <algorithm>
+#include <future>
 #include <stdexcept>
 #include <utility>
 
@@ -27,6 +28,15 @@ PlanResult& finish_plan(const PlanSetup& setup, const PlanOptions& options, std:
     return result;
   }
   result.sequence = plan_sequence(setup, options, result.waypoints);
+  // Whoever reads the sequence alongside the replay is done before the result moves on (on every
+  // way out, exceptions included).
+  struct Wait {
+    std::future<void> reading;
+    ~Wait() {
+      if (reading.valid()) reading.wait();
+    }
+  } wait;
+  if (options.sequence_ready) wait.reading = options.sequence_ready(result.sequence);
   if (options.replay) {
     simulation::SimulationOptions so;
     so.collisions = options.collisions;
@@ -65,6 +75,7 @@ PlanResult& plan_via_flat(const PlanSetup& setup, const PlanOptions& options, Pl
   leg.experience.reset();  // each leg is another query (from flat); the way through flat is not stored
   leg.replay = false;
   leg.progress = nullptr;
+  leg.sequence_ready = nullptr;  // a leg's sequence is not the plan's
   const double left = std::max(0.0, options.time - result.seconds);
   leg.time = std::max(1e-3, 0.5 * left);
   // Out of time stays out of time; any other failure of a leg is no progress.

@@ -5,6 +5,7 @@
 // and Atlas found no plan between them in 5 s each, with collisions or without, while from flat
 // each is planned in milliseconds (docs/PLANNING.md, *Start anywhere*). The oracle of a plan is
 // the simulator's replay with collisions on, closure at every waypoint, and its ends.
+#include <future>
 #include <sstream>
 #include <string>
 
@@ -12,6 +13,7 @@
 
 #include "foldkit/folding/projected_folding.hpp"
 #include "foldkit/geometry/closure.hpp"
+#include "foldkit/io/cmml.hpp"
 #include "foldkit/io/fold_format.hpp"
 #include "foldkit/planners/plan.hpp"
 #include "foldkit/planners/plan_setup.hpp"
@@ -73,8 +75,24 @@ TEST(PlanViaFlat, FoldedStatesOnSheetsThatMeetOnlyAtFlat) {
   const PlanOptions req = starting_at(p, a);
   const FoldState goal = foldkit::geometry::end_state(p, b.sequence);
   EXPECT_FALSE(foldkit::planners::make_plan_setup(p, goal, req).continues_to_goal);
-  const PlanResult r = plan(p, goal, req);
+  // PlanOptions::sequence_ready: once, for the plan's own sequence (not the legs'), before the
+  // replay reports any progress.
+  PlanOptions watched = req;
+  int ready = 0;
+  bool replay_began = false, ready_before_replay = false;
+  foldkit::geometry::FoldSequence handed;
+  watched.progress = [&](const foldkit::geometry::Progress&) { replay_began = true; };
+  watched.sequence_ready = [&](const foldkit::geometry::FoldSequence& s) {
+    ++ready;
+    ready_before_replay = !replay_began;
+    // Read on another thread, as `foldkit plan` writes it: plan() waits for it.
+    return std::async(std::launch::async, [&handed, &s] { handed = s; });
+  };
+  const PlanResult r = plan(p, goal, watched);
   expect_valid_plan(sys, req, goal, r);
+  EXPECT_EQ(ready, 1);
+  EXPECT_TRUE(ready_before_replay);
+  EXPECT_EQ(foldkit::io::write_cmml(handed), foldkit::io::write_cmml(r.sequence));
   EXPECT_TRUE(r.via_flat);
   EXPECT_TRUE(r.fallback);
   EXPECT_EQ(r.space, "driving");

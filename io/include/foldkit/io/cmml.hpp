@@ -2,8 +2,12 @@
 /// @file
 /// CMML fold sequences (paper Table 2): reading and writing.
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 #include "foldkit/geometry/fold_sequence.hpp"
 
@@ -41,6 +45,32 @@ std::string write_cmml(const geometry::FoldSequence& sequence);
 void write_cmml_file(const std::string& path, const geometry::FoldSequence& sequence);
 
 namespace detail {
+class AtomicFile;
+}  // namespace detail
+
+/// write_cmml_file() in two steps, so that a file can be written while what decides whether to
+/// keep it still runs (`foldkit plan` writes its plan during the replay): the constructor writes
+/// the CMML text of `sequence` (the bytes of write_cmml()) to a temporary beside `path`, commit()
+/// puts it at `path`. Destroyed uncommitted, it removes the temporary and leaves `path` untouched.
+class PendingCmmlFile {
+ public:
+  /// Writes the temporary file.
+  /// @throws std::invalid_argument as write_cmml() does
+  /// @throws WriteError when the file cannot be written
+  PendingCmmlFile(const std::string& path, const geometry::FoldSequence& sequence);
+  /// Removes the temporary file unless commit() succeeded.
+  ~PendingCmmlFile();
+  PendingCmmlFile(const PendingCmmlFile&) = delete;             ///< one temporary, one owner
+  PendingCmmlFile& operator=(const PendingCmmlFile&) = delete;  ///< one temporary, one owner
+  /// Syncs the file to disk and renames it over `path`, as write_file_atomic() does; once.
+  /// @throws WriteError when that fails (the temporary is removed, an old file at `path` is untouched)
+  void commit();
+
+ private:
+  std::unique_ptr<detail::AtomicFile> file_;
+};
+
+namespace detail {
 
 /// parse_cmml() of a large file, a slice of about `slice_bytes` of <Fold> elements at a time, so
 /// that only one slice's XML document is in memory (parse_cmml uses it from 4 MB on). Empty for a
@@ -51,6 +81,18 @@ namespace detail {
 /// @param name         the file name of the lines
 /// @param slice_bytes  about how many bytes of <Fold> elements each slice holds
 std::optional<geometry::FoldSequence> parse_cmml_sliced(const std::string& text, const std::string& name, std::size_t slice_bytes);
+
+/// The <Fold> elements of `body`, part of a <CMML> element's content, read without an XML parser
+/// when it holds nothing else (white space between them, but no carriage return) and each is in
+/// the shape write_cmml() writes: <EventNumber>, <ID>, <FoldAngle>, <Velocity> in that order, no
+/// attribute, comment or entity, each text a number's characters only. Appended to `folds` with
+/// their event numbers and lines, exactly as parse_cmml() reads them, when every fold is in that
+/// shape and passes parse_cmml()'s checks; false, `folds` unchanged, when one is not (the XML
+/// reading then decides, and reports any error).
+/// @param body        the text, a sequence of <Fold> elements and white space
+/// @param first_line  the line of body's first byte in its file
+/// @param folds       where the folds read are appended
+bool read_plain_folds(std::string_view body, int first_line, std::vector<std::pair<int, geometry::FoldCommand>>& folds);
 
 }  // namespace detail
 

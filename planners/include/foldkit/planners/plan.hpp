@@ -2,6 +2,8 @@
 /// @file
 /// Motion planning between two closed fold states with OMPL: the space, the planner, and the
 /// path turned into a CMML sequence the simulator replays (docs/PLANNING.md).
+#include <functional>
+#include <future>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -112,6 +114,13 @@ struct PlanOptions {
   /// Silence OMPL's console messages (sets OMPL's log level to none, for the whole process).
   bool quiet = true;
   geometry::ProgressFn progress;  ///< the replay's progress (the planner itself runs for `time` at most)
+  /// Called once with the plan's sequence (what PlanResult::sequence will hold) as soon as it is
+  /// made, before the replay judges it, so that the caller can use it meanwhile: `foldkit plan`
+  /// writes its file on the other core, and keeps it only when the plan is accepted. The sequence
+  /// may be read from another thread until the future returned (when valid) is ready: plan()
+  /// waits for it once the replay has ended, before it returns. Not called when no closed path
+  /// was found.
+  std::function<std::future<void>(const geometry::FoldSequence&)> sequence_ready;
   /// Planning from experience (docs/PLANNING.md, "Planning from experience"): when set, the
   /// database file's bytes (empty: a new database) and its name for messages. Recall by the
   /// framework: Lightning's stored path whose ends are nearest to this query's, repaired
