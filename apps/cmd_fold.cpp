@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli_common.hpp"
+#include "pending_output.hpp"
 #include "progress_line.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/cmml.hpp"
@@ -92,8 +93,9 @@ void add_fold_options(CLI::App* app, FoldArgs& opt) {
   add_json(app, opt.json);
 }
 
-folding::ProjectedFoldingResult fold(const FoldArgs& opt, const geometry::CreasePattern& pattern) {
+folding::ProjectedFoldingResult fold(const FoldArgs& opt, const geometry::CreasePattern& pattern, PendingOutput& output) {
   folding::ProjectedFoldingOptions o;
+  o.sequence_ready = output.starter();  // the CMML is written while the replay runs
   if (!opt.velocity.empty()) {
     o.velocity = parse_velocity(pattern, opt.velocity);
     if (!(o.velocity.cwiseAbs().maxCoeff() > 0.0)) throw UsageError("--velocity: the desired velocity is zero on every crease");
@@ -158,13 +160,14 @@ int run_fold(const FoldArgs& opt) {
   if (!is_kind(opt.output, FileKind::Cmml)) throw UsageError("-o needs a .cmml (or .cmml.gz) file name, not '" + opt.output + "'");
   if (!(opt.fraction > 0.0)) throw UsageError("--fraction must be greater than 0");
   const geometry::CreasePattern pattern = load_pattern(opt.pattern).pattern;
-  const folding::ProjectedFoldingResult r = fold(opt, pattern);
+  PendingOutput output(opt.output);
+  const folding::ProjectedFoldingResult r = fold(opt, pattern, output);
   const bool reached = r.status.code == geometry::StatusCode::Success;
   const bool replay_ok = r.replay && r.replay->status.ok();
   print_summary(r);
   const bool write = replay_ok && (reached || opt.partial);
   if (write) {
-    io::write_cmml_file(opt.output, r.sequence);  // streamed: a large fold's text is never whole in memory
+    output.commit(r.sequence);  // written during the replay, or now (streamed either way)
     std::cerr << "wrote " << opt.output << '\n';
   }
   if (opt.json) print_json(fold_json(opt, r, write));

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "cli_common.hpp"
+#include "pending_output.hpp"
 #include "progress_line.hpp"
 #include "foldkit/geometry/closure_path.hpp"
 #include "foldkit/io/atomic_write.hpp"
@@ -148,14 +149,6 @@ void set_start_and_settings(const PlanArgs& opt, const geometry::CreasePattern& 
                                                            opt.experience_framework};
 }
 
-// The plan's CMML, written on the other core while the simulator replays the plan
-// (PlanOptions::sequence_ready), to be kept only when the replay accepts it.
-struct PendingOutput {
-  bool started = false;
-  std::unique_ptr<io::PendingCmmlFile> file;  // written, not yet at its path
-  std::exception_ptr error;                   // why it could not be written
-};
-
 int report(const PlanArgs& opt, const planners::PlanResult& r, PendingOutput& output) {
   std::cerr << (r.status.ok() ? "solved" : "no plan") << ": " << r.status.message << " (" << r.planner << " in " << r.space
             << ", " << r.seconds << " s, " << r.waypoints.size() << " waypoints, objective " << r.objective;
@@ -165,14 +158,7 @@ int report(const PlanArgs& opt, const planners::PlanResult& r, PendingOutput& ou
               << r.cost_history.back().second << " at " << r.cost_history.back().first << " s";
   std::cerr << ")\n";
   if (r.status.ok()) {
-    // Streamed: a Miura 100×100 plan is 0.6 GB of text. Its write errors surface here, where
-    // writing after the replay would have raised them.
-    if (!output.started)
-      io::write_cmml_file(opt.output, r.sequence);
-    else if (output.error)
-      std::rethrow_exception(output.error);
-    else
-      output.file->commit();
+    output.commit(r.sequence);  // written during the replay (PlanOptions::sequence_ready)
     std::cerr << "wrote " << opt.output << '\n';
   }
   if (r.experience && !r.experience->bytes.empty()) {
@@ -250,18 +236,8 @@ int run_plan(PlanArgs& opt) {
   set_start_and_settings(opt, pattern, options);
   options.params = params;
   planners::PlanResult r;
-  PendingOutput output;
-  // plan() waits for the writer before its result moves: the sequence is read in place, not copied.
-  options.sequence_ready = [&output, path = opt.output](const geometry::FoldSequence& sequence) {
-    output.started = true;
-    return std::async(std::launch::async, [&output, path, &sequence] {
-      try {
-        output.file = std::make_unique<io::PendingCmmlFile>(path, sequence);
-      } catch (...) {
-        output.error = std::current_exception();
-      }
-    });
-  };
+  PendingOutput output(opt.output);
+  options.sequence_ready = output.starter();
   try {
     ProgressLine progress("plan (replay)");
     options.progress = progress.callback();

@@ -449,6 +449,15 @@ ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, co
   }
   result.sequence = geometry::path_sequence(pattern, result.states, options.speed, pattern.title());
   if (options.replay && result.states.size() > 1) {
+    // Whoever reads the sequence alongside the replay is done before the result moves on (on
+    // every way out, exceptions included).
+    struct Wait {
+      std::future<void> reading;
+      ~Wait() {
+        if (reading.valid()) reading.wait();
+      }
+    } wait;
+    if (options.sequence_ready) wait.reading = options.sequence_ready(result.sequence);
     simulation::SimulationOptions so;
     so.collisions = options.collisions;
     so.progress = options.progress;

@@ -322,7 +322,8 @@ struct CollisionWorld::Impl {
   // How far the pair may move before it must be tested again, given how it was found now.
   void certify(int a, int b, PairState& ps, Steps steps, const Eigen::Isometry3d& rel, Side side) {
     ps.budget = 0.0;
-    if (!options.certificates || steps.begin[0] == kNoChain || side == On) return;
+    // A zero tolerance leaves round-off at a shared corner (1e-16) to decide: no budget is safe.
+    if (!options.certificates || !(tol > 0.0) || steps.begin[0] == kNoChain || side == On) return;
     Eigen::Vector3d apex;
     detail::Motion motion{nullptr, tol};
     if (ps.apex >= 0) {

@@ -88,7 +88,10 @@ void Travel::advance(const Eigen::VectorXd& angles) {
   if (last_.size() == angles.size()) {
     double most = 0.0;
     for (Eigen::Index i = 0; i < angles.size(); ++i) {
-      const double turn = std::abs(angles[i] - last_[i]);
+      double turn = std::abs(angles[i] - last_[i]);
+      // A state that is not finite (a spring that blew up) moved every joint without bound: no
+      // budget outlives it until reset().
+      if (!std::isfinite(turn)) turn = std::numeric_limits<double>::infinity();
       joint_[static_cast<std::size_t>(i)] += turn;
       most = std::max(most, turn);
     }

@@ -1,6 +1,7 @@
 #pragma once
 // How far a pair of facets may turn relative to each other before CollisionWorld's verdict on it
 // can change, so that the world can skip the pair until then. Private to foldkit::simulation.
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -57,7 +58,13 @@ class Travel {
   /// Adds the turns from the last state to `angles` (one per joint); the first state after
   /// construction or reset() is only remembered.
   void advance(const Eigen::VectorXd& angles);
-  void reset() { last_.resize(0); }                          ///< a new motion starts
+  /// A new motion starts: nothing turned yet (the sums start again, so that they neither grow
+  /// without bound over many motions nor keep a past infinite turn).
+  void reset() {
+    last_.resize(0);
+    std::fill(joint_.begin(), joint_.end(), 0.0);
+    global_ = 0.0;
+  }
   double joint(int j) const { return joint_[static_cast<std::size_t>(j)]; }  ///< joint j's travel
   double global() const { return global_; }                  ///< Σ of the largest turns
 

@@ -3,6 +3,8 @@
 /// Projected-velocity folding (Tachi's rigid-origami simulation): folding a crease pattern out of
 /// the flat sheet along a desired crease velocity, kept on the closure manifold
 /// (docs/PROJECTED_FOLDING.md).
+#include <functional>
+#include <future>
 #include <limits>
 #include <optional>
 #include <string>
@@ -81,6 +83,13 @@ struct ProjectedFoldingOptions {
   /// Called at every accepted state (steps so far, unit "steps", its loop error), then by the
   /// replay (simulation::SimulationOptions::progress).
   geometry::ProgressFn progress;
+  /// Called once with the CMML's sequence (what ProjectedFoldingResult::sequence will hold) before
+  /// the replay judges it, so that the caller can use it meanwhile (`foldkit fold` writes its file
+  /// on the other core, and keeps it only when the replay accepts it); as
+  /// planners::PlanOptions::sequence_ready: the sequence may be read from another thread until
+  /// the future returned (when valid) is ready, which fold_projected() waits for before it
+  /// returns. Called only when there is a replay.
+  std::function<std::future<void>(const geometry::FoldSequence&)> sequence_ready;
 };
 
 /// What fold_projected() found.
