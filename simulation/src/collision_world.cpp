@@ -50,7 +50,7 @@ struct PairState {
   int chain_size = 0;
   int apex = -1;         // the vertex every crease of the chain passes through, if any
   // The pair's verdict holds until its chain's weighted travel exceeds spent_at + budget
-  // (detail::side_budget, straddle_budget); 0: test it at every check.
+  // (detail::pair_budget); 0: test it at every check.
   double budget = 0.0;
   double spent_at = 0.0;
   double deadline = 0.0;  // the pair is skipped while the global travel is below this
