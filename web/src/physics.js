@@ -1,6 +1,6 @@
 // The physics switch's arguments and words: what the page's fields become as `simulate`'s
 // options (`--model dynamic`, `--gravity`, `--max-torque`, `--density`, `--fixed`, `--ground`,
-// `--scale`, and the solver's
+// `--scale`, `--drive`, and the solver's
 // `--solver`, `--iterations`, `--time-step`, `--projection-interval`; docs/SIMULATION.md "Dynamic
 // simulation"), and what a physical run's stalls say. Pure, for node's tests.
 
@@ -22,6 +22,15 @@ export const SOLVERS = {
   'direct-10ms': { solver: 'direct', 'time-step': 0.01 },
   fast: { solver: 'iterative', iterations: 20, 'time-step': 0.01, 'projection-interval': 0.01 },
 };
+
+/**
+ * What drives an event's joints, as `simulate --drive` names it: *motor*, a torque-limited motor
+ * at the CMML's speed (`--max-torque`, a joint's own <MaxTorque>); *spring*, each crease's torsion
+ * spring towards the event's angle, −k(θ − θ*) − c·θ̇ with the PMML's SpringConst k (N·m/rad)
+ * and DampConst c (N·m·s/rad), which the joint panel edits (docs/SIMULATION.md, "Dynamic
+ * simulation"). The first is the default.
+ */
+export const DRIVES = ['motor', 'spring'];
 
 // A field's positive number, or null.
 function positive(text) {
@@ -55,10 +64,10 @@ export function physicsDefaults(physics = {}) {
  * `fixed`: the actor held in place, an actor ID or "none" (empty: not sent, the pattern's
  * <FixedActor> or the first actor); `ground`: a ground plane's height in metres (empty: none);
  * `scale`: metres per pattern unit, positive (empty: not sent, 1); `solver`: a key of SOLVERS
- * (default exact).
+ * (default exact); `drive`: one of DRIVES (default motor), always sent.
  */
-export function physicsOptions({ gravity, torque, density = '1', fixed = '', ground = '', scale = '', solver = 'exact' }) {
-  const options = { model: PHYSICS_MODEL };
+export function physicsOptions({ gravity, torque, density = '1', fixed = '', ground = '', scale = '', solver = 'exact', drive = 'motor' }) {
+  const options = { model: PHYSICS_MODEL, drive };
   const g = gravity.trim();
   if (g) {
     const parts = g.split(/[\s,]+/);
@@ -95,6 +104,7 @@ export function physicsOptions({ gravity, torque, density = '1', fixed = '', gro
   }
   if (!Object.hasOwn(SOLVERS, solver))
     return { error: `solver: choose one of ${Object.keys(SOLVERS).join(', ')}, not "${solver}"` };
+  if (!DRIVES.includes(drive)) return { error: `drive: choose one of ${DRIVES.join(', ')}, not "${drive}"` };
   return { options: { ...options, ...SOLVERS[solver] } };
 }
 

@@ -1,6 +1,7 @@
 // The run panel's physics switch beside Simulate: kinematic (foldkit's fast referee) or physics
 // (`simulate --model dynamic`: masses, gravity, torque-limited motors; the sheet's density, the
-// scale, the fixed actor, a ground, the start state and the solver, as physics.js's SOLVERS; the
+// scale, the fixed actor, a ground, the start state, motors or springs (physics.js's DRIVES) and
+// the solver, as physics.js's SOLVERS; the
 // pattern's own density, gravity and fixed actor are the fields' defaults). After a physical run the
 // page shows its verdict, the selected joints' torque against time and the stalls on the
 // timeline; the numbers are foldkit's (`--json` and the series it wrote, NAME-series.json).
@@ -21,7 +22,7 @@ export function simulateOptions() {
   if (!physicsOn()) return ticked ? {} : { 'no-collision': true };
   const { options, error } = physicsOptions({ gravity: $('gravity').value, torque: $('max-torque').value,
     density: $('density').value, fixed: $('fixed-actor').value, ground: $('ground').value, scale: $('physics-scale').value,
-    solver: $('physics-solver').value });
+    solver: $('physics-solver').value, drive: $('physics-drive').value });
   if (error) {
     log(error);
     return null;

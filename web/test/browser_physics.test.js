@@ -181,6 +181,22 @@ test('the physics switch simulates a flap against gravity: its torque plotted, i
   assert.ok(gaps.every((g) => Math.abs(g - 0.01) < 1e-9), 'frames 10 ms apart');
   assert.ok(fast.series.time.length > 300, `${fast.series.time.length} frames over ${fast.result.duration} s`);
 
+  // The drive: motors by default; springs send --drive spring, and the page's run is the CLI's
+  // with it (the strip's crease a 1 N·m/rad spring: gravity holds the flap near flat, a stall).
+  assert.equal(await page.$eval('#physics-drive', (e) => e.value), 'motor', 'motors by default');
+  assert.deepEqual(await page.$$eval('#physics-drive option', (os) => os.map((o) => o.value)), ['motor', 'spring']);
+  await page.select('#physics-drive', 'spring');
+  await simulate(page);
+  const sprung = await page.evaluate(() => window.foldkit.simulation);
+  cli = cliRun(root, stalling, ['--density', '0.8', '--solver', 'iterative', '--iterations', '20', '--time-step', '0.01',
+    '--projection-interval', '0.01', '--drive', 'spring']);
+  assert.equal(sprung.result.drive, 'spring');
+  assert.equal(cli.exit, 3, 'a 1 N·m/rad spring does not lift the flap');
+  assert.equal(sprung.result.joints[0].angle, cli.result.joints[0].angle);
+  assert.deepEqual(sprung.result.stalls, cli.result.stalls);
+  assert.deepEqual(sprung.series.time, cli.series.time);
+  await page.select('#physics-drive', 'motor');
+
   // Back to kinematic: the same folds replayed as commanded; no torque, no stall marks.
   await page.select('#sim-model', 'kinematic');
   assert.equal(await page.$eval('#physics-fields', (e) => e.hidden), true);

@@ -9,7 +9,7 @@ import { mkdtempSync, writeFileSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { spawnSync } from 'node:child_process';
-import { physicsOptions, physicsDefaults, physicsVerdict, stallText, stallLabel, SOLVERS, DEFAULT_GRAVITY } from '../src/physics.js';
+import { physicsOptions, physicsDefaults, physicsVerdict, stallText, stallLabel, SOLVERS, DRIVES, DEFAULT_GRAVITY } from '../src/physics.js';
 import { plottedJoints, curvePoints, pathData, plotFrame, torquePlotSvg } from '../src/torque_plot.js';
 
 const cli = process.env.FOLDKIT_CLI;
@@ -50,14 +50,14 @@ test('the physics fields become simulate\'s options, or say what is wrong', () =
   const fast = { solver: 'iterative', iterations: 20, 'time-step': 0.01, 'projection-interval': 0.01 };
   assert.deepEqual(SOLVERS, { exact, 'direct-10ms': { solver: 'direct', 'time-step': 0.01 }, fast });
   assert.deepEqual(physicsOptions({ gravity: '0 0 -9.81', torque: '4', density: '1', solver: 'exact' }).options,
-    { model: 'dynamic', gravity: '0,0,-9.81', 'max-torque': 4, density: 1, ...exact });
+    { model: 'dynamic', drive: 'motor', gravity: '0,0,-9.81', 'max-torque': 4, density: 1, ...exact });
   assert.deepEqual(physicsOptions({ gravity: ' 1, -2.5,3e0 ', torque: '0.5', density: ' 0.08 ', solver: 'fast' }).options,
-    { model: 'dynamic', gravity: '1,-2.5,3', 'max-torque': 0.5, density: 0.08, ...fast });
+    { model: 'dynamic', drive: 'motor', gravity: '1,-2.5,3', 'max-torque': 0.5, density: 0.08, ...fast });
   assert.deepEqual(physicsOptions({ gravity: '', torque: '1', density: '2.5e-1', solver: 'fast' }).options,
-    { model: 'dynamic', 'max-torque': 1, density: 0.25, ...fast }, 'empty gravity: none');
+    { model: 'dynamic', drive: 'motor', 'max-torque': 1, density: 0.25, ...fast }, 'empty gravity: none');
   assert.deepEqual(physicsOptions({ gravity: '', torque: '1000', solver: 'direct-10ms' }).options,
-    { model: 'dynamic', 'max-torque': 1000, density: 1, solver: 'direct', 'time-step': 0.01 });
-  assert.deepEqual(physicsOptions({ gravity: '', torque: '1' }).options, { model: 'dynamic', 'max-torque': 1, density: 1, ...exact },
+    { model: 'dynamic', drive: 'motor', 'max-torque': 1000, density: 1, solver: 'direct', 'time-step': 0.01 });
+  assert.deepEqual(physicsOptions({ gravity: '', torque: '1' }).options, { model: 'dynamic', drive: 'motor', 'max-torque': 1, density: 1, ...exact },
     'the model\'s defaults: 1 kg/m², exact');
   for (const gravity of ['0 -9.81', '0 0 -9.81 1', 'down', '0 0 NaN', '0 0 Infinity'])
     assert.match(physicsOptions({ gravity, torque: '1' }).error, /^gravity: give three numbers X Y Z in m\/s²/, gravity);
@@ -68,6 +68,10 @@ test('the physics fields become simulate\'s options, or say what is wrong', () =
       `density: give a positive number of kg/m² (of sheet), not "${density.trim()}"`, density);
   for (const solver of ['', 'iterative', 'toString', '__proto__'])
     assert.equal(physicsOptions({ gravity: '', torque: '1', solver }).error, `solver: choose one of exact, direct-10ms, fast, not "${solver}"`, solver);
+  for (const drive of ['', 'motors', 'Spring', 'includes'])
+    assert.equal(physicsOptions({ gravity: '', torque: '1', drive }).error, `drive: choose one of motor, spring, not "${drive}"`, drive);
+  assert.deepEqual(DRIVES, ['motor', 'spring']);
+  assert.equal(physicsOptions({ gravity: '', torque: '1', drive: 'spring' }).options.drive, 'spring');
   // The first wrong field is the one named.
   assert.match(physicsOptions({ gravity: 'down', torque: '0', density: '0', solver: 'x' }).error, /^gravity/);
   assert.match(physicsOptions({ gravity: '', torque: '1', density: '0', solver: 'x' }).error, /^density/);
@@ -77,9 +81,9 @@ test('the fixed actor, ground and scale fields become --fixed, --ground and --sc
   const base = { gravity: '', torque: '1' };
   const exact = SOLVERS.exact;
   // Empty: not sent (the pattern's <FixedActor> or the first actor; no ground; scale 1).
-  assert.deepEqual(physicsOptions({ ...base, fixed: ' ', ground: '', scale: '' }).options, { model: 'dynamic', 'max-torque': 1, density: 1, ...exact });
+  assert.deepEqual(physicsOptions({ ...base, fixed: ' ', ground: '', scale: '' }).options, { model: 'dynamic', drive: 'motor', 'max-torque': 1, density: 1, ...exact });
   assert.deepEqual(physicsOptions({ ...base, fixed: ' 2 ', ground: '-0.25', scale: '0.5' }).options,
-    { model: 'dynamic', 'max-torque': 1, density: 1, fixed: '2', ground: -0.25, scale: 0.5, ...exact });
+    { model: 'dynamic', drive: 'motor', 'max-torque': 1, density: 1, fixed: '2', ground: -0.25, scale: 0.5, ...exact });
   assert.equal(physicsOptions({ ...base, fixed: 'None' }).options.fixed, 'none');
   assert.equal(physicsOptions({ ...base, fixed: '+7' }).options.fixed, '7');
   assert.equal(physicsOptions({ ...base, ground: '0' }).options.ground, 0);
@@ -94,7 +98,7 @@ test('the fixed actor, ground and scale fields become --fixed, --ground and --sc
   assert.deepEqual(physicsDefaults({ density: null, gravity: null, fixedActor: null }), { density: '1', gravity: DEFAULT_GRAVITY, fixed: '' });
   // … which the page then sends as the file says them.
   const d = physicsDefaults({ density: 0.08, gravity: [9.81, 0, -0.5], fixedActor: 2 });
-  assert.deepEqual(physicsOptions({ ...d, torque: '1' }).options, { model: 'dynamic', gravity: '9.81,0,-0.5', 'max-torque': 1, density: 0.08, fixed: '2', ...exact });
+  assert.deepEqual(physicsOptions({ ...d, torque: '1' }).options, { model: 'dynamic', drive: 'motor', gravity: '9.81,0,-0.5', 'max-torque': 1, density: 0.08, fixed: '2', ...exact });
 });
 
 test('the fixed actor and the scale change the torque a lift needs, as the page sends them', { skip: !cli && 'FOLDKIT_CLI not set' }, () => {
@@ -175,6 +179,43 @@ test('the 10 ms solver choices lift the flap as the exact one: the same final an
   const light = run('fast', 4, '0.8');
   assert.equal(light.exit, 0, light.result.message);
   assert.ok(light.result.joints[0].peak_torque > 0.8 * mgd && light.result.joints[0].peak_torque <= 4 + 1e-6);
+});
+
+test('the drive field: springs settle where k(θ − θ*) = m·g·d·cos θ, where a 1 N·m motor stalls at once', { skip: !cli && 'FOLDKIT_CLI not set' }, (t) => {
+  // The flap of flap(), its crease a spring k = 2·m·g·d, critically damped (I = 1/3 kg·m² for
+  // a unit square about its edge), pulled to −60° against gravity. The spring's equilibrium
+  // solves k(θ − θ*) = m·g·d·cos θ (Newton below, not foldkit's code); `simulate` reports it as a
+  // stall with the torque the spring has, k·|θ − θ*|, against what holding needs, m·g·d·cos θ.
+  const dir = mkdtempSync(join(tmpdir(), 'foldkit-physics-'));
+  const pmml = join(dir, 'flap.pmml');
+  const cmml = join(dir, 'lift.cmml');
+  assert.equal(spawnSync(cli, ['generate', 'strip', '--panels', '2', '-o', pmml]).status, 0);
+  const mgd = 9.81 * 0.5, k = 2 * mgd, c = 2 * Math.sqrt(k / 3);
+  const text = readFileSync(pmml, 'utf8');
+  assert.match(text, /<SpringConst>[^<]*<\/SpringConst>/);
+  writeFileSync(pmml, text.replace(/<SpringConst>[^<]*/, `<SpringConst>${k}`).replace(/<DampConst>[^<]*/, `<DampConst>${c}`));
+  writeFileSync(cmml, '<CMML><Title>lift</Title><Fold><EventNumber>1</EventNumber><ID>1</ID><FoldAngle>-60</FoldAngle><Velocity>30</Velocity></Fold></CMML>\n');
+  const run = (drive, gravity) => simulatePage(pmml, cmml, { gravity, torque: '1', solver: 'exact', drive });
+  const rad = Math.PI / 180, target = -60 * rad;
+  // θ < 0 lifts the flap; gravity pulls it back towards flat with m·g·d·cos θ.
+  let theta = target;
+  for (let i = 0; i < 50; ++i) theta -= (k * (theta - target) - mgd * Math.cos(theta)) / (k + mgd * Math.sin(theta));
+  const sprung = run('spring', '0 0 -9.81');
+  t.diagnostic(`spring settles at ${sprung.result.joints[0].angle}°, closed form ${theta / rad}°`);
+  assert.equal(sprung.exit, 3);
+  assert.equal(sprung.result.drive, 'spring');
+  assert.ok(Math.abs(sprung.result.joints[0].angle * rad - theta) < 2e-3, `${sprung.result.joints[0].angle}° against ${theta / rad}°`);
+  const stall = sprung.result.stalls[0];
+  assert.ok(Math.abs(stall.needed_torque - mgd * Math.cos(theta)) < 0.01 * mgd, `needs ${stall.needed_torque} N·m`);
+  assert.ok(Math.abs(stall.available_torque - k * (theta - target)) < 0.01 * mgd, `has ${stall.available_torque} N·m`);
+  // Without gravity the spring reaches its angle; a 1 N·m motor cannot lift the flap at all.
+  const free = run('spring', '');
+  assert.equal(free.exit, 0, free.result.message);
+  assert.ok(Math.abs(free.result.joints[0].angle + 60) * rad < 1e-3, `${free.result.joints[0].angle}°`);
+  const motor = run('motor', '0 0 -9.81');
+  assert.equal(motor.exit, 3);
+  assert.equal(motor.result.drive, 'motor');
+  assert.ok(Math.abs(motor.result.stalls[0].needed_torque - mgd) < 0.01 * mgd, `the motor needs ${motor.result.stalls[0].needed_torque} N·m`);
 });
 
 test('the fast solver folds a Miura-ori 4 × 4 by one motor as the exact one, loops closed', { skip: !cli && 'FOLDKIT_CLI not set' }, (t) => {
