@@ -10,6 +10,8 @@
 // thread), with each call wrapped: an exception stops at the wrapper, the call reports a fault,
 // ODE's scheduler releases its jobs as after any failed call, and step() rethrows the exception
 // once the step has returned. Nothing is lost, and worlds stepped on two threads share no list.
+// The wrapping relies on the implementation being self-threaded: `calls_` and `error_` are not
+// locked, so a pooled (multi-threaded) implementation in its place would need both guarded.
 #include <deque>
 #include <exception>
 
