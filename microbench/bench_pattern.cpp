@@ -1,5 +1,8 @@
 // Loading a crease pattern: what `foldkit info` does, and the overlap check inside it side by
-// side with the all-pairs check a plain implementation would run:
+// side with the all-pairs check a plain implementation would run; and reading the PMML text:
+//   BM_ParsePmml_Ours     — io::parse_pmml: foldkit's own shape read without an XML parser;
+//   BM_ParsePmml_Baseline — io::detail::parse_pmml_xml: tinyxml2 and XmlInput's checks, as every
+//                           PMML was read before (and any text out of that shape still is);
 //   BM_Overlap_Ours     — geometry::overlapping_pairs (Boost.Geometry R-tree, then exact tests);
 //   BM_Overlap_Baseline — the exact test on every pair of triangles.
 #include <benchmark/benchmark.h>
@@ -33,6 +36,20 @@ void BM_ParseAndBuildPmml(benchmark::State& state) {
   state.counters["actors"] = static_cast<double>(state.range(0) * state.range(0));
 }
 BENCHMARK(BM_ParseAndBuildPmml)->Arg(10)->Arg(20)->Arg(40)->Arg(100)->Unit(benchmark::kMillisecond);
+
+void BM_ParsePmml_Ours(benchmark::State& state) {
+  const std::string text = io::write_pmml(miura(state));
+  for (auto _ : state) benchmark::DoNotOptimize(io::parse_pmml(text, "miura.pmml"));
+  state.counters["MB"] = static_cast<double>(text.size()) / 1e6;
+}
+BENCHMARK(BM_ParsePmml_Ours)->Arg(40)->Arg(100)->Unit(benchmark::kMillisecond);
+
+void BM_ParsePmml_Baseline(benchmark::State& state) {
+  const std::string text = io::write_pmml(miura(state));
+  for (auto _ : state) benchmark::DoNotOptimize(io::detail::parse_pmml_xml(text, "miura.pmml"));
+  state.counters["MB"] = static_cast<double>(text.size()) / 1e6;
+}
+BENCHMARK(BM_ParsePmml_Baseline)->Arg(40)->Arg(100)->Unit(benchmark::kMillisecond);
 
 void BM_Overlap_Ours(benchmark::State& state) {
   const auto tris = triangles_of(miura(state));

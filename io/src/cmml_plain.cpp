@@ -10,50 +10,10 @@
 
 #include "foldkit/io/cmml.hpp"
 #include "foldkit/io/number_format.hpp"
+#include "plain_cursor.hpp"
 
 namespace foldkit::io::detail {
 namespace {
-
-// XML white space but the carriage return (whose line counting is left to the XML reader).
-bool space(char c) { return c == ' ' || c == '\t' || c == '\n'; }
-
-// The characters a number written by foldkit uses; nothing that could be markup, an entity or
-// text that is not ASCII.
-bool number_char(char c) { return (c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E'; }
-
-// A walk through a slice's text that counts its lines.
-class Cursor {
- public:
-  Cursor(std::string_view text, int line) : text_(text), line_(line) {}
-
-  bool done() const { return at_ == text_.size(); }
-  int line() const { return line_; }
-  void skip_space() {
-    for (; at_ < text_.size() && space(text_[at_]); ++at_)
-      if (text_[at_] == '\n') ++line_;
-  }
-  // Consumes `literal` when the text continues with it.
-  bool take(std::string_view literal) {
-    if (text_.compare(at_, literal.size(), literal) != 0) return false;
-    at_ += literal.size();
-    return true;
-  }
-  // <TAG>TOKEN</TAG>, white space before it: TOKEN (number characters only, not empty), or empty.
-  std::string_view leaf(std::string_view open, std::string_view close) {
-    skip_space();
-    if (!take(open)) return {};
-    const std::size_t begin = at_;
-    while (at_ < text_.size() && number_char(text_[at_])) ++at_;
-    const std::string_view token = text_.substr(begin, at_ - begin);
-    if (token.empty() || !take(close)) return {};
-    return token;
-  }
-
- private:
-  std::string_view text_;
-  std::size_t at_ = 0;
-  int line_;
-};
 
 // The one number of a token as XmlInput::numbers() reads it (the same parse_numbers); nothing
 // when it is not exactly one finite number.
@@ -65,7 +25,7 @@ bool one_number(std::string_view token, double& value) {
 }
 
 // One <Fold> at the cursor (after its white space) with the checks of cmml.cpp's read_fold().
-bool plain_fold(Cursor& in, std::pair<int, geometry::FoldCommand>& out) {
+bool plain_fold(PlainCursor& in, std::pair<int, geometry::FoldCommand>& out) {
   in.skip_space();
   out.second.line = in.line();
   if (!in.take("<Fold>")) return false;
@@ -89,7 +49,7 @@ bool plain_fold(Cursor& in, std::pair<int, geometry::FoldCommand>& out) {
 
 bool read_plain_folds(std::string_view body, int first_line, std::vector<std::pair<int, geometry::FoldCommand>>& folds) {
   const std::size_t before = folds.size();
-  Cursor in(body, first_line);
+  PlainCursor in(body, first_line);
   for (in.skip_space(); !in.done(); in.skip_space()) {
     std::pair<int, geometry::FoldCommand> fold;
     if (!plain_fold(in, fold)) {

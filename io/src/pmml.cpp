@@ -102,6 +102,12 @@ bool read_physics(const detail::XmlInput& in, const XMLElement& e, geometry::Phy
 }  // namespace
 
 geometry::PatternSpec parse_pmml(const std::string& text, const std::string& name) {
+  // foldkit's own files skip the XML document (pmml_plain.cpp: a third of `dof` at 100×100).
+  if (std::optional<geometry::PatternSpec> plain = detail::read_plain_pmml(text)) return std::move(*plain);
+  return detail::parse_pmml_xml(text, name);
+}
+
+geometry::PatternSpec detail::parse_pmml_xml(const std::string& text, const std::string& name) {
   detail::XmlInput in(text, name);
   const XMLElement& root = in.root("PMML");
   geometry::PatternSpec spec;

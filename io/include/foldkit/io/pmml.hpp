@@ -1,7 +1,9 @@
 #pragma once
 /// @file
 /// PMML crease patterns (paper Table 1): reading and writing.
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "foldkit/geometry/crease_pattern.hpp"
 #include "foldkit/geometry/pattern_spec.hpp"
@@ -39,5 +41,24 @@ geometry::CreasePattern read_pmml(const std::string& path, const geometry::Build
 std::string write_pmml(const geometry::PatternSpec& spec);
 /// The PMML text of `pattern` (its CreasePattern::to_spec(): vertex coordinates after merging).
 std::string write_pmml(const geometry::CreasePattern& pattern);
+
+namespace detail {
+
+/// The PMML `text` read without an XML parser, when it is in the shape write_pmml() writes: an
+/// optional `<?xml version="1.0" encoding="UTF-8"?>`, then `<PMML>` holding `<Title>`, the
+/// physics extensions, `<Actor>` (`<ID>` then `<Triangle>`s) and `<Joint>` (`<ID>`, `<Coords>`,
+/// `<ActorIDs>`, `<SpringConst>`, `<DampConst>`, then perhaps `<Assignment>` and `<MaxTorque>`)
+/// in any order; no attribute, comment, entity, carriage return or non-ASCII byte; white space
+/// between elements only; each number's text of number characters only; a one-line title. The
+/// spec, lines included, is then exactly parse_pmml_xml()'s; std::nullopt when the text is not
+/// in that shape or would be refused (the XML reading then decides and reports the error).
+std::optional<geometry::PatternSpec> read_plain_pmml(std::string_view text);
+
+/// parse_pmml() by its XML reading alone (tinyxml2 and the strict checks of XmlInput): what
+/// parse_pmml() does with any text read_plain_pmml() declines, and the oracle it is tested against.
+/// @throws ParseError as parse_pmml()
+geometry::PatternSpec parse_pmml_xml(const std::string& text, const std::string& name);
+
+}  // namespace detail
 
 }  // namespace foldkit::io
