@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <map>
+#include <optional>
 #include <unordered_map>
 
 namespace foldkit::geometry {
@@ -63,6 +64,25 @@ FoldSequence sequence_to(const CreasePattern& pattern, const FoldState& state, d
   return seq;
 }
 
+std::optional<FoldEvent> path_event(const CreasePattern& pattern, const FoldState& from, const FoldState& to, double max_speed,
+                                    int number) {
+  if (!(max_speed > 0.0) || !std::isfinite(max_speed))
+    throw std::invalid_argument("path_sequence: the speed must be positive and finite");
+  if (to.angles.size() != from.angles.size() || to.angles.size() != static_cast<Eigen::Index>(pattern.joints().size()))
+    throw std::invalid_argument("path_sequence: a waypoint does not hold one angle per joint");
+  const double longest = (to.angles - from.angles).cwiseAbs().maxCoeff();
+  if (!(longest > 0.0)) return std::nullopt;
+  const double duration = longest / max_speed;
+  FoldEvent event{number, {}};
+  for (std::size_t j = 0; j < pattern.joints().size(); ++j) {
+    const auto k = static_cast<Eigen::Index>(j);
+    const double change = std::abs(to.angles[k] - from.angles[k]);
+    // A joint that barely moves still needs a speed a CMML can hold (positive in degrees).
+    if (change > 0.0) event.folds.push_back({pattern.joints()[j].id, to.angles[k], std::max(change / duration, 1e-9), 0});
+  }
+  return event;
+}
+
 FoldSequence path_sequence(const CreasePattern& pattern, const std::vector<FoldState>& waypoints, double max_speed,
                            std::string title) {
   if (!(max_speed > 0.0) || !std::isfinite(max_speed))
@@ -70,18 +90,9 @@ FoldSequence path_sequence(const CreasePattern& pattern, const std::vector<FoldS
   FoldSequence seq{std::move(title), {}};
   FoldState at = FoldState::flat(pattern);
   for (const FoldState& next : waypoints) {
-    if (next.angles.size() != at.angles.size()) throw std::invalid_argument("path_sequence: a waypoint does not hold one angle per joint");
-    const double longest = (next.angles - at.angles).cwiseAbs().maxCoeff();
-    if (!(longest > 0.0)) continue;
-    const double duration = longest / max_speed;
-    FoldEvent event{static_cast<int>(seq.events.size()) + 1, {}};
-    for (std::size_t j = 0; j < pattern.joints().size(); ++j) {
-      const auto k = static_cast<Eigen::Index>(j);
-      const double change = std::abs(next.angles[k] - at.angles[k]);
-      // A joint that barely moves still needs a speed a CMML can hold (positive in degrees).
-      if (change > 0.0) event.folds.push_back({pattern.joints()[j].id, next.angles[k], std::max(change / duration, 1e-9), 0});
-    }
-    seq.events.push_back(std::move(event));
+    auto event = path_event(pattern, at, next, max_speed, static_cast<int>(seq.events.size()) + 1);
+    if (!event) continue;
+    seq.events.push_back(std::move(*event));
     at = next;
   }
   return seq;

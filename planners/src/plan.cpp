@@ -24,6 +24,7 @@
 #include "foldkit/statespaces/validity.hpp"
 #include "cost_history.hpp"
 #include "plan_finish.hpp"
+#include "replay_pipeline.hpp"
 
 namespace foldkit::planners {
 
@@ -133,14 +134,42 @@ PlanSetup make_plan_setup(const geometry::CreasePattern& pattern, const FoldStat
 }
 
 std::optional<std::vector<FoldState>> path_waypoints(const PlanSetup& setup, og::PathGeometric path, const PlanOptions& options,
-                                                     bool to_goal, std::string* why) {
-  const std::vector<FoldState> states = setup.plan_space->path_states(setup, std::move(path), options.waypoint_step);
-  std::vector<FoldState> full = setup.prefix;
-  full.insert(full.end(), states.begin() + (states.empty() ? 0 : 1), states.end());
-  if (to_goal && (full.size() < 2 || (full.back().angles - setup.goal.angles).cwiseAbs().maxCoeff() > 1e-6))
-    full.push_back(setup.goal);
-  auto dense = geometry::densify(*setup.system, full, options.waypoint_step);
-  if (!dense && why) *why = "the planned path jumps (interpolation left the manifold)";
+                                                     bool to_goal, std::string* why, const PlanSpace::StateSink& sink) {
+  // densify() of the whole list is that of each pair of neighbours joined (its projections and
+  // gap checks are per pair), so each pair is densified as its second state arrives.
+  std::vector<FoldState> dense;
+  std::size_t added = 0;  // states of the list before densifying
+  bool jumped = false;
+  const auto add = [&](const FoldState& s) {
+    ++added;
+    if (jumped) return;
+    if (dense.empty()) {
+      dense.push_back(s);
+      if (sink) sink(s);
+      return;
+    }
+    auto piece = geometry::densify(*setup.system, {dense.back(), s}, options.waypoint_step);
+    if (!piece) {
+      jumped = true;
+      return;
+    }
+    for (std::size_t i = 1; i < piece->size(); ++i) {
+      if (sink) sink((*piece)[i]);
+      dense.push_back(std::move((*piece)[i]));
+    }
+  };
+  for (const FoldState& s : setup.prefix) add(s);
+  bool first = true;  // the path's first state is the prefix's last
+  setup.plan_space->path_states(setup, std::move(path), options.waypoint_step, [&](const FoldState& s) {
+    if (!first) add(s);
+    first = false;
+  });
+  // Before a jump, dense.back() is the list's last state.
+  if (to_goal && !jumped && (added < 2 || (dense.back().angles - setup.goal.angles).cwiseAbs().maxCoeff() > 1e-6)) add(setup.goal);
+  if (jumped) {
+    if (why) *why = "the planned path jumps (interpolation left the manifold)";
+    return std::nullopt;
+  }
   return dense;
 }
 
@@ -216,6 +245,33 @@ std::optional<og::PathGeometric> solve(const PlanSetup& setup, const PlanOptions
   return std::nullopt;
 }
 
+// Whether `path` is as short as the space's metric allows, its length the distance between its
+// ends (to rounding). No shortcut can shorten it then (the triangle inequality), and reducing its
+// vertices only repeats the planner's motion checks as one: for a Miura 40×40 plan whose path runs
+// straight in the driving creases, 0.7 s, most of a planner time, for the same path.
+bool already_shortest(const PlanSetup& setup, const og::PathGeometric& path) {
+  if (path.getStateCount() < 2) return true;
+  const auto last = static_cast<unsigned int>(path.getStateCount() - 1);
+  const double direct = setup.si->distance(path.getState(0), path.getState(last));
+  return path.length() <= direct * (1.0 + 1e-9);
+}
+
+// OMPL's simplifier on the found path, as the options ask.
+void simplify(const PlanSetup& setup, const PlanOptions& options, og::PathGeometric& path) {
+  if (options.simplify && parse_objective(options.objective).is_default() && !options.cost_threshold) {
+    if (!already_shortest(setup, path)) {
+      og::PathSimplifier simplifier(setup.si);
+      simplifier.reduceVertices(path);
+      simplifier.shortcutPath(path);
+    }
+  } else if (options.simplify) {
+    // reduceVertices joins any two states a valid motion joins, whatever that costs (it would
+    // straighten a clearance path); shortcutPath keeps a shortcut only where the objective gains.
+    og::PathSimplifier simplifier(setup.si, ob::GoalPtr(), plan_objective(setup, options));
+    simplifier.shortcutPath(path);
+  }
+}
+
 }  // namespace
 
 PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, const PlanOptions& options) {
@@ -269,18 +325,12 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
     return detail::plan_via_flat(
         setup, options, result, options.planner + " found no direct plan in " + std::to_string(direct.time) + " s (" + result.status.message + ")");
   if (!path) return result;
-  if (options.simplify && parse_objective(options.objective).is_default() && !options.cost_threshold) {
-    og::PathSimplifier simplifier(setup.si);
-    simplifier.reduceVertices(*path);
-    simplifier.shortcutPath(*path);
-  } else if (options.simplify) {
-    // reduceVertices joins any two states a valid motion joins, whatever that costs (it would
-    // straighten a clearance path); shortcutPath keeps a shortcut only where the objective gains.
-    og::PathSimplifier simplifier(setup.si, ob::GoalPtr(), plan_objective(setup, options));
-    simplifier.shortcutPath(*path);
-  }
+  simplify(setup, options, *path);
+  // The replay starts on the first waypoints while the later ones are computed (2-core machines:
+  // the replay and the continuation were each about a planner time of a Miura 40×40 plan).
+  detail::ReplayPipeline pipeline(setup, options);
   std::string why;
-  const auto dense = path_waypoints(setup, *path, options, true, &why);
+  const auto dense = path_waypoints(setup, *path, options, true, &why, [&](const FoldState& s) { pipeline.push(s); });
   if (!dense) {
     result.status = {geometry::StatusCode::ClosureViolated, why};
     return result;
@@ -288,7 +338,8 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
   detail::finish_plan(setup, options, *dense, result,
                       result.fallback ? "solved by the Carpenter fallback (" + options.planner + " found no plan in " +
                                             std::to_string(kSamplerShare * options.time) + " s)"
-                                      : std::string("solved"));
+                                      : std::string("solved"),
+                      &pipeline);
   // A plan that checks out is experience: the space's own states, as the planner left them.
   if (db && result.status) {
     if (!result.fallback) db->add(*path);

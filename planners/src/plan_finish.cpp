@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <future>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
 #include "foldkit/planners/objectives.hpp"
 #include "foldkit/simulation/simulate.hpp"
+#include "replay_pipeline.hpp"
 
 namespace foldkit::planners::detail {
 
@@ -14,7 +16,7 @@ using geometry::FoldState;
 
 // Every path passes these, whichever way it was found.
 PlanResult& finish_plan(const PlanSetup& setup, const PlanOptions& options, std::vector<FoldState> waypoints, PlanResult& result,
-                        const std::string& success) {
+                        const std::string& success, ReplayPipeline* pipeline) {
   result.waypoints = std::move(waypoints);
   result.path_length = 0.0;
   for (std::size_t i = 0; i < result.waypoints.size(); ++i) {
@@ -23,6 +25,7 @@ PlanResult& finish_plan(const PlanSetup& setup, const PlanOptions& options, std:
   }
   result.cost = path_cost(parse_objective(options.objective), *setup.pattern, result.waypoints);
   if (result.max_closure_error > 1e-6) {
+    if (pipeline) pipeline->cancel();
     result.status = {geometry::StatusCode::ClosureViolated,
                      "the planned path is not closed (error " + std::to_string(result.max_closure_error) + " rad)"};
     return result;
@@ -38,10 +41,18 @@ PlanResult& finish_plan(const PlanSetup& setup, const PlanOptions& options, std:
   } wait;
   if (options.sequence_ready) wait.reading = options.sequence_ready(result.sequence);
   if (options.replay) {
-    simulation::SimulationOptions so;
-    so.collisions = options.collisions;
-    so.progress = options.progress;
-    result.replay = simulation::simulate(*setup.pattern, result.sequence, so);
+    // The pipeline replayed the events of these waypoints as they came (the count guards that).
+    std::optional<simulation::SimulationReport> replayed;
+    if (pipeline && pipeline->active() && pipeline->events() == result.sequence.events.size()) replayed = pipeline->finish();
+    if (replayed) {
+      result.replay = std::move(replayed);
+    } else {
+      if (pipeline) pipeline->cancel();
+      simulation::SimulationOptions so;
+      so.collisions = options.collisions;
+      so.progress = options.progress;
+      result.replay = simulation::simulate(*setup.pattern, result.sequence, so);
+    }
     result.max_closure_error = std::max(result.max_closure_error, result.replay->max_closure_error);
     if (!result.replay->status) {
       result.status = {result.replay->status.code, "the simulator rejects the plan: " + result.replay->status.message};

@@ -9,10 +9,13 @@
 
 namespace foldkit::planners::detail {
 
+class ReplayPipeline;
+
 // Closure along `waypoints`, the CMML and the simulator's replay, into `result`; its status is
-// Success with the message `success` when all pass.
+// Success with the message `success` when all pass. With an active `pipeline` that was given
+// these waypoints, its replay is the plan's (else the sequence is replayed here).
 PlanResult& finish_plan(const PlanSetup& setup, const PlanOptions& options, std::vector<geometry::FoldState> waypoints,
-                        PlanResult& result, const std::string& success);
+                        PlanResult& result, const std::string& success, ReplayPipeline* pipeline = nullptr);
 
 // Start → flat → goal as two plans from flat (PlanOptions::fallback in the driving space), in the
 // time `result.seconds` leaves of options.time; `why` says why the direct way was given up.

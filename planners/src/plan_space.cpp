@@ -65,7 +65,7 @@ std::shared_ptr<PlanSpace> make_plan_space(SpaceKind kind) {
 
 void PlanSpace::anchor(ob::State*, ob::State*) const {}
 
-std::vector<FoldState> PlanSpace::path_states(const PlanSetup& setup, og::PathGeometric path, double) const {
+std::vector<FoldState> PlanSpace::path_states(const PlanSetup& setup, og::PathGeometric path, double, const StateSink& sink) const {
   path.interpolate();
   std::vector<FoldState> states;
   for (unsigned int i = 0; i < static_cast<unsigned int>(path.getStateCount()); ++i) {
@@ -73,6 +73,8 @@ std::vector<FoldState> PlanSpace::path_states(const PlanSetup& setup, og::PathGe
     setup.reader(path.getState(i), f);
     states.push_back(f);
   }
+  if (sink)
+    for (const FoldState& f : states) sink(f);
   return states;
 }
 
@@ -86,13 +88,18 @@ void use_space(PlanSetup& setup, const PlanOptions& options) {
                                                                                    options.resolution, 2.5 * options.resolution));
 }
 
-std::vector<FoldState> states_along(const PlanSetup& setup, const og::PathGeometric& path, double step, const Motion& motion) {
+std::vector<FoldState> states_along(const PlanSetup& setup, const og::PathGeometric& path, double step, const Motion& motion,
+                                    const PlanSpace::StateSink& sink) {
   std::vector<FoldState> states;
+  const auto emit = [&](FoldState f) {
+    if (sink) sink(f);
+    states.push_back(std::move(f));
+  };
   ob::State* tmp = setup.si->allocState();
   for (unsigned int i = 0; i < static_cast<unsigned int>(path.getStateCount()); ++i) {
     FoldState f;
-    if (i > 0) motion(path.getState(i - 1), path.getState(i), step, tmp, states);
-    if (setup.reader(path.getState(i), f)) states.push_back(f);
+    if (i > 0) motion(path.getState(i - 1), path.getState(i), step, tmp, emit);
+    if (setup.reader(path.getState(i), f)) emit(std::move(f));
   }
   setup.si->freeState(tmp);
   return states;

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <tuple>
 
 #include "actuation.hpp"
@@ -86,38 +88,49 @@ class Replay {
   }
 
   SimulationReport run(const geometry::FoldSequence& sequence) {
-    geometry::FoldState state = geometry::FoldState::flat(pattern_);
-    poses_ = geometry::facet_poses(pattern_, tree_, state);
-    EventReport start{};
-    current_ = &start;
-    check(state, poses_, 0.0, sequence.events.empty() ? 0 : sequence.events.front().number);
-    frame(state, -1);
-    for (const auto& event : sequence.events) {
-      report_.events.push_back({event.number, time_, time_, 0.0, true});
-      current_ = &report_.events.back();
-      detail::EventMotion motion(pattern_, event, state, options_);
-      guard_length(event, motion);
-      const std::size_t steps_before = report_.steps;
-      while (!motion.done()) {
-        const geometry::FoldState before = state;
-        const double h = motion.advance(state, options_.time_step);
-        ++report_.steps;
-        sweep(before, state, time_, h, event.number);
-        time_ += h;
-        if (options_.record_frames) frame(state, event.number);
-        if (options_.progress)
-          options_.progress({static_cast<double>(report_.events.size() - 1), static_cast<double>(sequence.events.size()), "events",
-                             last_error_});
-      }
-      current_->end = time_;
-      if (!motion.reached()) {
-        current_->reached = false;
-        problem(geometry::StatusCode::LimitReached, "event " + std::to_string(event.number) + ": " + motion.failure());
-      }
-      if (!options_.record_frames || report_.steps == steps_before) frame(state, event.number);
+    begin(sequence.events.empty() ? 0 : sequence.events.front().number);
+    for (const auto& event : sequence.events) replay(event, sequence.events.size());
+    return end();
+  }
+
+  // The flat start state, checked as event `first_number`'s (the first event's number, 0 for none).
+  void begin(int first_number) {
+    state_ = geometry::FoldState::flat(pattern_);
+    poses_ = geometry::facet_poses(pattern_, tree_, state_);
+    current_ = &start_;
+    check(state_, poses_, 0.0, first_number);
+    frame(state_, -1);
+  }
+
+  // The next event, from the state the last one left; `known`: how many events the progress
+  // reports as the whole.
+  void replay(const geometry::FoldEvent& event, std::size_t known) {
+    report_.events.push_back({event.number, time_, time_, 0.0, true});
+    current_ = &report_.events.back();
+    detail::EventMotion motion(pattern_, event, state_, options_);
+    guard_length(event, motion);
+    const std::size_t steps_before = report_.steps;
+    while (!motion.done()) {
+      const geometry::FoldState before = state_;
+      const double h = motion.advance(state_, options_.time_step);
+      ++report_.steps;
+      sweep(before, state_, time_, h, event.number);
+      time_ += h;
+      if (options_.record_frames) frame(state_, event.number);
+      if (options_.progress)
+        options_.progress({static_cast<double>(report_.events.size() - 1), static_cast<double>(known), "events", last_error_});
     }
+    current_->end = time_;
+    if (!motion.reached()) {
+      current_->reached = false;
+      problem(geometry::StatusCode::LimitReached, "event " + std::to_string(event.number) + ": " + motion.failure());
+    }
+    if (!options_.record_frames || report_.steps == steps_before) frame(state_, event.number);
+  }
+
+  SimulationReport end() {
     report_.duration = time_;
-    report_.final_state = state;
+    report_.final_state = state_;
     if (report_.problems.empty()) report_.status = {geometry::StatusCode::Success, "valid"};
     return std::move(report_);
   }
@@ -229,11 +242,44 @@ class Replay {
   bool closure_reported_ = false;
   std::set<std::tuple<int, int, int>> crossed_;
   std::set<std::tuple<int, int, int>> numerical_;
+  geometry::FoldState state_;
+  EventReport start_{};  // the flat state's checks count here, in no event
   EventReport* current_ = nullptr;
   SimulationReport report_;
 };
 
 }  // namespace
+
+// A Replay with its own copy of the options (the caller's may not outlive it) and whether it has
+// begun (the flat state is checked as the first event's, which is not known before it comes).
+struct SequenceReplay::Impl {
+  Impl(const geometry::CreasePattern& pattern, SimulationOptions o) : options(std::move(o)), replay(pattern, options) {}
+  SimulationOptions options;
+  Replay replay;
+  bool begun = false;
+};
+
+SequenceReplay::SequenceReplay(const geometry::CreasePattern& pattern, const SimulationOptions& options) {
+  check_options(options);
+  impl_ = std::make_unique<Impl>(pattern, options);
+}
+
+SequenceReplay::~SequenceReplay() = default;
+
+void SequenceReplay::add(const geometry::FoldEvent& event, std::size_t known) {
+  if (!impl_) throw std::logic_error("SequenceReplay::add: the replay has finished");
+  if (!impl_->begun) impl_->replay.begin(event.number);
+  impl_->begun = true;
+  impl_->replay.replay(event, known);
+}
+
+SimulationReport SequenceReplay::finish() {
+  if (!impl_) throw std::logic_error("SequenceReplay::finish: the replay has finished");
+  if (!impl_->begun) impl_->replay.begin(0);
+  SimulationReport report = impl_->replay.end();
+  impl_.reset();
+  return report;
+}
 
 SimulationReport simulate(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence,
                           const SimulationOptions& options) {

@@ -40,18 +40,20 @@ class SingleVertexPlanSpace : public PlanSpace {
 
   // The motion is linear in the active angles: evenly spaced states at most `step` apart in
   // every crease.
-  std::vector<FoldState> path_states(const PlanSetup& setup, og::PathGeometric path, double step) const override {
+  std::vector<FoldState> path_states(const PlanSetup& setup, og::PathGeometric path, double step,
+                                     const StateSink& sink) const override {
     return states_along(setup, path, step,
-                        [&](const ob::State* a, const ob::State* b, double s, ob::State* tmp, std::vector<FoldState>& out) {
+                        [&](const ob::State* a, const ob::State* b, double s, ob::State* tmp, const Emit& out) {
                           const FoldState fa = space_->to_fold_state(a), fb = space_->to_fold_state(b);
                           const int parts = std::max(1, static_cast<int>(std::ceil((fb.angles - fa.angles).cwiseAbs().maxCoeff() / s)));
                           for (int k = 1; k < parts; ++k) {
                             space_->interpolate(a, b, static_cast<double>(k) / parts, tmp);
                             FoldState f;
                             if (!setup.reader(tmp, f)) break;
-                            out.push_back(f);
+                            out(std::move(f));
                           }
-                        });
+                        },
+                        sink);
   }
 
   Fallback fallback() const override { return Fallback::Carpenter; }

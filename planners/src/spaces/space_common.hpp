@@ -20,14 +20,18 @@ namespace foldkit::planners::spaces {
 // the constrained ones (those bring their own).
 void use_space(PlanSetup& setup, const PlanOptions& options);
 
-// The states strictly between `a` and `b` on a space's own motion from one to the other, at most
-// `step` apart per crease where the space can tell, appended to `out`; `tmp` is scratch.
-using Motion = std::function<void(const ompl::base::State* a, const ompl::base::State* b, double step, ompl::base::State* tmp,
-                                  std::vector<geometry::FoldState>& out)>;
+// Takes the next state of a path (states_along's, in order).
+using Emit = std::function<void(geometry::FoldState)>;
 
-// The path's states with `motion` between each pair of neighbours.
+// The states strictly between `a` and `b` on a space's own motion from one to the other, at most
+// `step` apart per crease where the space can tell, given in order to `out`; `tmp` is scratch.
+using Motion = std::function<void(const ompl::base::State* a, const ompl::base::State* b, double step, ompl::base::State* tmp,
+                                  const Emit& out)>;
+
+// The path's states with `motion` between each pair of neighbours; `sink` (when set) gets each as
+// soon as it is computed.
 std::vector<geometry::FoldState> states_along(const PlanSetup& setup, const ompl::geometric::PathGeometric& path, double step,
-                                              const Motion& motion);
+                                              const Motion& motion, const PlanSpace::StateSink& sink);
 
 // Each takes its name from plan_space.cpp's table.
 std::shared_ptr<PlanSpace> single_vertex_plan_space(const char* name);

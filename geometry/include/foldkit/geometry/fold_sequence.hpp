@@ -1,6 +1,7 @@
 #pragma once
 /// @file
 /// Fold sequences (CMML, paper Table 2): timed events that drive joints to target angles.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -71,5 +72,17 @@ FoldSequence sequence_to(const CreasePattern& pattern, const FoldState& state, d
 ///         does not hold one angle per joint
 FoldSequence path_sequence(const CreasePattern& pattern, const std::vector<FoldState>& waypoints, double max_speed,
                            std::string title = {});
+
+/// path_sequence()'s event from `from` to `to` (the next waypoint), numbered `number`: for a
+/// caller that makes the events one waypoint at a time (a plan replayed while it is computed).
+/// @param pattern    the pattern the states belong to
+/// @param from       the state the event starts from (flat for the first), radians
+/// @param to         the waypoint it moves to, radians
+/// @param max_speed  speed of the fastest joint, radians per second
+/// @param number     the event's number
+/// @return the event, or nothing when no joint moves (path_sequence() then adds none)
+/// @throws std::invalid_argument as path_sequence()
+std::optional<FoldEvent> path_event(const CreasePattern& pattern, const FoldState& from, const FoldState& to, double max_speed,
+                                    int number);
 
 }  // namespace foldkit::geometry

@@ -86,7 +86,9 @@ struct PlanOptions {
   bool collisions = true;     ///< whether crossing facets make a state invalid (planning and replay)
   bool use_assignment = true;  ///< mountain/valley assignments of the pattern become angle bounds
   bool numerical_jacobian = false;  ///< constrained spaces: OMPL's finite differences (a baseline)
-  bool simplify = true;       ///< shorten the path with OMPL's PathSimplifier (reduce vertices, shortcut)
+  /// Shorten the path with OMPL's PathSimplifier (reduce vertices, shortcut); a path already as
+  /// short as the distance between its ends is left as found.
+  bool simplify = true;
   /// When the planner finds no plan in a quarter of `time` (kSamplerShare), go through flat:
   /// - single-vertex space: the path of Carpenter's rule on the sphere (start → flat → goal,
   ///   CarpenterFallbackPlanner), which reaches every closed, non-crossing state;
@@ -110,10 +112,16 @@ struct PlanOptions {
   double resolution = 0.02;
   double waypoint_step = 0.02;  ///< largest joint change between two CMML waypoints, radians; positive
   double speed = 1.0;           ///< the fastest joint's speed in each CMML event, rad/s (written °/s); positive
-  bool replay = true;           ///< replay the plan in the simulator before accepting it
+  /// Replay the plan in the simulator before accepting it. Without a start sequence the replay runs
+  /// on a thread of its own while the later waypoints are computed; its report is simulate()'s of
+  /// the whole sequence all the same.
+  bool replay = true;
   /// Silence OMPL's console messages (sets OMPL's log level to none, for the whole process).
   bool quiet = true;
-  geometry::ProgressFn progress;  ///< the replay's progress (the planner itself runs for `time` at most)
+  /// The replay's progress (the planner itself runs for `time` at most); called by the thread that
+  /// replays (see `replay`: not the caller's), one call at a time, while plan() runs. Until the
+  /// waypoints are all known, the whole it reports is the events known so far.
+  geometry::ProgressFn progress;
   /// Called once with the plan's sequence (what PlanResult::sequence will hold) as soon as it is
   /// made, before the replay judges it, so that the caller can use it meanwhile: `foldkit plan`
   /// writes its file on the other core, and keeps it only when the plan is accepted. The sequence

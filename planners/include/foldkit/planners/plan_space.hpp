@@ -5,6 +5,7 @@
 /// flat applies when its planner finds nothing. One implementation per kind, each in its own file
 /// under planners/src/spaces/, registered in the table of plan_space.cpp (docs/ARCHITECTURE.md,
 /// "One place to extend").
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -65,11 +66,16 @@ class PlanSpace {
   /// Marks the planner's start and goal states in the space (the Atlas charts); nothing by default.
   virtual void anchor(ompl::base::State* start, ompl::base::State* goal) const;
 
+  /// Receives a path's fold states one at a time, in the path's order.
+  using StateSink = std::function<void(const geometry::FoldState&)>;
+
   /// A solution path's states as fold states, densified along the space's own motion so that no
   /// crease moves more than `step` (radians) between neighbours where the space can tell; by
   /// default OMPL's path.interpolate() (the constrained spaces follow their manifold's geodesic).
-  virtual std::vector<geometry::FoldState> path_states(const PlanSetup& setup, ompl::geometric::PathGeometric path,
-                                                       double step) const;
+  /// `sink`, when set, gets each of the returned states in order, the driving and single-vertex
+  /// spaces' as soon as it is computed (the plan's replay starts on them), the others' at the end.
+  virtual std::vector<geometry::FoldState> path_states(const PlanSetup& setup, ompl::geometric::PathGeometric path, double step,
+                                                       const StateSink& sink) const;
 
   /// The way through flat that applies to this space (PlanOptions::fallback); None by default.
   virtual Fallback fallback() const;

@@ -4,6 +4,7 @@
 /// loop-closure and collision checks along the way, and a report of what happened
 /// (docs/SIMULATION.md).
 #include <array>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -151,6 +152,34 @@ struct SequenceError : std::invalid_argument {
 /// @throws SequenceError as above, when the replay reaches that event
 SimulationReport simulate(const geometry::CreasePattern& pattern, const geometry::FoldSequence& sequence,
                           const SimulationOptions& options = {});
+
+/// simulate() fed one event at a time, for a caller that makes the sequence while it is replayed
+/// (planners: the replay of a plan runs on another thread while its waypoints are computed). The
+/// same events in the same order give the same report as simulate() of the whole sequence.
+/// Not safe for several threads at once; it may be used from any one thread at a time.
+class SequenceReplay {
+ public:
+  /// A replay of `pattern` with `options` (copied), from the flat state.
+  /// @throws std::invalid_argument for options out of range (as simulate())
+  SequenceReplay(const geometry::CreasePattern& pattern, const SimulationOptions& options = {});
+  ~SequenceReplay();  ///< Frees the replay.
+  SequenceReplay(const SequenceReplay&) = delete;             ///< Not copyable.
+  SequenceReplay& operator=(const SequenceReplay&) = delete;  ///< Not copyable.
+
+  /// Replays the next event from the state the events before it left (the first from flat).
+  /// @param event  the event (angles in radians, velocities in radians per second)
+  /// @param known  how many events the progress reports as the whole sequence (options.progress)
+  /// @throws SequenceError as simulate(); std::logic_error after finish()
+  void add(const geometry::FoldEvent& event, std::size_t known);
+  /// The report of every event added, as simulate() of their sequence returns it; the replay is
+  /// then spent.
+  /// @throws std::logic_error when called a second time
+  SimulationReport finish();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 /// Smallest height over the sheet's triangles (pattern units): the length the sweep bound is
 /// relative to. Infinity for a pattern without triangles.
