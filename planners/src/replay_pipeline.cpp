@@ -11,10 +11,7 @@ ReplayPipeline::ReplayPipeline(const PlanSetup& setup, const PlanOptions& option
   thread_ = std::thread([this] { run(); });
 }
 
-ReplayPipeline::~ReplayPipeline() {
-  cancel();
-  if (thread_.joinable()) thread_.join();
-}
+ReplayPipeline::~ReplayPipeline() { cancel(); }
 
 void ReplayPipeline::push(const geometry::FoldState& waypoint) {
   if (!active_) return;
@@ -35,6 +32,8 @@ void ReplayPipeline::cancel() {
     cancelled_ = closed_ = true;
   }
   ready_.notify_one();
+  // A replay that falls back on simulate() must not overlap this one's progress calls.
+  if (thread_.joinable()) thread_.join();
 }
 
 std::optional<simulation::SimulationReport> ReplayPipeline::finish() {

@@ -38,7 +38,8 @@ class ReplayPipeline {
   void push(const geometry::FoldState& waypoint);
   // How many events were handed to the replay.
   std::size_t events() const { return events_; }
-  // The replay is not wanted: it stops at its next event.
+  // The replay is not wanted: it stops at its next event, and this waits for its thread, so that
+  // nothing (its progress calls) runs on it once cancel() returns.
   void cancel();
   // Waits for the replay of every event pushed and returns its report; rethrows what the replay
   // threw (simulation::SequenceError). Nothing when inactive or cancelled.

@@ -2,7 +2,9 @@
 // over one at a time, on another thread, against simulate() of their whole sequence (the oracle),
 // for plans the simulator accepts and waypoints it rejects; and plans that do not depend on the
 // threads' timing.
+#include <atomic>
 #include <cmath>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -115,15 +117,38 @@ TEST(ReplayPipeline, CancelledOrAbandonedEndsWithoutReport) {
   EXPECT_FALSE(cancelled.finish().has_value());
 }
 
-// A plan's replay (through the pipeline) is simulate() of its sequence, and the same seed gives
-// the same plan and report, whatever the threads' timing.
+// What the replay throws on its thread (an event too slow for the step limit) is what finish()
+// throws, as simulate() of the same sequence throws it.
+TEST(ReplayPipeline, ErrorOnTheReplayThreadIsRethrownByFinish) {
+  const CreasePattern strip = build_or_throw(gen::strip(3));
+  PlanSetup setup;
+  setup.pattern = &strip;
+  PlanOptions o;
+  o.speed = 1e-9;  // rad/s: the first event would take 10⁸ s
+  const std::vector<FoldState> w = {strip_state(strip, 0.1, -0.1), strip_state(strip, 0.2, -0.2)};
+  ReplayPipeline pipeline(setup, o);
+  for (const FoldState& s : w) pipeline.push(s);
+  EXPECT_THROW(pipeline.finish(), sim::SequenceError);
+  EXPECT_THROW(sim::simulate(strip, foldkit::planners::plan_sequence(setup, o, w), sim::SimulationOptions{}), sim::SequenceError);
+}
+
+// A plan's replay (through the pipeline: its progress comes from another thread) is simulate() of
+// its sequence, and the same seed gives the same plan and report, whatever the threads' timing.
 TEST(ReplayPipeline, PlansReplayedAsSimulateAndRepeatable) {
   const CreasePattern p = build_or_throw(gen::miura(6, 6));
   const FoldState goal = foldkit::test::folded_along_assignment(p, 1.2);
   PlanOptions o;
   o.time = 20.0;
   o.seed = 2;
+  std::atomic<int> calls{0}, elsewhere{0};
+  const std::thread::id caller = std::this_thread::get_id();
+  o.progress = [&](const foldkit::geometry::Progress&) {
+    ++calls;
+    if (std::this_thread::get_id() != caller) ++elsewhere;
+  };
   const PlanResult a = foldkit::planners::plan(p, goal, o), b = foldkit::planners::plan(p, goal, o);
+  EXPECT_GT(calls.load(), 0);
+  EXPECT_EQ(elsewhere.load(), calls.load()) << "the replay ran on the caller's thread, not the pipeline's";
   ASSERT_TRUE(a.status.ok()) << a.status.message;
   ASSERT_TRUE(a.replay.has_value());
   foldkit::test::expect_same_report(*a.replay, sim::simulate(p, a.sequence, sim::SimulationOptions{}));

@@ -109,7 +109,8 @@ class DrivingPlanSpace : public PlanSpace {
   std::vector<FoldState> path_states(const PlanSetup& setup, og::PathGeometric path, double step,
                                      const StateSink& sink) const override {
     geometry::PassiveSolverOptions fine;
-    fine.max_step = 0.9 * step;
+    // Never coarser than the space's own solver (a large waypoint_step would widen its jump test).
+    fine.max_step = std::min(0.9 * step, geometry::PassiveSolverOptions{}.max_step);
     geometry::PassiveSolver solver(*setup.system, space_->chart(), fine);
     const Motion motion = [&](const ob::State* a, const ob::State* b, double s, ob::State* tmp, const Emit& out) {
       FoldState fa, fb, reached;

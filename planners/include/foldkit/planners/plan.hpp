@@ -123,8 +123,11 @@ struct PlanOptions {
   /// waypoints are all known, the whole it reports is the events known so far.
   geometry::ProgressFn progress;
   /// Called once with the plan's sequence (what PlanResult::sequence will hold) as soon as it is
-  /// made, before the replay judges it, so that the caller can use it meanwhile: `foldkit plan`
-  /// writes its file on the other core, and keeps it only when the plan is accepted. The sequence
+  /// made, so that the caller can use it while the replay finishes judging it: `foldkit plan`
+  /// writes its file on the other core, and keeps it only when the plan is accepted. Without a
+  /// start sequence the replay has begun before (it runs while the waypoints are computed):
+  /// `progress` may then have been called already, and may be called, from the replay's thread,
+  /// while this runs; share nothing between the two without a lock. The sequence
   /// may be read from another thread until the future returned (when valid) is ready: plan()
   /// waits for it once the replay has ended, before it returns. Not called when no closed path
   /// was found.

@@ -159,7 +159,8 @@ SimulationReport simulate(const geometry::CreasePattern& pattern, const geometry
 /// Not safe for several threads at once; it may be used from any one thread at a time.
 class SequenceReplay {
  public:
-  /// A replay of `pattern` with `options` (copied), from the flat state.
+  /// A replay of `pattern` (kept by reference: it must outlive the replay) with `options` (copied),
+  /// from the flat state.
   /// @throws std::invalid_argument for options out of range (as simulate())
   SequenceReplay(const geometry::CreasePattern& pattern, const SimulationOptions& options = {});
   ~SequenceReplay();  ///< Frees the replay.
