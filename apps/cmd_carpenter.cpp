@@ -110,6 +110,9 @@ int run_planar(const CarpenterArgs& opt) {
                      {"window_lp_solves", r.window_lp_solves},
                      {"carried_steps", r.carried_steps},
                      {"held_steps", r.held_steps},
+                     {"flips", r.flips},
+                     {"straightenings", r.straightenings},
+                     {"pseudo_lp_steps", r.pseudo_lp_steps},
                      {"method", opt.method},
                      {"seconds", r.seconds},
                      {"time", r.seconds},  // deprecated: the name of `seconds` before issue 37
@@ -140,7 +143,8 @@ Command add_carpenter(CLI::App& root) {
   reads(app->add_option("--state", opt->state, "Single vertex: CMML whose end state is the folded input"));
   app->add_option("--method", opt->method,
                   "Planar chains: 'carried' (default: the last step's motion carried over each event, mended "
-                  "by small LPs) or 'lp' (one global LP per step, the baseline); docs/CARPENTER.md")
+                  "by small LPs), 'lp' (one global LP per step, the baseline) or 'pseudo' (Streinu's "
+                  "pseudo-triangulation mechanism, flips at events); docs/CARPENTER.md")
       ->check(CLI::IsMember(folding::carpenter_method_names()));
   positive(app->add_option("--max-steps", opt->max_steps, "Stop after this many steps (exit 4)"));
   add_json(app, opt->json);

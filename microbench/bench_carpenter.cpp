@@ -1,7 +1,7 @@
 // Planar Carpenter's rule: straighten seeded random 100–1,000-link chains and pivot-algorithm
 // lattice walks, each by the global LP per step (`--method lp`, the baseline: 100–1,000 links;
 // 3,000 ran over half an hour) and by the carried field (`--method carried`), side by side at
-// 100–1,000 links (constraint generation:
+// 100–1,000 links, and by Streinu's pseudo-triangulation mechanism (`--method pseudo`) (constraint generation:
 // the LP starts with near pairs and takes violated struts as they show, warm-started; the closed-
 // form end takes over once the chain is monotone; docs/CARPENTER.md has the figures), and, side by
 // side on smaller chains, the same planner with all O(n²) struts in every LP
@@ -30,6 +30,9 @@ void run(benchmark::State& state, const PlanarChain& input, CarpenterPlanarOptio
   state.counters["window_lps"] = static_cast<double>(r.window_lp_solves);
   state.counters["carried_steps"] = static_cast<double>(r.carried_steps);
   state.counters["max_struts"] = static_cast<double>(r.max_struts);
+  state.counters["flips"] = static_cast<double>(r.flips);
+  state.counters["straightenings"] = static_cast<double>(r.straightenings);
+  state.counters["certificate_s"] = r.certificate_seconds;
   state.counters["max_length_error"] = r.max_length_error;
   state.counters["min_distance_growth"] = r.min_distance_growth;
 }
@@ -43,6 +46,7 @@ CarpenterPlanarOptions with(CarpenterPlanarMethod method, bool all_struts = fals
 
 constexpr auto kLp = CarpenterPlanarMethod::Lp;
 constexpr auto kCarried = CarpenterPlanarMethod::CarriedField;
+constexpr auto kPseudo = CarpenterPlanarMethod::PseudoTriangulation;
 
 PlanarChain walk(const benchmark::State& state) {
   return {foldkit::microbench::random_lattice_walk(static_cast<int>(state.range(0)), 1), false};
@@ -55,6 +59,11 @@ PlanarChain chain(const benchmark::State& state) {
 // by the global LP per step (the baseline) and by the carried field.
 void BM_Carpenter_StraightenLatticeWalk(benchmark::State& state) { run(state, walk(state), with(kLp)); }
 void BM_Carpenter_StraightenLatticeWalkCarried(benchmark::State& state) { run(state, walk(state), with(kCarried)); }
+// Streinu's pseudo-triangulation mechanism (one sparse solve per step, flips at events).
+void BM_Carpenter_StraightenLatticeWalkPseudo(benchmark::State& state) { run(state, walk(state), with(kPseudo)); }
+void BM_Carpenter_ConvexifyPseudo(benchmark::State& state) {
+  run(state, {foldkit::microbench::random_star(static_cast<int>(state.range(0)), 1), true}, with(kPseudo));
+}
 void BM_Carpenter_Straighten(benchmark::State& state) { run(state, chain(state), with(kLp)); }
 void BM_Carpenter_StraightenCarried(benchmark::State& state) { run(state, chain(state), with(kCarried)); }
 
@@ -75,6 +84,10 @@ BENCHMARK(BM_Carpenter_StraightenLatticeWalk)->Arg(100)->Arg(300)->Arg(1000)->It
 // 10,000 the first global LP alone takes minutes (docs/CARPENTER.md, Limits), so such a run
 // would not end.
 BENCHMARK(BM_Carpenter_StraightenLatticeWalkCarried)->Arg(100)->Arg(300)->Arg(1000)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_Carpenter_StraightenLatticeWalkPseudo)->Arg(100)->Arg(300)->Arg(1000)->Iterations(1)->Unit(benchmark::kSecond);
+// 30 vertices convexify; 100 stops at the step limit after ~6 s (docs/CARPENTER.md, Limits), and
+// 200 and 400 are not registered (200 stops with no step, 400 ran over 5 minutes).
+BENCHMARK(BM_Carpenter_ConvexifyPseudo)->Arg(30)->Arg(100)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(BM_Carpenter_Ours)->Arg(50)->Arg(100)->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Carpenter_AllStruts)->Arg(50)->Arg(100)->Iterations(1)->Unit(benchmark::kMillisecond);
 

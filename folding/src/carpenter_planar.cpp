@@ -11,6 +11,7 @@
 
 #include "carpenter_planar_chain.hpp"
 #include "carpenter_planar_velocity.hpp"
+#include "carpenter_pseudo.hpp"
 #include "foldkit/folding/carpenter.hpp"
 
 namespace foldkit::folding {
@@ -52,11 +53,14 @@ class PlanarRun {
           continue;
         }
       }
-      if (!lp_step()) break;
+      if (!(pseudo() ? pseudo_step() : lp_step())) break;
     }
     if (!pending_.empty()) record(pending_);
     if (finished(chain_)) result_.status = {StatusCode::Success, closed_ ? "convex" : "straight"};
     result_.min_distance_growth = std::isinf(min_growth_) ? 0.0 : min_growth_;
+    result_.flips = mechanism_.counts.flips;
+    result_.straightenings = mechanism_.counts.straightenings;
+    result_.certificate_seconds = mechanism_.counts.certificate_seconds;
     return std::move(result_);
   }
 
@@ -331,6 +335,64 @@ class PlanarRun {
     return true;
   }
 
+  bool pseudo() const { return options_.method == CarpenterPlanarMethod::PseudoTriangulation; }
+
+  // One step of Streinu's mechanism (carpenter_pseudo.hpp): the PPT brought up to date, its
+  // velocity, a step to the next event at most, then the flip or the merge of that event.
+  bool pseudo_step() {
+    if (mechanism_.counts.unflips > unflips_seen_) {
+      // The last flip's edge crossed once the new mechanism moved (it took the vertex back):
+      // flipping again would cycle, so one global LP step moves the chain off that configuration.
+      unflips_seen_ = mechanism_.counts.unflips;
+      mechanism_.reset();
+      ++result_.pseudo_lp_steps;
+      return lp_step();
+    }
+    Frame2 v;
+    bool ok = mechanism_.sync(chain_) && mechanism_.velocity(chain_, v);
+    if (!ok) {  // a PPT that went wrong (not pointed, singular) is built again from the bars
+      mechanism_.reset();
+      ++mechanism_.counts.rebuilds;
+      ok = mechanism_.sync(chain_) && mechanism_.velocity(chain_, v);
+    }
+    const std::vector<double> omega = ok ? bar_rates(chain_, v) : std::vector<double>{};
+    const double fastest = ok ? fastest_joint(chain_, omega) : 0.0;
+    if (!(fastest > 0.0) || !std::isfinite(fastest)) {
+      // No PPT at these positions (a vertex left within rounding of an event, where no edge
+      // across it is valid yet): one global LP step moves off the degeneracy, and the next step
+      // builds the PPT again.
+      mechanism_.reset();
+      ++result_.pseudo_lp_steps;
+      return lp_step();
+    }
+    const pseudo_detail::PseudoStep step = mechanism_.step(chain_, v, turn_budget_ / fastest);
+    const int halvings = step.attempts - 1;
+    turn_budget_ = halvings == 0 ? std::min(turn_budget_ * 1.5, options_.max_turn) : turn_budget_ * std::pow(0.5, halvings);
+    if (!step.accepted) {
+      result_.status = {StatusCode::NoProgress, "no step keeps every distance growing at step " + std::to_string(result_.steps)};
+      return false;
+    }
+    const int m = chain_.vertices();
+    chain_.set_q(step.next);
+    ++result_.steps;
+    if (options_.progress) options_.progress({static_cast<double>(result_.steps), 0.0, "steps", -1.0});
+    int merged = -1;
+    if (step.event_vertex >= 0) {
+      const bool closed = chain_.closed();
+      if (pseudo_detail::is_bar(step.event_vertex, step.aligned.first, m, closed) &&
+          pseudo_detail::is_bar(step.event_vertex, step.aligned.second, m, closed)) {
+        merged = step.event_vertex;
+        ++mechanism_.counts.straightenings;
+      } else {
+        mechanism_.flip(chain_, step.event_vertex, step.aligned);
+      }
+    }
+    mechanism_.settle(chain_);
+    merge_after_step(step.next, merged, m);
+    record_step();
+    return true;
+  }
+
   // Merges the event joint and any other joint the step left straight to within rounding.
   void merge_after_step(const Frame2& next, int event_joint, int m) {
     std::vector<int> straight;
@@ -354,6 +416,8 @@ class PlanarRun {
   double min_growth_ = std::numeric_limits<double>::infinity();
   Frame2 last_recorded_;
   Frame2 pending_;                            // the last unrecorded frame (frame_stride > 1)
+  pseudo_detail::PseudoMechanism mechanism_;  // method pseudo: the PPT between steps
+  std::size_t unflips_seen_ = 0;              // mechanism_.counts.unflips at the last LP step
   detail::BasisMemo basis_memo_;              // the last LP's optimal basis: the next starts there
   std::vector<std::pair<int, int>> carried_;  // binding struts of the last step, as input vertices
   std::vector<double> carried_speed_;         // last field's joint speeds by input vertex (CarriedField)
@@ -369,27 +433,6 @@ class PlanarRun {
     int backoff = 2;
   } hold_;              // the closed-form straightening was tried and a check failed
 };
-
-}  // namespace
-
-const char* to_string(CarpenterPlanarMethod method) {
-  return method == CarpenterPlanarMethod::Lp ? "lp" : "carried";
-}
-
-CarpenterPlanarMethod parse_carpenter_method(const std::string& name) {
-  for (const auto m : {CarpenterPlanarMethod::CarriedField, CarpenterPlanarMethod::Lp})
-    if (name == to_string(m)) return m;
-  throw std::invalid_argument("unknown Carpenter method '" + name + "' (carried or lp)");
-}
-
-std::vector<std::string> carpenter_method_names() {
-  std::vector<std::string> names{to_string(CarpenterPlanarOptions{}.method)};
-  for (const auto m : {CarpenterPlanarMethod::CarriedField, CarpenterPlanarMethod::Lp})
-    if (names.front() != to_string(m)) names.emplace_back(to_string(m));
-  return names;
-}
-
-namespace {
 
 // The options' ranges (carpenter_planar's @throws); a NaN fails every test, so each is written so.
 void check_options(const CarpenterPlanarOptions& o) {

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "foldkit/folding/carpenter.hpp"
 
@@ -132,5 +133,33 @@ MotionCheck check_motion(const std::vector<Frame2>& frames, bool closed) {
 }
 
 std::vector<Frame2> reversed(const std::vector<Frame2>& frames) { return {frames.rbegin(), frames.rend()}; }
+
+namespace {
+
+constexpr CarpenterPlanarMethod kMethods[] = {CarpenterPlanarMethod::CarriedField, CarpenterPlanarMethod::Lp,
+                                              CarpenterPlanarMethod::PseudoTriangulation};
+
+}  // namespace
+
+const char* to_string(CarpenterPlanarMethod method) {
+  switch (method) {
+    case CarpenterPlanarMethod::Lp: return "lp";
+    case CarpenterPlanarMethod::PseudoTriangulation: return "pseudo";
+    default: return "carried";
+  }
+}
+
+CarpenterPlanarMethod parse_carpenter_method(const std::string& name) {
+  for (const auto m : kMethods)
+    if (name == to_string(m)) return m;
+  throw std::invalid_argument("unknown Carpenter method '" + name + "' (carried, lp or pseudo)");
+}
+
+std::vector<std::string> carpenter_method_names() {
+  std::vector<std::string> names{to_string(CarpenterPlanarOptions{}.method)};
+  for (const auto m : kMethods)
+    if (names.front() != to_string(m)) names.emplace_back(to_string(m));
+  return names;
+}
 
 }  // namespace foldkit::folding

@@ -167,6 +167,9 @@ void bind_carpenter(py::module_& m) {
       .def_readonly("carried_steps", &R::carried_steps, "Steps on a carried, perhaps mended, field (method 'carried').")
       .def_readonly("held_steps", &R::held_steps, "Steps with part of an open chain held rigid (a spiral's slow ends; CARPENTER.md).")
       .def_readonly("max_struts", &R::max_struts, "Most strut rows any LP held.")
+      .def_readonly("flips", &R::flips, "Flips of the pseudo-triangulation at events (method 'pseudo').")
+      .def_readonly("straightenings", &R::straightenings, "Joints merged where two bars aligned (method 'pseudo').")
+      .def_readonly("pseudo_lp_steps", &R::pseudo_lp_steps, "Steps the global LP took where no PPT could be built (method 'pseudo').")
       .def_readonly("seconds", &R::seconds, "Wall-clock seconds of the run.")
       .def_readonly("max_length_error", &R::max_length_error, "Largest bar-length change over the frames.")
       .def_readonly("min_distance_growth", &R::min_distance_growth,
@@ -192,7 +195,7 @@ void bind_carpenter(py::module_& m) {
       py::arg("points"), py::arg("closed") = false, py::arg("max_steps") = folding::CarpenterPlanarOptions{}.max_steps,
       py::arg("frame_stride") = 1, py::arg("method") = std::string(folding::to_string(folding::CarpenterPlanarOptions{}.method)),
       "Straightens an open planar chain (points: (n, 2) array) or convexifies a closed one, as `foldkit carpenter`; "
-      "method 'carried' (the default) or 'lp' as `--method` (docs/CARPENTER.md); ValueError when the chain is not simple "
+      "method 'carried' (the default), 'lp' or 'pseudo' as `--method` (docs/CARPENTER.md); ValueError when the chain is not simple "
       "or the method unknown.");
 
   using S = folding::CarpenterSphericalResult;

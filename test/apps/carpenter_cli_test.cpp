@@ -166,6 +166,22 @@ TEST(CarpenterCli, MethodOptionSelectsTheGlobalLpOrTheCarriedField) {
   EXPECT_EQ(foldkit({"carpenter", chain, "--method", "simplex"}).exit, 2);
 }
 
+// --method pseudo (Streinu's pseudo-triangulation mechanism) beside the LP methods: the issue's
+// 90-point spiral straightens expansively, and the JSON counts the mechanism's events. (The small
+// spiral above is monotone after two steps, before any event.)
+TEST(CarpenterCli, MethodPseudoStraightensWithFlipsCounted) {
+  const std::string chain = foldkit::test::data_path("carpenter_spiral90.txt");
+  const CliResult r = foldkit({"carpenter", chain, "--method", "pseudo", "--json"});
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["method"].get<std::string>(), "pseudo");
+  EXPECT_TRUE(j["straight"].get<bool>());
+  EXPECT_GE(j["flips"].get<std::size_t>() + j["straightenings"].get<std::size_t>(), 1u) << j.dump();
+  EXPECT_LE(j["pseudo_lp_steps"].get<std::size_t>(), j["steps"].get<std::size_t>());
+  EXPECT_GE(j["min_distance_growth"].get<double>(), -1e-12);
+  EXPECT_LE(j["max_length_error"].get<double>(), 1e-9);
+}
+
 // Issue 36: a simple 90-point spiral (test/data/carpenter_spiral90.txt) was refused by both methods
 // ("the expansive-motion LP failed at step 0 (infeasible)"); now it straightens, some steps with
 // the spiral's slow centre held rigid (`held_steps`).

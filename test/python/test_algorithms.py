@@ -183,7 +183,7 @@ def random_walk(n, seed):
             return np.array(pts, float) + 0.1 * rng.uniform(-1, 1, (n + 1, 2))
 
 
-@pytest.mark.parametrize("method", ["carried", "lp"])
+@pytest.mark.parametrize("method", ["carried", "lp", "pseudo"])
 def test_carpenter_is_expansive_and_matches_cli(cli, tmp_path, method):
     pts = random_walk(30, seed=2)
     chain = tmp_path / "c.txt"
@@ -193,6 +193,7 @@ def test_carpenter_is_expansive_and_matches_cli(cli, tmp_path, method):
     r = foldkit.carpenter(foldkit.read_chain(str(chain)), method=method)
     assert r.status.ok and r.steps == expected["steps"] and expected["method"] == method
     assert (r.carried_steps > 0) == (method == "carried") and r.window_lp_solves <= r.lp_solves
+    assert r.flips == expected["flips"] and (r.flips + r.straightenings > 0) == (method == "pseudo")
     f = r.frames
     np.testing.assert_allclose(f[0], pts, atol=1e-12)
     bars = np.linalg.norm(np.diff(f, axis=1), axis=2)

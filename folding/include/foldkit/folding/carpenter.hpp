@@ -38,11 +38,18 @@ enum class CarpenterPlanarMethod {
   /// The global LP only starts the run and takes over when the mending fails. Closed chains as
   /// Lp (dropping a joint's speed would open the polygon). `--method carried`.
   CarriedField,
+  /// Streinu's pseudo-triangulation mechanism: the bars completed to a pointed
+  /// pseudo-triangulation, one non-bar convex-hull edge removed; the 1-DOF motion (one sparse
+  /// linear solve per step, expansive by Streinu's theorem) is followed to the next event, where
+  /// a vertex stops being pointed: a flip, or two bars aligned (the joint merged). Every step is
+  /// still checked on all pairs. Experimental: slower than CarriedField, and polygons of 100 or
+  /// more vertices do not convexify (docs/CARPENTER.md, Limits). `--method pseudo`.
+  PseudoTriangulation,
 };
-/// The method's name as `foldkit carpenter --method` and Python's `method=` spell it: "lp" or
-/// "carried".
+/// The method's name as `foldkit carpenter --method` and Python's `method=` spell it: "lp",
+/// "carried" or "pseudo".
 const char* to_string(CarpenterPlanarMethod method);
-/// The method named "lp" or "carried".
+/// The method named "lp", "carried" or "pseudo".
 /// @throws std::invalid_argument for any other name
 CarpenterPlanarMethod parse_carpenter_method(const std::string& name);
 /// Every method's name, the default's first.
@@ -93,6 +100,15 @@ struct CarpenterPlanarResult {
   /// failed (spirals: the speeds it needs span more than doubles resolve; docs/CARPENTER.md)
   std::size_t held_steps = 0;
   std::size_t max_struts = 0;  ///< most strut rows any LP held
+  /// PseudoTriangulation: events where a strut lost pointedness and was replaced (flips).
+  std::size_t flips = 0;
+  /// PseudoTriangulation: events where two bars aligned and their joint was merged.
+  std::size_t straightenings = 0;
+  /// PseudoTriangulation: steps taken by the global LP instead, where no PPT could be built
+  /// (a vertex within rounding of an event).
+  std::size_t pseudo_lp_steps = 0;
+  /// PseudoTriangulation: seconds spent in the all-pairs distance check of the steps.
+  double certificate_seconds = 0.0;
   double seconds = 0.0;        ///< wall-clock time of the run
   /// Over every recorded frame: max |bar length − input length| (length units).
   double max_length_error = 0.0;
