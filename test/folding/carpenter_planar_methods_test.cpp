@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "carpenter_inputs.hpp"
+#include "carpenter_certified.hpp"
 #include "carpenter_oracle.hpp"
 
 namespace {
@@ -21,6 +22,7 @@ namespace {
 using namespace foldkit::folding;
 using Vec = Eigen::Vector2d;
 using foldkit::test::carpenter::check_frames;
+using foldkit::test::carpenter::expect_certified;
 using foldkit::test::carpenter::Oracle;
 
 CarpenterPlanarResult run(const Frame2& input, bool closed, CarpenterPlanarMethod method, std::size_t stride = 1) {
@@ -28,26 +30,6 @@ CarpenterPlanarResult run(const Frame2& input, bool closed, CarpenterPlanarMetho
   options.method = method;
   options.frame_stride = stride;
   return carpenter_planar({input, closed}, options);
-}
-
-void expect_certified(const CarpenterPlanarResult& r, const Frame2& input, bool closed) {
-  ASSERT_TRUE(r.status.ok()) << r.status.message;
-  ASSERT_GE(r.frames.size(), 2u);
-  const Oracle o = check_frames(r.frames, input, closed);
-  // Distances are compared to within rounding, which grows with the coordinates: the layouts sum
-  // up to n bars (docs/CARPENTER.md, step size), so the bound is relative to the chain's length:
-  // 1e-13 of it is about n·u·length at n = 450 (the 40-gon below shrinks one distance by 1.8e-12,
-  // a few 1e-14 of its length; an absolute 1e-12 failed there).
-  double length = 0.0;
-  for (std::size_t i = 0; i + 1 < input.size(); ++i) length += (input[i + 1] - input[i]).norm();
-  EXPECT_LE(o.length_error, 1e-9);
-  EXPECT_GE(o.vertex_growth, -1e-13 * length);
-  EXPECT_GE(o.bar_growth, -1e-13 * length);
-  EXPECT_GT(o.min_gap, 0.0);
-  if (closed)
-    EXPECT_TRUE(is_convex(r.frames.back()));
-  else
-    EXPECT_TRUE(is_straight(r.frames.back()));
 }
 
 // The benchmark's own input at a size where the carried field has to be mended many times: both

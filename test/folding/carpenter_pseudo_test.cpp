@@ -9,6 +9,7 @@
 
 #include "../../folding/src/carpenter_pseudo.hpp"
 #include "carpenter_inputs.hpp"
+#include "carpenter_certified.hpp"
 #include "carpenter_oracle.hpp"
 #include "foldkit/folding/carpenter.hpp"
 
@@ -16,6 +17,7 @@ namespace {
 
 using namespace foldkit::folding;
 using foldkit::test::carpenter::check_frames;
+using foldkit::test::carpenter::expect_certified;
 using foldkit::test::carpenter::Oracle;
 namespace pd = foldkit::folding::pseudo_detail;
 
@@ -24,22 +26,6 @@ CarpenterPlanarResult run_pseudo(const Frame2& input, bool closed, std::size_t s
   options.method = CarpenterPlanarMethod::PseudoTriangulation;
   options.frame_stride = stride;
   return carpenter_planar({input, closed}, options);
-}
-
-void expect_certified(const CarpenterPlanarResult& r, const Frame2& input, bool closed) {
-  ASSERT_TRUE(r.status.ok()) << r.status.message;
-  const Oracle o = check_frames(r.frames, input, closed);
-  // As in carpenter_planar_methods_test.cpp: distances to within 1e-13 of the chain's length.
-  double length = 0.0;
-  for (std::size_t i = 0; i + 1 < input.size(); ++i) length += (input[i + 1] - input[i]).norm();
-  EXPECT_LE(o.length_error, 1e-9);
-  EXPECT_GE(o.vertex_growth, -1e-13 * length);
-  EXPECT_GE(o.bar_growth, -1e-13 * length);
-  EXPECT_GT(o.min_gap, 0.0);
-  if (closed)
-    EXPECT_TRUE(is_convex(r.frames.back()));
-  else
-    EXPECT_TRUE(is_straight(r.frames.back()));
 }
 
 // The bars of random chains and lattice walks completed to a PPT: 2m − 3 edges, every vertex
