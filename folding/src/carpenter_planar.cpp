@@ -57,6 +57,8 @@ class PlanarRun {
     }
     if (!pending_.empty()) record(pending_);
     if (finished(chain_)) result_.status = {StatusCode::Success, closed_ ? "convex" : "straight"};
+    if (std::string why = length_drift(input_.points, closed_, result_.max_length_error); !why.empty())
+      result_.status = {StatusCode::NoProgress, why};
     result_.min_distance_growth = std::isinf(min_growth_) ? 0.0 : min_growth_;
     result_.flips = mechanism_.counts.flips;
     result_.straightenings = mechanism_.counts.straightenings;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "carpenter_planar_velocity.hpp"
@@ -138,6 +139,15 @@ double mean_bar_length(const MergedChain& chain) {
   double mean = 0.0;
   for (double l : chain.length()) mean += l;
   return mean / chain.bars();
+}
+
+std::string length_drift(const Frame2& input, bool closed, double max_length_error) {
+  double shortest = std::numeric_limits<double>::infinity();
+  const std::size_t n = input.size(), bars = closed ? n : n - 1;
+  for (std::size_t i = 0; i < bars; ++i) shortest = std::min(shortest, (input[(i + 1) % n] - input[i]).norm());
+  if (!(max_length_error > 1e-9 * shortest)) return {};
+  return "a bar's length drifted by " + std::to_string(max_length_error) + " (more than 1e-9 of the shortest bar, " +
+         std::to_string(shortest) + "): the frames are not a rigid motion";
 }
 
 // The closed form applies while the bar directions span at most kMonotoneSpread.

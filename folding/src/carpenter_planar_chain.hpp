@@ -3,6 +3,7 @@
 // joints merged, and the geometry of one step (advance, the expansive test, the look-ahead and
 // the halving of steps). carpenter_planar.cpp runs the steps (docs/CARPENTER.md).
 #include <cmath>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -135,6 +136,11 @@ double sign(double x);
 
 // Mean length of the merged bars.
 double mean_bar_length(const MergedChain& chain);
+
+// The contract on the frames' bars (each within 1e-9 of the shortest input bar of its input
+// length) checked on the largest error found, `max_length_error`: empty when it holds, else why
+// not. Every method's steps keep lengths to rounding; this makes a drift a failure, not a result.
+std::string length_drift(const Frame2& input, bool closed, double max_length_error);
 
 // The closed form applies while the bar directions span at most kMonotoneSpread.
 bool monotone(const std::vector<double>& phi);

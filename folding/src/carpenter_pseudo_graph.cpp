@@ -234,8 +234,10 @@ int complete_global(const Points& q, PptGraph& g, Excluded excluded) {
   Vec lo = q[0], hi = q[0];
   for (const Vec& p : q) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const double diameter = (hi - lo).norm();
-  // Vertices bucketed in cells of one mean edge, for the near pairs of the first bands.
-  const double cell = std::max(mean, diameter / 4096.0);
+  // Vertices bucketed in cells of one mean edge, for the near pairs of the first bands; never
+  // more cells than about 4 per vertex (a few long bars around a dense cluster would otherwise
+  // ask for 4096² cells, scanned per vertex in the last bands).
+  const double cell = std::max({mean, diameter / 4096.0, diameter / (2.0 * std::sqrt(static_cast<double>(m)) + 1.0)});
   const int nx = static_cast<int>((hi.x() - lo.x()) / cell) + 1, ny = static_cast<int>((hi.y() - lo.y()) / cell) + 1;
   std::vector<std::vector<int>> bucket(static_cast<std::size_t>(nx) * ny);
   auto cx = [&](int a) { return std::min(nx - 1, static_cast<int>((q[a].x() - lo.x()) / cell)); };

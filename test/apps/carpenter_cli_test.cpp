@@ -176,7 +176,9 @@ TEST(CarpenterCli, MethodPseudoStraightensWithFlipsCounted) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["method"].get<std::string>(), "pseudo");
   EXPECT_TRUE(j["straight"].get<bool>());
-  EXPECT_GE(j["flips"].get<std::size_t>() + j["straightenings"].get<std::size_t>(), 1u) << j.dump();
+  // The spiral takes flips and joints merged at events (2 and 30 when measured).
+  EXPECT_GE(j["flips"].get<std::size_t>(), 1u) << j.dump();
+  EXPECT_GE(j["straightenings"].get<std::size_t>(), 1u) << j.dump();
   EXPECT_LE(j["pseudo_lp_steps"].get<std::size_t>(), j["steps"].get<std::size_t>());
   EXPECT_GE(j["min_distance_growth"].get<double>(), -1e-12);
   EXPECT_LE(j["max_length_error"].get<double>(), 1e-9);

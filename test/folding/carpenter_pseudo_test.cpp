@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "../../folding/src/carpenter_planar_chain.hpp"
 #include "../../folding/src/carpenter_pseudo.hpp"
 #include "carpenter_inputs.hpp"
 #include "carpenter_certified.hpp"
@@ -105,6 +106,18 @@ TEST(CarpenterPseudo, Deterministic) {
 }
 
 // The method's name, and the same bad-input errors as the other methods.
+// Frames whose bars drifted past the contract (1e-9 of the shortest input bar) are a failure,
+// whatever the method: the guard every run's status passes.
+TEST(CarpenterPseudo, BarsThatDriftFailTheRun) {
+  using Vec = Eigen::Vector2d;
+  const Frame2 square = {Vec(0, 0), Vec(2, 0), Vec(2, 1), Vec(0, 1)};  // shortest bar 1 (closed)
+  EXPECT_TRUE(foldkit::folding::planar_detail::length_drift(square, true, 0.9e-9).empty());
+  EXPECT_NE(foldkit::folding::planar_detail::length_drift(square, true, 1.1e-9).find("drifted"), std::string::npos);
+  EXPECT_FALSE(foldkit::folding::planar_detail::length_drift(square, false, 1.1e-9).empty());
+  const Frame2 open = {Vec(0, 0), Vec(2, 0), Vec(2, 1.5)};  // shortest bar 1.5 (open: no closing bar)
+  EXPECT_TRUE(foldkit::folding::planar_detail::length_drift(open, false, 1.4e-9).empty());
+}
+
 TEST(CarpenterPseudo, NameAndBadInput) {
   EXPECT_EQ(parse_carpenter_method("pseudo"), CarpenterPlanarMethod::PseudoTriangulation);
   EXPECT_STREQ(to_string(CarpenterPlanarMethod::PseudoTriangulation), "pseudo");
