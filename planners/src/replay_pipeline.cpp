@@ -45,7 +45,9 @@ std::optional<simulation::SimulationReport> ReplayPipeline::finish() {
   ready_.notify_one();
   if (thread_.joinable()) thread_.join();
   if (error_) std::rethrow_exception(error_);
-  return std::move(report_);
+  std::optional<simulation::SimulationReport> report = std::move(report_);
+  report_.reset();  // a second finish() has nothing to give
+  return report;
 }
 
 // The replay thread: events in the order pushed, until closed (the report) or cancelled (none).

@@ -267,14 +267,19 @@ SequenceReplay::SequenceReplay(const geometry::CreasePattern& pattern, const Sim
 SequenceReplay::~SequenceReplay() = default;
 
 void SequenceReplay::add(const geometry::FoldEvent& event, std::size_t known) {
-  if (!impl_) throw std::logic_error("SequenceReplay::add: the replay has finished");
-  if (!impl_->begun) impl_->replay.begin(event.number);
-  impl_->begun = true;
-  impl_->replay.replay(event, known);
+  if (!impl_) throw std::logic_error("SequenceReplay::add: the replay has finished (or an event threw)");
+  try {
+    if (!impl_->begun) impl_->replay.begin(event.number);
+    impl_->begun = true;
+    impl_->replay.replay(event, known);
+  } catch (...) {
+    impl_.reset();  // half an event replayed: no report simulate() would give can follow
+    throw;
+  }
 }
 
 SimulationReport SequenceReplay::finish() {
-  if (!impl_) throw std::logic_error("SequenceReplay::finish: the replay has finished");
+  if (!impl_) throw std::logic_error("SequenceReplay::finish: the replay has finished (or an event threw)");
   if (!impl_->begun) impl_->replay.begin(0);
   SimulationReport report = impl_->replay.end();
   impl_.reset();

@@ -115,6 +115,11 @@ TEST(ReplayPipeline, CancelledOrAbandonedEndsWithoutReport) {
   cancelled.push(strip_state(strip, 0.1, -0.1));
   cancelled.cancel();
   EXPECT_FALSE(cancelled.finish().has_value());
+  // A finished pipeline gives its report once.
+  ReplayPipeline once(setup, o);
+  once.push(strip_state(strip, 0.1, -0.1));
+  EXPECT_TRUE(once.finish().has_value());
+  EXPECT_FALSE(once.finish().has_value());
 }
 
 // What the replay throws on its thread (an event too slow for the step limit) is what finish()

@@ -92,6 +92,9 @@ TEST(SequenceReplay, SequenceErrorOnTheEventThatCausesIt) {
   SequenceReplay replay(strip);
   replay.add({1, {{1, 0.5, 1.0, 0}}}, 2);
   EXPECT_THROW(replay.add({2, {{2, 0.5, 0.0, 7}}}, 2), SequenceError);
+  // Half an event was replayed: the replay is spent, no report follows.
+  EXPECT_THROW(replay.add({3, {{1, 0.2, 1.0, 0}}}, 3), std::logic_error);
+  EXPECT_THROW(replay.finish(), std::logic_error);
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include "foldkit/geometry/generators.hpp"
 #include <cmath>
 #include <random>
@@ -16,7 +17,7 @@ inline geometry::ActorSpec square_actor(int id, double x, double y, double size 
 }
 
 inline geometry::JointSpec joint(int id, geometry::Vec2 p, geometry::Vec2 q, int a1, int a2) {
-  return {id, {p, q}, {a1, a2}, 1.0, 0.1, geometry::Assignment::Unassigned, 0};
+  return {id, {p, q}, {a1, a2}, 1.0, 0.1, geometry::Assignment::Unassigned, 0, std::nullopt};
 }
 
 // 2 × 2 unit squares (IDs 1..4 counter-clockwise from the lower left) with their four creases.

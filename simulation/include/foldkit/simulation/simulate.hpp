@@ -170,7 +170,8 @@ class SequenceReplay {
   /// Replays the next event from the state the events before it left (the first from flat).
   /// @param event  the event (angles in radians, velocities in radians per second)
   /// @param known  how many events the progress reports as the whole sequence (options.progress)
-  /// @throws SequenceError as simulate(); std::logic_error after finish()
+  /// @throws SequenceError as simulate(), and the replay is then spent; std::logic_error after
+  ///         finish() or such an error
   void add(const geometry::FoldEvent& event, std::size_t known);
   /// The report of every event added, as simulate() of their sequence returns it; the replay is
   /// then spent.
