@@ -299,6 +299,24 @@ class PlanarRun {
       if (chain_.is_joint(a)) carried_speed_[chain_.key(a)] = joint_rate(chain_, omega, a);
   }
 
+  // The turn budget grows while steps pass at once and is halved per failed try.
+  void adapt_budget(int halvings) {
+    turn_budget_ = halvings == 0 ? std::min(turn_budget_ * 1.5, options_.max_turn) : turn_budget_ * std::pow(0.5, halvings);
+  }
+
+  // No step length keeps every distance growing: the run ends here (false, status set).
+  bool stalled() {
+    result_.status = {StatusCode::NoProgress, "no step keeps every distance growing at step " + std::to_string(result_.steps)};
+    return false;
+  }
+
+  // An accepted step's positions become the chain's (its merges and frame follow).
+  void take(const Frame2& next) {
+    chain_.set_q(next);
+    ++result_.steps;
+    if (options_.progress) options_.progress({static_cast<double>(result_.steps), 0.0, "steps", -1.0});
+  }
+
   // One LP step: solve for the velocity, size the step, take it, merge what it straightened.
   // False (with the status set) when the run cannot go on.
   bool lp_step() {
@@ -316,22 +334,17 @@ class PlanarRun {
     const int free_halvings = look_ahead(chain_, field.v, theta0, h);
     const StepOutcome step = try_steps(chain_, field.v, omega, theta0, h);
     const int halvings = std::max(0, step.attempts - 1 - free_halvings);
-    turn_budget_ = halvings == 0 ? std::min(turn_budget_ * 1.5, options_.max_turn) : turn_budget_ * std::pow(0.5, halvings);
+    adapt_budget(halvings);
     if (!step.accepted && carried) {
       // A carried field that no step can follow is no verdict: the global LP takes this step.
       carried_speed_.clear();
       turn_budget_ = budget;
       return true;
     }
-    if (!step.accepted) {
-      result_.status = {StatusCode::NoProgress, "no step keeps every distance growing at step " + std::to_string(result_.steps)};
-      return false;
-    }
+    if (!step.accepted) return stalled();
     const int m = chain_.vertices();
-    chain_.set_q(step.next);
-    ++result_.steps;
+    take(step.next);
     if (held_) ++result_.held_steps;
-    if (options_.progress) options_.progress({static_cast<double>(result_.steps), 0.0, "steps", -1.0});
     merge_after_step(step.next, step.event_joint, m);
     record_step();
     return true;
@@ -369,15 +382,10 @@ class PlanarRun {
     }
     const pseudo_detail::PseudoStep step = mechanism_.step(chain_, v, turn_budget_ / fastest);
     const int halvings = step.attempts - 1;
-    turn_budget_ = halvings == 0 ? std::min(turn_budget_ * 1.5, options_.max_turn) : turn_budget_ * std::pow(0.5, halvings);
-    if (!step.accepted) {
-      result_.status = {StatusCode::NoProgress, "no step keeps every distance growing at step " + std::to_string(result_.steps)};
-      return false;
-    }
+    adapt_budget(halvings);
+    if (!step.accepted) return stalled();
     const int m = chain_.vertices();
-    chain_.set_q(step.next);
-    ++result_.steps;
-    if (options_.progress) options_.progress({static_cast<double>(result_.steps), 0.0, "steps", -1.0});
+    take(step.next);
     int merged = -1;
     if (step.event_vertex >= 0) {
       const bool closed = chain_.closed();
