@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include "random_corruption.hpp"
+
 #include "fold_sequence_equal.hpp"
 
 #include "foldkit/geometry/fold_sequence.hpp"
@@ -135,13 +137,7 @@ TEST(CmmlPlain, RandomCorruptionsDeclineOrAgree) {
   std::mt19937 rng(5);
   int read = 0;
   for (int trial = 0; trial < 3000; ++trial) {
-    std::string t = base;
-    const int edits = 1 + static_cast<int>(rng() % 3);
-    for (int k = 0; k < edits; ++k) {
-      const std::size_t at = rng() % t.size();
-      if (rng() % 3 == 0) t.erase(at, 1 + rng() % 4);
-      else t.insert(at, inserts[rng() % inserts.size()]);
-    }
+    const std::string t = foldkit::test::corrupted(base, inserts, rng);
     SCOPED_TRACE("trial " + std::to_string(trial));
     read += plain_agrees(t);
   }

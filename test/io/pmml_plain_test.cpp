@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "random_corruption.hpp"
+
 #include "foldkit/geometry/generators.hpp"
 #include "foldkit/io/parse_error.hpp"
 #include "foldkit/io/pmml.hpp"
@@ -190,13 +192,7 @@ TEST(PmmlPlain, RandomCorruptionsDeclineOrAgree) {
   std::mt19937 rng(7);
   int read = 0;
   for (int trial = 0; trial < 3000; ++trial) {
-    std::string t = base;
-    const int edits = 1 + static_cast<int>(rng() % 3);
-    for (int k = 0; k < edits; ++k) {
-      const std::size_t at = rng() % t.size();
-      if (rng() % 3 == 0) t.erase(at, 1 + rng() % 4);
-      else t.insert(at, inserts[rng() % inserts.size()]);
-    }
+    const std::string t = foldkit::test::corrupted(base, inserts, rng);
     SCOPED_TRACE("trial " + std::to_string(trial));
     read += plain_agrees(t);
   }
