@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <string>
@@ -17,34 +18,39 @@ std::string format_number(double value) {
   return ec == std::errc() ? std::string(buf, end) : std::string("nan");
 }
 
-double degrees_to_radians(double degrees) { return degrees * (M_PI / 180.0); }
+// Inline here: the exported function is not inlined into exact_degrees' nine calls per angle
+// (it could be interposed), and the call was a tenth of writing a CMML.
+static inline double to_radians(double degrees) { return degrees * (M_PI / 180.0); }
+double degrees_to_radians(double degrees) { return to_radians(degrees); }
 
 namespace {
 
-// Significant digits of the shortest decimal that reads back as `value`.
+// Significant digits of the shortest decimal that reads back as `value`. (Counted on the
+// scientific form: the fixed form of a large integer spells out all its digits, not the shortest.)
 int shortest_digits(double value) {
-  char buf[32];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::scientific);
+  char buf[kDegreesChars];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::scientific);
   int digits = 0;
   for (const char* c = buf; c != end && *c != 'e'; ++c) digits += *c >= '0' && *c <= '9';
   return ec == std::errc() ? digits : 17;
 }
 
-// Fewest significant digits whose reading maps back to exactly `radians`, if any does. The
-// preimage need not be the rounded product radians·180/π itself, so its neighbours are tried.
-// A decimal reads as one double; so the fewest digits that map back are the shortest
-// round-trip form (to_chars without precision) of the neighbour that maps back with the
-// fewest. Trying every precision 1…17 on every neighbour gave the same answer at ~150 conversions
-// per angle, which made writing a large fold's CMML slower than folding it
-// (NumberFormat.DegreesMatchEveryPrecisionSearch keeps that search as the oracle).
-std::optional<std::string> exact_degrees(double radians) {
+// Fewest significant digits whose reading maps back to exactly `radians`, if any does, written
+// to `out` (its length; 0 for none). The preimage need not be the rounded product
+// radians·180/π itself, so its neighbours are tried. A decimal reads as one double; so the
+// fewest digits that map back are the shortest round-trip form (to_chars without precision) of
+// the neighbour that maps back with the fewest. Trying every precision 1…17 on every neighbour
+// gave the same answer at ~150 conversions per angle, which made writing a large fold's CMML
+// slower than folding it (NumberFormat.DegreesMatchEveryPrecisionSearch keeps that search as the
+// oracle). `radians` is not 0, so no candidate that maps back is ±0.
+std::size_t exact_degrees(double radians, char* out) {
   const double degrees = radians * (180.0 / M_PI);
   std::optional<double> best;
   int best_digits = 0;
   auto consider = [&](double d) {
-    if (degrees_to_radians(d) != radians) return;
+    if (to_radians(d) != radians) return;
     const int digits = shortest_digits(d);
-    if (!best || digits < best_digits) best = d, best_digits = digits;
+    if (!best || digits < best_digits) best = d, best_digits = digits;  // ties keep the earlier, nearer one
   };
   consider(degrees);
   double up = degrees, down = degrees;
@@ -52,21 +58,32 @@ std::optional<std::string> exact_degrees(double radians) {
     consider(up = std::nextafter(up, HUGE_VAL));
     consider(down = std::nextafter(down, -HUGE_VAL));
   }
-  if (!best) return std::nullopt;
-  return format_number(*best);
+  if (!best) return 0;
+  const auto [end, ec] = std::to_chars(out, out + kDegreesChars, *best);
+  return ec == std::errc() ? static_cast<std::size_t>(end - out) : 0;
 }
 
 }  // namespace
 
-std::string format_degrees(double radians) {
-  if (radians == 0.0) return "0";
+std::size_t format_degrees(double radians, char* out) {
+  if (radians == 0.0) {
+    out[0] = '0';
+    return 1;
+  }
   // "30" read from a file is written as "30" again. Not every double in radians is d·π/180 for
   // a decimal d: those are written as the degrees of the nearest value that is, which then
   // reads back to itself, so a written file is stable under read and write.
-  if (auto exact = exact_degrees(radians)) return *exact;
-  const double nearest = degrees_to_radians(radians * (180.0 / M_PI));
-  if (auto exact = exact_degrees(nearest)) return *exact;
-  return format_number(radians * (180.0 / M_PI));
+  if (const std::size_t size = exact_degrees(radians, out)) return size;
+  if (const std::size_t size = exact_degrees(degrees_to_radians(radians * (180.0 / M_PI)), out)) return size;
+  const auto [end, ec] = std::to_chars(out, out + kDegreesChars, radians * (180.0 / M_PI));
+  if (ec == std::errc()) return static_cast<std::size_t>(end - out);
+  std::memcpy(out, "nan", 3);
+  return 3;
+}
+
+std::string format_degrees(double radians) {
+  char text[kDegreesChars];
+  return std::string(text, format_degrees(radians, text));
 }
 
 NumberList parse_numbers(std::string_view text) {

@@ -2,6 +2,7 @@
 /// @file
 /// Number text of foldkit's file formats: shortest round-trip decimals, degrees of angles kept
 /// in radians, and strict number parsing.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -17,6 +18,11 @@ std::string format_number(double value);
 /// there is one (always for angles read from a file, so they are written back unchanged), else
 /// the nearest degrees; the reading is then within one unit in the last place.
 std::string format_degrees(double radians);
+/// The most characters format_degrees writes.
+inline constexpr std::size_t kDegreesChars = 32;
+/// format_degrees(radians) into `out` (room for kDegreesChars), without allocating: for writers
+/// of hundreds of thousands of angles. @return the text's length
+std::size_t format_degrees(double radians, char* out);
 /// degrees · π/180, the conversion every reader uses.
 double degrees_to_radians(double degrees);
 
