@@ -41,9 +41,10 @@ PlanResult& finish_plan(const PlanSetup& setup, const PlanOptions& options, std:
   } wait;
   if (options.sequence_ready) wait.reading = options.sequence_ready(result.sequence);
   if (options.replay) {
-    // The pipeline replayed the events of these waypoints as they came (the count guards that).
+    // The pipeline replayed events as the waypoints came; its report is the plan's only when those
+    // events are exactly the sequence's (finish() compares them), else the sequence is replayed here.
     std::optional<simulation::SimulationReport> replayed;
-    if (pipeline && pipeline->active() && pipeline->events() == result.sequence.events.size()) replayed = pipeline->finish();
+    if (pipeline) replayed = pipeline->finish(result.sequence);
     if (replayed) {
       result.replay = std::move(replayed);
     } else {

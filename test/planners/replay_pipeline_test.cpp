@@ -1,14 +1,22 @@
 // The plan's replay pipeline (planners/src/replay_pipeline.hpp): the replay of waypoints handed
 // over one at a time, on another thread, against simulate() of their whole sequence (the oracle),
-// for plans the simulator accepts and waypoints it rejects; and plans that do not depend on the
-// threads' timing.
+// for plans the simulator accepts and waypoints it rejects; plans that do not depend on the
+// threads' timing; its report used only for exactly the events it replayed; and no thread to be
+// had.
 #include <atomic>
 #include <cmath>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <system_error>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "../../planners/src/plan_finish.hpp"
 #include "../../planners/src/replay_pipeline.hpp"
 #include "foldkit/geometry/closure.hpp"
 #include "foldkit/geometry/generators.hpp"
@@ -41,7 +49,7 @@ void expect_pipeline_is_simulate(const CreasePattern& p, const std::vector<FoldS
   for (const FoldState& w : waypoints) pipeline.push(w);
   const foldkit::geometry::FoldSequence seq = foldkit::planners::plan_sequence(setup, options, waypoints);
   EXPECT_EQ(pipeline.events(), seq.events.size());
-  const auto piped = pipeline.finish();
+  const auto piped = pipeline.finish(seq);
   ASSERT_TRUE(piped.has_value());
   sim::SimulationOptions so;
   so.collisions = options.collisions;
@@ -86,6 +94,19 @@ TEST(ReplayPipeline, UnclosedWaypointsSameReportAsSimulate) {
   expect_pipeline_is_simulate(miura, w, PlanOptions{});
 }
 
+// A square twist folded along a straight line in angle space: the states between the waypoints do
+// not close, and crossings that the nearest closed state lacks are listed as numerical ones.
+TEST(ReplayPipeline, NumericalCrossingsSameReportAsSimulate) {
+  const CreasePattern twist = build_or_throw(gen::square_twist());
+  const FoldState goal = foldkit::test::folded_along_assignment(twist, 1.5);
+  std::vector<FoldState> w;
+  for (int k = 1; k <= 8; ++k) w.push_back(FoldState{goal.angles * (k / 8.0)});
+  PlanSetup setup;
+  setup.pattern = &twist;
+  EXPECT_FALSE(sim::simulate(twist, foldkit::planners::plan_sequence(setup, PlanOptions{}, w)).numerical.empty());
+  expect_pipeline_is_simulate(twist, w, PlanOptions{});
+}
+
 TEST(ReplayPipeline, InactiveWithoutReplayOrWithAStartSequence) {
   const CreasePattern strip = build_or_throw(gen::strip(3));
   PlanSetup setup;
@@ -96,7 +117,7 @@ TEST(ReplayPipeline, InactiveWithoutReplayOrWithAStartSequence) {
   EXPECT_FALSE(off.active());
   off.push(strip_state(strip, 0.1, -0.1));
   EXPECT_EQ(off.events(), 0u);
-  EXPECT_FALSE(off.finish().has_value());
+  EXPECT_FALSE(off.finish(foldkit::planners::plan_sequence(setup, none, {strip_state(strip, 0.1, -0.1)})).has_value());
   PlanOptions started;
   started.start_sequence.events.push_back({1, {{1, 0.1, 1.0, 0}}});
   EXPECT_FALSE(ReplayPipeline(setup, started).active());
@@ -111,15 +132,17 @@ TEST(ReplayPipeline, CancelledOrAbandonedEndsWithoutReport) {
     ReplayPipeline abandoned(setup, o);  // the destructor stops and joins
     for (int k = 1; k <= 10; ++k) abandoned.push(strip_state(strip, 0.05 * k, -0.05 * k));
   }
+  const std::vector<FoldState> w = {strip_state(strip, 0.1, -0.1)};
+  const auto seq = foldkit::planners::plan_sequence(setup, o, w);
   ReplayPipeline cancelled(setup, o);
-  cancelled.push(strip_state(strip, 0.1, -0.1));
+  cancelled.push(w[0]);
   cancelled.cancel();
-  EXPECT_FALSE(cancelled.finish().has_value());
+  EXPECT_FALSE(cancelled.finish(seq).has_value());
   // A finished pipeline gives its report once.
   ReplayPipeline once(setup, o);
-  once.push(strip_state(strip, 0.1, -0.1));
-  EXPECT_TRUE(once.finish().has_value());
-  EXPECT_FALSE(once.finish().has_value());
+  once.push(w[0]);
+  EXPECT_TRUE(once.finish(seq).has_value());
+  EXPECT_FALSE(once.finish(seq).has_value());
 }
 
 // What the replay throws on its thread (an event too slow for the step limit) is what finish()
@@ -133,8 +156,9 @@ TEST(ReplayPipeline, ErrorOnTheReplayThreadIsRethrownByFinish) {
   const std::vector<FoldState> w = {strip_state(strip, 0.1, -0.1), strip_state(strip, 0.2, -0.2)};
   ReplayPipeline pipeline(setup, o);
   for (const FoldState& s : w) pipeline.push(s);
-  EXPECT_THROW(pipeline.finish(), sim::SequenceError);
-  EXPECT_THROW(sim::simulate(strip, foldkit::planners::plan_sequence(setup, o, w), sim::SimulationOptions{}), sim::SequenceError);
+  const auto seq = foldkit::planners::plan_sequence(setup, o, w);
+  EXPECT_THROW(pipeline.finish(seq), sim::SequenceError);
+  EXPECT_THROW(sim::simulate(strip, seq, sim::SimulationOptions{}), sim::SequenceError);
 }
 
 // A plan's replay (through the pipeline: its progress comes from another thread) is simulate() of
@@ -161,6 +185,124 @@ TEST(ReplayPipeline, PlansReplayedAsSimulateAndRepeatable) {
   foldkit::test::expect_same_report(*a.replay, *b.replay);
   ASSERT_EQ(a.waypoints.size(), b.waypoints.size());
   for (std::size_t i = 0; i < a.waypoints.size(); ++i) EXPECT_EQ(a.waypoints[i].angles, b.waypoints[i].angles) << i;
+}
+
+// Pushes `waypoints` into a pipeline and returns what finish() gives for `sequence`.
+std::optional<sim::SimulationReport> finish_with(const PlanSetup& setup, const PlanOptions& o, const std::vector<FoldState>& waypoints,
+                                                 const foldkit::geometry::FoldSequence& sequence) {
+  ReplayPipeline pipeline(setup, o);
+  for (const FoldState& s : waypoints) pipeline.push(s);
+  return pipeline.finish(sequence);
+}
+
+// finish() gives a report only for exactly the events it replayed: any change of a number, a
+// joint, a line, or of an angle or a speed in its last bit (also 0.0 to -0.0) is another sequence.
+TEST(ReplayPipeline, ReportOnlyForExactlyTheEventsReplayed) {
+  const CreasePattern strip = build_or_throw(gen::strip(3));
+  PlanSetup setup;
+  setup.pattern = &strip;
+  const PlanOptions o;
+  std::vector<FoldState> w;
+  // Joint 2 back to 0.0 in the second event, at rest in the last two.
+  for (int k = 1; k <= 4; ++k) w.push_back(strip_state(strip, 0.1 * k, k == 1 ? -0.1 : 0.0));
+  const foldkit::geometry::FoldSequence seq = foldkit::planners::plan_sequence(setup, o, w);
+  ASSERT_EQ(seq.events.size(), 4u);
+  ASSERT_EQ(seq.events[1].folds.size(), 2u);
+  ASSERT_FALSE(std::signbit(seq.events[1].folds[1].angle));
+  ASSERT_EQ(seq.events[1].folds[1].angle, 0.0);
+  ASSERT_EQ(seq.events[3].folds.size(), 1u);
+  EXPECT_TRUE(finish_with(setup, o, w, seq).has_value());
+  using Change = std::function<void(foldkit::geometry::FoldSequence&)>;
+  const std::vector<std::pair<std::string, Change>> changes = {
+      {"number", [](auto& q) { ++q.events[2].number; }},
+      {"joint", [](auto& q) { q.events[3].folds[0].joint_id = 2; }},
+      {"line", [](auto& q) { q.events[1].folds[1].line = 9; }},
+      {"angle", [](auto& q) { q.events[1].folds[0].angle = std::nextafter(q.events[1].folds[0].angle, 1.0); }},
+      {"speed", [](auto& q) { q.events[1].folds[1].speed = std::nextafter(q.events[1].folds[1].speed, 0.0); }},
+      {"-0.0", [](auto& q) { q.events[1].folds[1].angle = -0.0; }},  // == 0.0, not the same bits
+      {"a fold fewer", [](auto& q) { q.events[0].folds.pop_back(); }},
+      {"an event fewer", [](auto& q) { q.events.pop_back(); }},
+      {"an event more", [](auto& q) { q.events.push_back(q.events.back()); }},
+  };
+  for (const auto& [what, change] : changes) {
+    foldkit::geometry::FoldSequence other = seq;
+    change(other);
+    EXPECT_FALSE(finish_with(setup, o, w, other).has_value()) << what;
+  }
+}
+
+// What finish_plan makes of `waypoints` with `pipeline` (the strip has no loops: every state closes).
+PlanResult finished(const PlanSetup& setup, const PlanOptions& o, const std::vector<FoldState>& waypoints, ReplayPipeline& pipeline) {
+  PlanResult result;
+  foldkit::planners::detail::finish_plan(setup, o, waypoints, result, "solved", &pipeline);
+  return result;
+}
+
+PlanSetup strip_setup(const CreasePattern& strip) {
+  PlanSetup setup;
+  setup.pattern = &strip;
+  setup.system = std::make_shared<foldkit::geometry::ClosureSystem>(strip);
+  return setup;
+}
+
+// The pipeline replayed other waypoints than the plan's (as many events): the plan's replay is
+// simulate() of its own sequence, not the pipeline's report.
+TEST(ReplayPipeline, PlanReplaysItselfWhenThePipelineReplayedOtherEvents) {
+  const CreasePattern strip = build_or_throw(gen::strip(3));
+  const PlanSetup setup = strip_setup(strip);
+  const PlanOptions o;
+  std::vector<FoldState> pushed, planned;
+  for (int k = 1; k <= 6; ++k) {
+    pushed.push_back(strip_state(strip, 0.1 * k, -0.1 * k));
+    planned.push_back(strip_state(strip, 0.1 * k, -0.05 * k));
+  }
+  ReplayPipeline pipeline(setup, o);
+  for (const FoldState& s : pushed) pipeline.push(s);
+  const PlanResult r = finished(setup, o, planned, pipeline);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_EQ(r.sequence.events.size(), pipeline.events());  // a count would not tell them apart
+  ASSERT_TRUE(r.replay.has_value());
+  foldkit::test::expect_same_report(*r.replay, sim::simulate(strip, r.sequence, sim::SimulationOptions{}));
+  EXPECT_EQ(r.replay->final_state.angles, planned.back().angles);
+}
+
+// No thread to be had (std::thread throws std::system_error under resource limits): the pipeline
+// is inactive, and the plan is replayed after its waypoints as without one.
+TEST(ReplayPipeline, NoThreadLeavesItInactiveAndThePlanReplayed) {
+  const CreasePattern strip = build_or_throw(gen::strip(3));
+  const PlanSetup setup = strip_setup(strip);
+  const PlanOptions o;
+  std::vector<FoldState> w;
+  for (int k = 1; k <= 6; ++k) w.push_back(strip_state(strip, 0.1 * k, -0.1 * k));
+  int starts = 0;
+  const foldkit::planners::detail::ThreadStarter refused = [&](std::function<void()>) -> std::thread {
+    ++starts;
+    throw std::system_error(std::make_error_code(std::errc::resource_unavailable_try_again), "no thread");
+  };
+  std::unique_ptr<ReplayPipeline> pipeline;
+  ASSERT_NO_THROW(pipeline = std::make_unique<ReplayPipeline>(setup, o, refused));
+  EXPECT_EQ(starts, 1);
+  EXPECT_FALSE(pipeline->active());
+  for (const FoldState& s : w) pipeline->push(s);
+  EXPECT_EQ(pipeline->events(), 0u);
+  const PlanResult r = finished(setup, o, w, *pipeline);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_TRUE(r.replay.has_value());
+  foldkit::test::expect_same_report(*r.replay, sim::simulate(strip, r.sequence, sim::SimulationOptions{}));
+  // A starter that gives no thread (not joinable) leaves it inactive too.
+  EXPECT_FALSE(ReplayPipeline(setup, o, [](std::function<void()>) { return std::thread(); }).active());
+  // A starter that gives a thread is the pipeline's: the replay runs on it.
+  const foldkit::planners::detail::ThreadStarter given = [&](std::function<void()> body) {
+    ++starts;
+    return std::thread(std::move(body));
+  };
+  ReplayPipeline started(setup, o, given);
+  EXPECT_EQ(starts, 2);
+  EXPECT_TRUE(started.active());
+  for (const FoldState& s : w) started.push(s);
+  const PlanResult piped = finished(setup, o, w, started);
+  ASSERT_TRUE(piped.replay.has_value());
+  foldkit::test::expect_same_report(*piped.replay, *r.replay);
 }
 
 }  // namespace
