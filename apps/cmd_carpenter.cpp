@@ -68,6 +68,35 @@ int run_spherical(const CarpenterArgs& opt) {
   return r.status.ok() ? kOk : kNoPlan;
 }
 
+// `--json` of a planar chain: every metric of CarpenterPlanarResult under its own name, as
+// Python's CarpenterResult has it (docs/CARPENTER.md, Metrics). Unpacked member by member so that
+// a metric added to the result stops this from compiling until it is printed here too.
+nlohmann::json planar_json(const CarpenterArgs& opt, std::size_t vertices, const folding::CarpenterPlanarResult& r) {
+  const auto& [frames, closed, status, steps, lp_solves, carried_steps, window_lp_solves, held_steps, max_struts, flips,
+               straightenings, pseudo_lp_steps, certificate_seconds, seconds, max_length_error, min_distance_growth] = r;
+  nlohmann::json j{{"closed", closed},
+                   {"vertices", vertices},
+                   {"method", opt.method},
+                   {"steps", steps},
+                   {"frames", frames.size()},
+                   {"lp_solves", lp_solves},
+                   {"window_lp_solves", window_lp_solves},
+                   {"carried_steps", carried_steps},
+                   {"held_steps", held_steps},
+                   {"max_struts", max_struts},
+                   {"flips", flips},
+                   {"straightenings", straightenings},
+                   {"pseudo_lp_steps", pseudo_lp_steps},
+                   {"certificate_seconds", certificate_seconds},
+                   {"seconds", seconds},
+                   {"time", seconds},  // deprecated: the name of `seconds` before issue 37
+                   {"max_length_error", max_length_error},
+                   {"min_distance_growth", min_distance_growth},
+                   {closed ? "convex" : "straight", status.ok()}};  // deprecated: status
+  add_status(j, status);
+  return j;
+}
+
 int run_planar(const CarpenterArgs& opt) {
   if (!opt.output.empty() && !is_output(opt.output, ".cmml") && !is_output(opt.output, ".json") && !is_output(opt.output, ".csv"))
     throw UsageError(opt.output + ": unknown output format (expected .cmml, .json or .csv, each optionally .gz)");
@@ -101,27 +130,7 @@ int run_planar(const CarpenterArgs& opt) {
               << r.seconds << " s)\n";
   else
     std::cerr << opt.chain << ": not " << goal << ": " << r.status.message << '\n';
-  if (opt.json) {
-    nlohmann::json j{{"closed", opt.closed},
-                     {"vertices", chain.points.size()},
-                     {"steps", r.steps},
-                     {"frames", r.frames.size()},
-                     {"lp_solves", r.lp_solves},
-                     {"window_lp_solves", r.window_lp_solves},
-                     {"carried_steps", r.carried_steps},
-                     {"held_steps", r.held_steps},
-                     {"flips", r.flips},
-                     {"straightenings", r.straightenings},
-                     {"pseudo_lp_steps", r.pseudo_lp_steps},
-                     {"method", opt.method},
-                     {"seconds", r.seconds},
-                     {"time", r.seconds},  // deprecated: the name of `seconds` before issue 37
-                     {"max_length_error", r.max_length_error},
-                     {"min_distance_growth", r.min_distance_growth},
-                     {goal, r.status.ok()}};  // deprecated: status
-    add_status(j, r.status);
-    print_json(j);
-  }
+  if (opt.json) print_json(planar_json(opt, chain.points.size(), r));
   return r.status.ok() ? kOk : kNoPlan;
 }
 

@@ -13,6 +13,8 @@
 #include "cli_common.hpp"
 #include "foldkit/io/atomic_write.hpp"
 #include "foldkit/io/formats.hpp"
+#include "foldkit/planners/plan.hpp"
+#include "foldkit/planners/planner_factory.hpp"
 
 // Last: httplib.h brings <resolv.h>, whose macro `_res` breaks Eigen's headers included after it.
 #include <httplib.h>
@@ -156,6 +158,18 @@ json listing(const fs::path& folder, const RootedPaths& paths) {
   return {{"folder", paths.relative(folder) == "." ? "" : paths.relative(folder)}, {"entries", entries}};
 }
 
+// The planners `plan --planner` takes, from the planners' own table (planner_names()), so that the
+// page offers what the CLI plans with and a planner added there is served with no other edit.
+// `default`: PlanOptions's, the one a plan without `planner` runs; `refused`: why make_planner()
+// refuses one on any crease pattern (planner_refusal()), empty for one it makes.
+json served_planners() {
+  const std::string chosen = planners::canonical_planner(planners::PlanOptions{}.planner);
+  json list = json::array();
+  for (const std::string& name : planners::planner_names())
+    list.push_back({{"name", name}, {"default", name == chosen}, {"refused", planners::planner_refusal(name)}});
+  return list;
+}
+
 }  // namespace
 
 ServeApi::ServeApi(ServeOptions options)
@@ -256,7 +270,8 @@ void ServeApi::index(httplib::Response& res) const {
                        {"reads_patterns", io::reads_patterns(f)},
                        {"writes_patterns", io::writes_patterns(f)},
                        {"sequence", f.sequence}});
-  reply(res, 200, {{"foldkit", "0.1.0"}, {"verbs", verbs}, {"formats", formats}, {"files", files_}, {"max_body", options_.max_body},
+  reply(res, 200, {{"foldkit", "0.1.0"}, {"verbs", verbs}, {"formats", formats}, {"planners", served_planners()}, {"files", files_},
+                   {"max_body", options_.max_body},
                    {"max_time", options_.limits.max_time}, {"max_plan_time", options_.limits.max_plan_time},
                    {"workers", options_.workers}, {"queue", options_.queue}});
 }

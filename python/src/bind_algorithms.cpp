@@ -154,6 +154,15 @@ py::array_t<double> frames_array(const std::vector<Frame2>& frames) {
   return out;
 }
 
+// CarpenterPlanarResult unpacked member by member: a metric added to it stops this from compiling
+// until it is bound in bind_carpenter() too, under its own name (`foldkit carpenter --json` has
+// the same check; docs/CARPENTER.md, Metrics).
+[[maybe_unused]] void every_carpenter_metric_is_bound(const folding::CarpenterPlanarResult& r) {
+  [[maybe_unused]] const auto& [frames, closed, status, steps, lp_solves, carried_steps, window_lp_solves, held_steps, max_struts,
+                                flips, straightenings, pseudo_lp_steps, certificate_seconds, seconds, max_length_error,
+                                min_distance_growth] = r;
+}
+
 void bind_carpenter(py::module_& m) {
   using R = folding::CarpenterPlanarResult;
   py::class_<R>(m, "CarpenterResult", "Carpenter's rule on a planar chain: an expansive motion to straight (or convex).")
@@ -170,6 +179,8 @@ void bind_carpenter(py::module_& m) {
       .def_readonly("flips", &R::flips, "Flips of the pseudo-triangulation at events (method 'pseudo').")
       .def_readonly("straightenings", &R::straightenings, "Joints merged where two bars aligned (method 'pseudo').")
       .def_readonly("pseudo_lp_steps", &R::pseudo_lp_steps, "Steps the global LP took where no PPT could be built (method 'pseudo').")
+      .def_readonly("certificate_seconds", &R::certificate_seconds,
+                    "Wall-clock seconds of the all-pairs expansiveness check of the steps (method 'pseudo'; 0 otherwise).")
       .def_readonly("seconds", &R::seconds, "Wall-clock seconds of the run.")
       .def_readonly("max_length_error", &R::max_length_error, "Largest bar-length change over the frames.")
       .def_readonly("min_distance_growth", &R::min_distance_growth,

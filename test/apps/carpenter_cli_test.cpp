@@ -184,6 +184,28 @@ TEST(CarpenterCli, MethodPseudoStraightensWithFlipsCounted) {
   EXPECT_LE(j["max_length_error"].get<double>(), 1e-9);
 }
 
+// Every metric of CarpenterPlanarResult is in the JSON under its C++ name, for every method
+// (docs/CARPENTER.md, Metrics; Python's CarpenterResult has the same names and, for the same run,
+// the same values: test_carpenter_metrics_have_one_name_in_python_and_json).
+TEST(CarpenterCli, JsonHasEveryMetricOfTheResult) {
+  const std::string chain = foldkit::test::data_path("carpenter_spiral90.txt");
+  for (const char* method : {"carried", "lp", "pseudo"}) {
+    SCOPED_TRACE(method);
+    const CliResult r = foldkit({"carpenter", chain, "--method", method, "--json"});
+    ASSERT_EQ(r.exit, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    for (const char* key : {"status", "closed", "steps", "frames", "lp_solves", "window_lp_solves", "carried_steps", "held_steps",
+                            "max_struts", "flips", "straightenings", "pseudo_lp_steps", "certificate_seconds", "seconds",
+                            "max_length_error", "min_distance_growth"})
+      EXPECT_TRUE(j.contains(key)) << key << " missing from " << j.dump();
+    // The spiral needs LPs (its held steps, above), each with rows; the certificate is the
+    // pseudo-triangulation's own check, a part of the run's time.
+    EXPECT_GT(j["max_struts"].get<std::size_t>(), 0u) << j.dump();
+    EXPECT_LE(j["certificate_seconds"].get<double>(), j["seconds"].get<double>());
+    EXPECT_EQ(j["certificate_seconds"].get<double>() > 0.0, std::string(method) == "pseudo") << j.dump();
+  }
+}
+
 // Issue 36: a simple 90-point spiral (test/data/carpenter_spiral90.txt) was refused by both methods
 // ("the expansive-motion LP failed at step 0 (infeasible)"); now it straightens, some steps with
 // the spiral's slow centre held rigid (`held_steps`).

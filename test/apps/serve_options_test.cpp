@@ -76,4 +76,43 @@ TEST(ServeOptions, DeprecatedOptionNamesAreServedToo) {
   EXPECT_NE(foldkit::test::slurp(s.path("a.cmml")).find("<Velocity>45</Velocity>"), std::string::npos);
 }
 
+// GET /api lists the planners `plan --planner` takes from the planners' own table: exactly the
+// names `foldkit bench --list` lists (planners::planner_names()), in that order, one of them the
+// default `plan --help` shows, and for each planner the CLI refuses, the CLI's own reason.
+TEST(ServeOptions, PlannersAreTheClisOwn) {
+  Server s("planners");
+  ASSERT_GT(s.port(), 0) << s.log();
+  const auto r = s.client().Get("/api");
+  ASSERT_TRUE(r) << s.log();
+  ASSERT_EQ(r->status, 200) << r->body;
+  const json served = json::parse(r->body)["planners"];
+  const auto list = foldkit({"bench", "--list", "--json"});
+  ASSERT_EQ(list.exit, 0) << list.err;
+  json names = json::array(), defaults = json::array();
+  for (const json& p : served) {
+    names.push_back(p["name"]);
+    if (p["default"].get<bool>()) defaults.push_back(p["name"]);
+  }
+  EXPECT_EQ(names, json::parse(list.out)["planners"]["sampling"]);
+  ASSERT_EQ(defaults.size(), 1u) << served.dump();
+  const std::string help = foldkit({"plan", "--help"}).out;
+  const std::size_t at = help.find("--planner");
+  ASSERT_NE(at, std::string::npos) << help;
+  const std::string planner_line = help.substr(at, help.find('\n', at) - at);
+  EXPECT_NE(planner_line.find("=" + defaults[0].get<std::string>() + " "), std::string::npos) << planner_line;
+
+  ASSERT_EQ(foldkit({"generate", "single-vertex", "--degree", "4", "-o", s.path("v.pmml")}).exit, 0);
+  std::size_t refused = 0;
+  for (const json& p : served) {
+    const std::string why = p["refused"].get<std::string>();
+    if (why.empty()) continue;
+    ++refused;
+    const auto plan =
+        foldkit({"plan", s.path("v.pmml"), "--goal-angles", "1:30", "--planner", p["name"].get<std::string>(), "-o", s.path("p.cmml")});
+    EXPECT_EQ(plan.exit, 2) << p.dump();
+    EXPECT_NE(plan.err.find(why), std::string::npos) << plan.err;
+  }
+  EXPECT_GT(refused, 0u) << "the table's planners that cannot plan on a crease pattern are served with their reason";
+}
+
 }  // namespace

@@ -205,6 +205,34 @@ def test_carpenter_is_expansive_and_matches_cli(cli, tmp_path, method):
     assert np.max(np.abs(end[:, 0] * direction[1] - end[:, 1] * direction[0])) < 1e-6  # straight
 
 
+# Every metric of CarpenterPlanarResult (docs/CARPENTER.md, Metrics), as the C++ result names it.
+CARPENTER_METRICS = {"closed", "steps", "lp_solves", "window_lp_solves", "carried_steps", "held_steps", "max_struts",
+                     "flips", "straightenings", "pseudo_lp_steps", "certificate_seconds", "seconds",
+                     "max_length_error", "min_distance_growth"}
+CARPENTER_TIMES = {"seconds", "certificate_seconds"}  # wall-clock seconds: the two runs' own
+
+
+@pytest.mark.parametrize("method", ["carried", "lp", "pseudo"])
+def test_carpenter_metrics_have_one_name_in_python_and_json(cli, tmp_path, method):
+    pts = random_walk(30, seed=2)
+    chain = tmp_path / "c.txt"
+    chain.write_text("".join(f"{x!r} {y!r}\n" for x, y in pts))
+    rc, j, err = cli("carpenter", chain, "--method", method)
+    assert rc == 0, err
+    r = foldkit.carpenter(foldkit.read_chain(str(chain)), method=method)
+    # Python's result has exactly the metrics besides its frames and status, and the JSON has each.
+    attributes = {a for a in dir(foldkit.CarpenterResult) if not a.startswith("_")}
+    assert attributes - {"frames", "status"} == CARPENTER_METRICS
+    assert CARPENTER_METRICS <= j.keys(), CARPENTER_METRICS - j.keys()
+    # The same run in both: every count and length error equal, the frames counted, the times spent.
+    for name in CARPENTER_METRICS - CARPENTER_TIMES:
+        assert getattr(r, name) == j[name], name
+    assert j["frames"] == len(r.frames) and j["status"] == r.status.code
+    for seconds, certificate in ((r.seconds, r.certificate_seconds), (j["seconds"], j["certificate_seconds"])):
+        assert 0 <= certificate <= seconds
+        assert (certificate > 0) == (method == "pseudo")  # only the pseudo-triangulation checks its steps so
+
+
 def test_carpenter_refuses_an_unknown_method():
     with pytest.raises(ValueError, match="unknown Carpenter method 'fast'"):
         foldkit.carpenter(random_walk(5, seed=1), method="fast")

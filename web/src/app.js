@@ -8,6 +8,7 @@ import { emptySequence, setFold, readCMML, writeCMML, anglesAfterEvents } from '
 import * as session from './session.js';
 import { StateNumbers, SIMULATING } from './numbers.js';
 import { opensPattern, opensSequence } from './formats.js';
+import { fillPlanners } from './planners.js';
 import { opening } from './boot.js';
 import { $, app, files, log, setNumber, task, checkedValid } from './page.js';
 import { showProblemList } from './problems.js';
@@ -264,7 +265,9 @@ async function planNow() {
   const check = await checkNow();
   if (!checkedValid(check)) return;
   if (!app.sequence.events.length) return log('plan needs a goal: set folds whose end state is the goal');
-  const options = { planner: $('planner').value, time: Number($('plan-time').value), seed: Number($('plan-seed').value) };
+  const options = { time: Number($('plan-time').value), seed: Number($('plan-seed').value) };
+  // No name (the server's list did not come): plan runs foldkit's default planner.
+  if ($('planner').value) options.planner = $('planner').value;
   if (!$('collisions').checked) options['no-collision'] = true;
   const out = await task('plan', () => session.plan(app.model, app.sequence, files(), options));
   if (!out) return;
@@ -421,7 +424,10 @@ async function start() {
   editor.snap = { ...editor.snap, grid: Number($('snap-grid').value) || null };
   // The command line's first pattern, then its first sequence, asked for early by boot.js.
   const boot = await task('server', () => opening);
-  if (boot) app.formats = boot.server.formats;
+  if (boot) {
+    app.formats = boot.server.formats;
+    fillPlanners($('planner'), boot.server);
+  }
   if (boot && boot.pattern) {
     $('name').value = boot.name;
     const opened = session.openedEarly(boot);

@@ -340,6 +340,15 @@ test('a Miura-ori drawn from the grid lattice folds as foldkit\'s own Miura-ori 
 test('Plan and Stiffness answer as the CLI does on the files the page saved', limit, async () => {
   const { root, server } = await serve('plan');
   const page = await openApp(suite.browser(), server.url);
+  // The planner list is the server's (GET /api: the planners' own table, which `foldkit bench
+  // --list` lists too), in its order, foldkit's default chosen (the plan below runs it by no
+  // other word), the planners foldkit refuses greyed with the reason as their tooltip.
+  const listed = await page.$$eval('#planner option', (os) => os.map((o) => ({ name: o.value, disabled: o.disabled, title: o.title })));
+  assert.deepEqual(listed.map((o) => o.name), foldkit(['bench', '--list', '--json']).json.planners.sampling);
+  assert.equal(await page.$eval('#planner', (e) => e.value), 'RRTConnect');
+  const served = (await (await fetch(`${server.url}api`)).json()).planners;
+  assert.deepEqual(listed.map((o) => o.title), served.map((p) => p.refused));
+  assert.ok(listed.some((o) => o.disabled) && listed.every((o) => o.disabled === (o.title !== '')), JSON.stringify(listed));
   await generated(page, 'm', 'miura', 'rows=2 cols=2');
   // A closed goal from Fold, then a plan from flat to it: the same planner, time and seed give
   // the CLI's plan, waypoint for waypoint.
@@ -373,6 +382,38 @@ test('Plan and Stiffness answer as the CLI does on the files the page saved', li
   assert.equal(ours.max_displacement, theirs.max_displacement);
   assert.equal(await page.evaluate(() => window.foldkit.view.stats().displacements), theirs.modules.length);
   assert.deepEqual(page.errors, []);
+});
+
+// Without GET /api's answer (or with a server's that lists no planners) the planner list keeps
+// index.html's one choice, by no name: a plan from the page then runs foldkit's default.
+test('Without the server\'s list of planners the page offers foldkit\'s default', limit, async () => {
+  const { server } = await serve('no-planners');
+  const page = await suite.browser().newPage();
+  page.setDefaultTimeout(30000);
+  // GET /api answered 500, in the page itself (puppeteer's request interception stalled the
+  // page's worker here): without module workers the page asks on its own thread (boot.js).
+  await page.evaluateOnNewDocument(() => {
+    window.Worker = undefined;
+    const fetched = window.fetch.bind(window);
+    window.fetch = (url, init) => (String(url) === '/api'
+      ? Promise.resolve(new Response('{"error": "down for the test", "exit": 1}', { status: 500, headers: { 'Content-Type': 'application/json' } }))
+      : fetched(url, init));
+  });
+  await page.goto(server.url, { waitUntil: 'load' });
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 60000 });
+  const choices = () => page.$$eval('#planner option', (os) => os.map((o) => [o.value, o.textContent]));
+  assert.deepEqual(await choices(), [['', 'default']]);
+  assert.match(await page.$eval('#log', (e) => e.textContent), /down for the test/);
+  // An answer without `planners` leaves the list as it is; one with them fills it.
+  const filled = await page.evaluate(async () => {
+    const { fillPlanners } = await import('/src/planners.js');
+    const select = document.getElementById('planner');
+    const none = fillPlanners(select, { verbs: [] });
+    const some = fillPlanners(select, { planners: [{ name: 'A', default: false, refused: 'cannot' }, { name: 'B', default: true, refused: '' }] });
+    return { none, some, value: select.value, disabled: [...select.options].map((o) => o.disabled) };
+  });
+  assert.deepEqual(filled, { none: false, some: true, value: 'B', disabled: [true, false] });
+  await page.close();
 });
 
 // The corners of the model, as sorted "x,y" keys rounded to 1e-9.
