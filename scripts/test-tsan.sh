@@ -12,4 +12,5 @@ cmake -S . -B build-tsan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -
 cmake --build build-tsan -j "$(nproc)" --target foldkit_statespaces_tests foldkit_planners_tests >&2
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$PWD/scripts/tsan.supp"
 ./build-tsan/test/foldkit_statespaces_tests --gtest_filter='FoldValidity.*'
-./build-tsan/test/foldkit_planners_tests --gtest_filter='Plan.ThreadedPlanners*'
+# The plan's own threads: the replay beside the waypoints, the straight plan beside the planner.
+./build-tsan/test/foldkit_planners_tests --gtest_filter='Plan.ThreadedPlanners*:ReplayPipeline.*:StraightPlan.*'

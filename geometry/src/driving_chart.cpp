@@ -163,6 +163,10 @@ Status PassiveSolver::follow(const FoldState& from, const Eigen::VectorXd& targe
   const Eigen::VectorXd d0 = driving_of(x), D = target - d0;
   double t = 0.0, cap = 1.0;
   while (t < 1.0 && D.cwiseAbs().maxCoeff() > 0.0) {
+    if (options_.stop && options_.stop()) {
+      out = x;
+      return {StatusCode::NoProgress, "stopped at " + std::to_string(t) + " of the way"};
+    }
     Eigen::VectorXd v;
     if (!tangent(D, v)) v = Eigen::VectorXd::Zero(x.angles.size());
     for (std::size_t i = 0; i < chart_->driving.size(); ++i) v[chart_->driving[i]] = D[static_cast<Eigen::Index>(i)];

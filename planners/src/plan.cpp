@@ -25,6 +25,7 @@
 #include "cost_history.hpp"
 #include "plan_finish.hpp"
 #include "replay_pipeline.hpp"
+#include "straight_plan.hpp"
 
 namespace foldkit::planners {
 
@@ -134,7 +135,8 @@ PlanSetup make_plan_setup(const geometry::CreasePattern& pattern, const FoldStat
 }
 
 std::optional<std::vector<FoldState>> path_waypoints(const PlanSetup& setup, og::PathGeometric path, const PlanOptions& options,
-                                                     bool to_goal, std::string* why, const PlanSpace::StateSink& sink) {
+                                                     bool to_goal, std::string* why, const PlanSpace::StateSink& sink,
+                                                     const PlanSpace::Stop& stop) {
   // densify() of the whole list is that of each pair of neighbours joined (its projections and
   // gap checks are per pair), so each pair is densified as its second state arrives.
   std::vector<FoldState> dense;
@@ -142,7 +144,7 @@ std::optional<std::vector<FoldState>> path_waypoints(const PlanSetup& setup, og:
   bool jumped = false;
   const auto add = [&](const FoldState& s) {
     ++added;
-    if (jumped) return;
+    if (jumped || (stop && stop())) return;  // stopped: no densifying across what was left out
     if (dense.empty()) {
       dense.push_back(s);
       if (sink) sink(s);
@@ -160,10 +162,17 @@ std::optional<std::vector<FoldState>> path_waypoints(const PlanSetup& setup, og:
   };
   for (const FoldState& s : setup.prefix) add(s);
   bool first = true;  // the path's first state is the prefix's last
-  setup.plan_space->path_states(setup, std::move(path), options.waypoint_step, [&](const FoldState& s) {
-    if (!first) add(s);
-    first = false;
-  });
+  setup.plan_space->path_states(
+      setup, std::move(path), options.waypoint_step,
+      [&](const FoldState& s) {
+        if (!first) add(s);
+        first = false;
+      },
+      stop);
+  if (stop && stop()) {
+    if (why) *why = "the waypoints were stopped";
+    return std::nullopt;
+  }
   // Before a jump, dense.back() is the list's last state.
   if (to_goal && !jumped && (added < 2 || (dense.back().angles - setup.goal.angles).cwiseAbs().maxCoeff() > 1e-6)) add(setup.goal);
   if (jumped) {
@@ -256,13 +265,18 @@ bool already_shortest(const PlanSetup& setup, const og::PathGeometric& path) {
   return path.length() <= direct * (1.0 + 1e-9);
 }
 
-// OMPL's simplifier on the found path, as the options ask.
+// OMPL's simplifier on the found path, as the options ask. A path that is already shortest stays
+// as it is, or, in a space of straight paths (PlanSpace::straight_paths), becomes its two ends:
+// the same motion, which a StraightPlan may have followed while the planner searched.
 void simplify(const PlanSetup& setup, const PlanOptions& options, og::PathGeometric& path) {
   if (options.simplify && parse_objective(options.objective).is_default() && !options.cost_threshold) {
     if (!already_shortest(setup, path)) {
       og::PathSimplifier simplifier(setup.si);
       simplifier.reduceVertices(path);
       simplifier.shortcutPath(path);
+    } else if (setup.plan_space->straight_paths() && path.getStateCount() > 2) {
+      og::PathGeometric ends(setup.si, path.getState(0), path.getState(static_cast<unsigned int>(path.getStateCount() - 1)));
+      path = std::move(ends);
     }
   } else if (options.simplify) {
     // reduceVertices joins any two states a valid motion joins, whatever that costs (it would
@@ -270,6 +284,25 @@ void simplify(const PlanSetup& setup, const PlanOptions& options, og::PathGeomet
     og::PathSimplifier simplifier(setup.si, ob::GoalPtr(), plan_objective(setup, options));
     simplifier.shortcutPath(path);
   }
+}
+
+// The options' experience database read into the setup's space (result.experience filled), or
+// none without one.
+std::unique_ptr<ExperienceDatabase> load_experience(const PlanSetup& setup, const PlanOptions& options, PlanResult& result) {
+  if (!options.experience) return nullptr;
+  if (!parse_objective(options.objective).is_default() || options.cost_threshold)
+    throw std::invalid_argument(
+        "plan: experience recalls by path length only: no other objective, no cost threshold (docs/PLANNING.md)");
+  const ExperienceFramework framework = parse_experience_framework(options.experience->framework);
+  auto db = std::make_unique<ExperienceDatabase>(setup.si, result.space, pattern_fingerprint(*setup.pattern), framework);
+  const auto t0 = std::chrono::steady_clock::now();
+  db->read(options.experience->bytes, options.experience->name);
+  result.experience = ExperienceOutcome{};
+  result.experience->framework = to_string(framework);
+  result.experience->load_seconds = elapsed(t0);
+  result.experience->loaded = result.experience->paths = db->paths();
+  result.experience->states = db->states();
+  return db;
 }
 
 }  // namespace
@@ -287,21 +320,7 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
   result.planner = options.planner;
   result.objective = parse_objective(options.objective).name();
   result.space = setup.plan_space->name();
-  std::unique_ptr<ExperienceDatabase> db;
-  if (options.experience && (!parse_objective(options.objective).is_default() || options.cost_threshold))
-    throw std::invalid_argument(
-        "plan: experience recalls by path length only: no other objective, no cost threshold (docs/PLANNING.md)");
-  if (options.experience) {
-    const ExperienceFramework framework = parse_experience_framework(options.experience->framework);
-    db = std::make_unique<ExperienceDatabase>(setup.si, result.space, pattern_fingerprint(pattern), framework);
-    const auto t0 = std::chrono::steady_clock::now();
-    db->read(options.experience->bytes, options.experience->name);
-    result.experience = ExperienceOutcome{};
-    result.experience->framework = to_string(framework);
-    result.experience->load_seconds = elapsed(t0);
-    result.experience->loaded = result.experience->paths = db->paths();
-    result.experience->states = db->states();
-  }
+  const std::unique_ptr<ExperienceDatabase> db = load_experience(setup, options, result);
   if (!setup.blocked.empty()) {
     result.status = {geometry::StatusCode::Collision, setup.blocked};
     return result;
@@ -320,17 +339,26 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
   }
   PlanOptions direct = options;
   if (via_flat) direct.time = kSamplerShare * options.time;
+  // The path the planner most often finds, followed and replayed while it searches.
+  std::optional<detail::StraightPlan> straight;
+  if (detail::StraightPlan::wanted(setup, options, via_flat, db != nullptr)) straight.emplace(setup, options);
   std::optional<og::PathGeometric> path = solve(setup, direct, result, db.get());
+  if (!path) straight.reset();
   if (!path && via_flat)
     return detail::plan_via_flat(
         setup, options, result, options.planner + " found no direct plan in " + std::to_string(direct.time) + " s (" + result.status.message + ")");
   if (!path) return result;
   simplify(setup, options, *path);
-  // The replay starts on the first waypoints while the later ones are computed (2-core machines:
-  // the replay and the continuation were each about a planner time of a Miura 40×40 plan).
-  detail::ReplayPipeline pipeline(setup, options);
+  if (straight && !straight->matches(*path)) straight.reset();
+  // Otherwise the replay starts on the first waypoints while the later ones are computed
+  // (2-core machines: the replay and the continuation were each about a planner time of a Miura
+  // 40×40 plan).
+  std::optional<detail::ReplayPipeline> own;
+  if (!straight) own.emplace(setup, options);
+  detail::ReplayPipeline& pipeline = straight ? straight->pipeline() : *own;
   std::string why;
-  const auto dense = path_waypoints(setup, *path, options, true, &why, [&](const FoldState& s) { pipeline.push(s); });
+  const auto dense = straight ? straight->waypoints(why)
+                              : path_waypoints(setup, *path, options, true, &why, [&](const FoldState& s) { pipeline.push(s); });
   if (!dense) {
     result.status = {geometry::StatusCode::ClosureViolated, why};
     return result;

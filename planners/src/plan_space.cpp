@@ -65,7 +65,8 @@ std::shared_ptr<PlanSpace> make_plan_space(SpaceKind kind) {
 
 void PlanSpace::anchor(ob::State*, ob::State*) const {}
 
-std::vector<FoldState> PlanSpace::path_states(const PlanSetup& setup, og::PathGeometric path, double, const StateSink& sink) const {
+std::vector<FoldState> PlanSpace::path_states(const PlanSetup& setup, og::PathGeometric path, double, const StateSink& sink,
+                                              const Stop&) const {
   path.interpolate();
   std::vector<FoldState> states;
   for (unsigned int i = 0; i < static_cast<unsigned int>(path.getStateCount()); ++i) {
@@ -79,6 +80,7 @@ std::vector<FoldState> PlanSpace::path_states(const PlanSetup& setup, og::PathGe
 }
 
 Fallback PlanSpace::fallback() const { return Fallback::None; }
+bool PlanSpace::straight_paths() const { return false; }
 
 namespace spaces {
 

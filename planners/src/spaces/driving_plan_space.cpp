@@ -106,11 +106,12 @@ class DrivingPlanSpace : public PlanSpace {
   // repeated the continuation about once per level (a Miura 40×40 plan: 0.7 s, a planner time).
   // Where the continuation does not end at the segment's end (another branch, a stall), the
   // interval is halved along the space's own motion as before.
-  std::vector<FoldState> path_states(const PlanSetup& setup, og::PathGeometric path, double step,
-                                     const StateSink& sink) const override {
+  std::vector<FoldState> path_states(const PlanSetup& setup, og::PathGeometric path, double step, const StateSink& sink,
+                                     const Stop& stop) const override {
     geometry::PassiveSolverOptions fine;
     // Never coarser than the space's own solver (a large waypoint_step would widen its jump test).
     fine.max_step = std::min(0.9 * step, geometry::PassiveSolverOptions{}.max_step);
+    fine.stop = stop;
     geometry::PassiveSolver solver(*setup.system, space_->chart(), fine);
     const Motion motion = [&](const ob::State* a, const ob::State* b, double s, ob::State* tmp, const Emit& out) {
       FoldState fa, fb, reached;
@@ -122,12 +123,15 @@ class DrivingPlanSpace : public PlanSpace {
         for (std::size_t i = 1; i + 1 < points.size(); ++i) out(std::move(points[i]));
         return;
       }
-      bisect(setup, a, b, fa, fb, s, tmp, out);
+      if (!stop || !stop()) bisect(setup, a, b, fa, fb, s, tmp, out);
     };
     return states_along(setup, path, step, motion, sink);
   }
 
   Fallback fallback() const override { return Fallback::ViaFlat; }
+  // Every motion of the space is the continuation over a straight segment of driving angles; a
+  // path of collinear, ordered segments is the continuation over their union.
+  bool straight_paths() const override { return true; }
 
  private:
   // The states strictly between fa (at a) and fb (at b) along the space's motion: the interval is

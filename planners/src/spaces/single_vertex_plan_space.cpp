@@ -40,8 +40,8 @@ class SingleVertexPlanSpace : public PlanSpace {
 
   // The motion is linear in the active angles: evenly spaced states at most `step` apart in
   // every crease.
-  std::vector<FoldState> path_states(const PlanSetup& setup, og::PathGeometric path, double step,
-                                     const StateSink& sink) const override {
+  std::vector<FoldState> path_states(const PlanSetup& setup, og::PathGeometric path, double step, const StateSink& sink,
+                                     const Stop&) const override {
     return states_along(setup, path, step,
                         [&](const ob::State* a, const ob::State* b, double s, ob::State* tmp, const Emit& out) {
                           const FoldState fa = space_->to_fold_state(a), fb = space_->to_fold_state(b);

@@ -3,6 +3,7 @@
 /// Crease coordinates of the closure manifold: a few *driving* creases chosen so that every other
 /// crease follows from them by closure, the Newton corrector that solves those others, and the
 /// continuation that follows the manifold as the driving angles move (docs/PLANNING.md).
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -51,6 +52,10 @@ struct PassiveSolverOptions {
   double max_step = 0.08;
   /// Smallest continuation step, as a fraction of the whole way: halving below it fails.
   double min_fraction = 1e-6;
+  /// Asked before each continuation step (follow()); when it returns true the continuation stops
+  /// where it is, with StatusCode::NoProgress ("stopped"). Empty: never. For a caller on another
+  /// thread that may no longer want the result (the plan's straight plan).
+  std::function<bool()> stop;
 };
 
 /// Solves the passive creases of a chart from its driving angles: Newton (Gauss–Newton on the

@@ -87,7 +87,8 @@ struct PlanOptions {
   bool use_assignment = true;  ///< mountain/valley assignments of the pattern become angle bounds
   bool numerical_jacobian = false;  ///< constrained spaces: OMPL's finite differences (a baseline)
   /// Shorten the path with OMPL's PathSimplifier (reduce vertices, shortcut); a path already as
-  /// short as the distance between its ends is left as found.
+  /// short as the distance between its ends is left as found, or, in the driving space (whose
+  /// motion over collinear segments is the one continuation over their union), cut to its ends.
   bool simplify = true;
   /// When the planner finds no plan in a quarter of `time` (kSamplerShare), go through flat:
   /// - single-vertex space: the path of Carpenter's rule on the sphere (start → flat → goal,
@@ -113,14 +114,19 @@ struct PlanOptions {
   double waypoint_step = 0.02;  ///< largest joint change between two CMML waypoints, radians; positive
   double speed = 1.0;           ///< the fastest joint's speed in each CMML event, rad/s (written °/s); positive
   /// Replay the plan in the simulator before accepting it. Without a start sequence the replay runs
-  /// on a thread of its own while the later waypoints are computed; its report is simulate()'s of
-  /// the whole sequence all the same.
+  /// on a thread of its own while the later waypoints are computed (in the driving space, from a
+  /// start that continues straight to the goal, already while the planner searches: its waypoints
+  /// and replay on two threads of lower priority, kept when the planner's path is that straight
+  /// one); its report is simulate()'s of the whole sequence all the same.
   bool replay = true;
   /// Silence OMPL's console messages (sets OMPL's log level to none, for the whole process).
   bool quiet = true;
   /// The replay's progress (the planner itself runs for `time` at most); called by the thread that
   /// replays (see `replay`: not the caller's), one call at a time, while plan() runs. Until the
-  /// waypoints are all known, the whole it reports is the events known so far.
+  /// waypoints are all known, the whole it reports is the events known so far. A plan from a start
+  /// that continues straight to the goal in the driving space may begin its replay while the
+  /// planner searches (docs/PLANNING.md, "the straight plan"); when the planner's path turns out
+  /// to be another, that replay is dropped and the count starts again.
   geometry::ProgressFn progress;
   /// Called once with the plan's sequence (what PlanResult::sequence will hold) as soon as it is
   /// made, so that the caller can use it while the replay finishes judging it: `foldkit plan`

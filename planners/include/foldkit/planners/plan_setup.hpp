@@ -77,11 +77,14 @@ PlanSetup make_plan_setup(const geometry::CreasePattern& pattern, const geometry
 /// finally densified onto the closure manifold (densify()), no joint moving more than
 /// options.waypoint_step between waypoints. Each pair of neighbours is densified as soon as both
 /// are known, so `sink` (when set) gets the waypoints in order while the later ones are still
-/// being computed (the plan's replay starts on them); it gets none after a jump.
+/// being computed (the plan's replay starts on them); it gets none after a jump. `stop`, when
+/// set, is asked between the expensive steps: once it returns true the waypoints are dropped.
 /// @return the waypoints, or nothing, with `*why` set when `why` is not null, when the path jumps
+///         or was stopped
 std::optional<std::vector<geometry::FoldState>> path_waypoints(const PlanSetup& setup, ompl::geometric::PathGeometric path,
                                                                const PlanOptions& options, bool to_goal, std::string* why,
-                                                               const PlanSpace::StateSink& sink = {});
+                                                               const PlanSpace::StateSink& sink = {},
+                                                               const PlanSpace::Stop& stop = {});
 
 /// The CMML of `waypoints` from the flat sheet (geometry::path_sequence at options.speed), the
 /// options' start sequence first; titled after the pattern.

@@ -68,17 +68,27 @@ class PlanSpace {
 
   /// Receives a path's fold states one at a time, in the path's order.
   using StateSink = std::function<void(const geometry::FoldState&)>;
+  /// Asked between the expensive steps of path_states(); true: the states are no longer wanted.
+  using Stop = std::function<bool()>;
 
   /// A solution path's states as fold states, densified along the space's own motion so that no
   /// crease moves more than `step` (radians) between neighbours where the space can tell; by
   /// default OMPL's path.interpolate() (the constrained spaces follow their manifold's geodesic).
   /// `sink`, when set, gets each of the returned states in order, the driving and single-vertex
   /// spaces' as soon as it is computed (the plan's replay starts on them), the others' at the end.
+  /// Once `stop` (when set) returns true, the driving space returns what it has at its next
+  /// continuation step (the states then end short of the path's end; the caller drops them).
   virtual std::vector<geometry::FoldState> path_states(const PlanSetup& setup, ompl::geometric::PathGeometric path, double step,
-                                                       const StateSink& sink) const;
+                                                       const StateSink& sink, const Stop& stop = {}) const;
 
   /// The way through flat that applies to this space (PlanOptions::fallback); None by default.
   virtual Fallback fallback() const;
+
+  /// Whether the space's motion between two states is the continuation along its manifold over
+  /// the straight segment between their coordinates, whatever states lie between: then a path as
+  /// short as the distance between its ends is that one motion, and plan() replaces it by its
+  /// first and last state (the driving space; false by default).
+  virtual bool straight_paths() const;
 
  private:
   const char* name_;
