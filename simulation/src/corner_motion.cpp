@@ -10,27 +10,32 @@
 namespace foldkit::simulation {
 
 CornerMotion::CornerMotion(const geometry::CreasePattern& pattern) {
+  first_.push_back(0);
   for (const auto& actor : pattern.actors()) {
-    std::vector<Eigen::Vector3d> corners;
     std::set<int> seen;
     for (const auto& t : actor.triangles)
       for (int v : t.v)
-        if (seen.insert(v).second) corners.emplace_back(pattern.vertices()[v].x(), pattern.vertices()[v].y(), 0.0);
-    corners_.push_back(std::move(corners));
+        if (seen.insert(v).second) corners_.emplace_back(pattern.vertices()[v].x(), pattern.vertices()[v].y(), 0.0);
+    first_.push_back(corners_.size());
   }
 }
 
 double CornerMotion::largest(const std::vector<Eigen::Isometry3d>& from, const std::vector<Eigen::Isometry3d>& to) const {
-  if (from.size() != corners_.size() || to.size() != corners_.size())
+  const std::size_t actors = first_.size() - 1;
+  if (from.size() != actors || to.size() != actors)
     throw std::invalid_argument("CornerMotion: " + std::to_string(from.size()) + " and " + std::to_string(to.size()) +
-                                " poses for " + std::to_string(corners_.size()) + " actors");
-  std::vector<Eigen::Vector3d> x, y;
+                                " poses for " + std::to_string(actors) + " actors");
+  // The placed corners, in buffers kept per thread: two allocations of every corner per step were
+  // a fifth of this function at Miura 40 × 40.
+  thread_local std::vector<Eigen::Vector3d> x, y;
+  x.resize(corners_.size());
+  y.resize(corners_.size());
   double plain = 0.0;
-  for (std::size_t a = 0; a < corners_.size(); ++a)
-    for (const auto& p : corners_[a]) {
-      x.push_back(from[a] * p);
-      y.push_back(to[a] * p);
-      plain = std::max(plain, (y.back() - x.back()).norm());
+  for (std::size_t a = 0; a < actors; ++a)
+    for (std::size_t i = first_[a]; i < first_[a + 1]; ++i) {
+      x[i] = from[a] * corners_[i];
+      y[i] = to[a] * corners_[i];
+      plain = std::max(plain, (y[i] - x[i]).norm());
     }
   if (x.size() < 3) return plain;
   // Kabsch: the rotation r and the centroids' offset that best map x onto y in least squares.

@@ -34,7 +34,10 @@ class CornerMotion {
   double largest(const std::vector<Eigen::Isometry3d>& from, const std::vector<Eigen::Isometry3d>& to) const;
 
  private:
-  std::vector<std::vector<Eigen::Vector3d>> corners_;  // per actor, flat
+  // Every actor's corners in one array (flat), actor a's from first_[a] to first_[a + 1]: the
+  // simulator asks at every step, over thousands of actors.
+  std::vector<Eigen::Vector3d> corners_;
+  std::vector<std::size_t> first_;
 };
 
 }  // namespace foldkit::simulation
