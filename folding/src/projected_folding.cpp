@@ -4,6 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -11,8 +14,10 @@
 #include "foldkit/geometry/kinematics.hpp"
 #include "foldkit/geometry/null_space.hpp"
 #include "foldkit/geometry/projection.hpp"
+#include "foldkit/simulation/pipelined_replay.hpp"
 
 #include "path_checker.hpp"
+#include "projected_folding_options.hpp"
 
 namespace foldkit::folding {
 
@@ -41,8 +46,10 @@ struct Corrected {
 
 class Folder {
  public:
-  Folder(const geometry::CreasePattern& pattern, const ProjectedFoldingOptions& o, ProjectedFoldingResult& r)
-      : pattern_(pattern), opt_(o), result_(r), system_(pattern), solver_(o.rank_tolerance) {
+  // `replay`, when set, gets every state accepted (its replay runs meanwhile).
+  Folder(const geometry::CreasePattern& pattern, const ProjectedFoldingOptions& o, ProjectedFoldingResult& r,
+         simulation::PipelinedReplay* replay)
+      : pattern_(pattern), opt_(o), result_(r), replay_(replay), system_(pattern), solver_(o.rank_tolerance) {
     po_.tolerance = 0.1 * o.closure_tolerance;
     po_.max_iterations = 60;
     po_.keep_signs = true;
@@ -343,6 +350,7 @@ class Folder {
     result_.max_closure_error = std::max(result_.max_closure_error, error);
     result_.max_chord_error = std::max(result_.max_chord_error, chord_);
     result_.states.push_back(next.state);
+    if (replay_) replay_->push(next.state);
     result_.steps = static_cast<int>(result_.states.size()) - 1;
     if (opt_.progress) opt_.progress({static_cast<double>(result_.steps), 0.0, "steps", error});
   }
@@ -371,6 +379,7 @@ class Folder {
   const geometry::CreasePattern& pattern_;
   const ProjectedFoldingOptions& opt_;
   ProjectedFoldingResult& result_;
+  simulation::PipelinedReplay* replay_;  // null: no replay alongside
   geometry::ClosureSystem system_;
   geometry::LeastNormSolver solver_;  // keeps its ordering between the thousands of steps
   geometry::ProjectionOptions po_;
@@ -390,51 +399,46 @@ class Folder {
   geometry::RankDecision decision_;
 };
 
+// The replay of the result's sequence: the pipeline's, when it replayed exactly these events,
+// else simulate() now; `sequence_ready`'s reader runs meanwhile and is done before this returns
+// (on every way out, exceptions included).
+void replay(const geometry::CreasePattern& pattern, const ProjectedFoldingOptions& options, const simulation::SimulationOptions& so,
+            std::optional<simulation::PipelinedReplay>& pipeline, ProjectedFoldingResult& result) {
+  struct Wait {
+    std::future<void> reading;
+    ~Wait() {
+      if (reading.valid()) reading.wait();
+    }
+  } wait;
+  if (options.sequence_ready) wait.reading = options.sequence_ready(result.sequence);
+  std::optional<simulation::SimulationReport> piped = pipeline ? pipeline->finish(result.sequence) : std::nullopt;
+  result.replay = piped ? std::move(*piped) : simulation::simulate(pattern, result.sequence, so);
+  // The fold's own status stands (it says how far the folding got); the message adds the replay's verdict.
+  if (!result.replay->status) result.status.message += "; the simulator rejects the CMML: " + result.replay->status.message;
+}
+
 }  // namespace
 
 ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, const ProjectedFoldingOptions& options) {
-  const auto n = static_cast<Eigen::Index>(pattern.joints().size());
-  if (n == 0) throw std::invalid_argument("fold_projected: the pattern has no crease");
-  ProjectedFoldingOptions o = options;
-  if (options.toward.size()) {
-    if (options.velocity.size()) throw std::invalid_argument("fold_projected: give a desired velocity or target angles, not both");
-    if (options.toward.size() != n)
-      throw std::invalid_argument("fold_projected: the target angles are " + std::to_string(options.toward.size()) + " for " +
-                                  std::to_string(n) + " creases");
-    if (!options.toward.allFinite() || !(options.toward.cwiseAbs().maxCoeff() <= kPi))
-      throw std::invalid_argument("fold_projected: the target angles must be finite and within ±180 degrees");
-    if (!(options.toward.cwiseAbs().maxCoeff() > 0.0))
-      throw std::invalid_argument("fold_projected: every target angle is 0 (the flat sheet): nothing to fold toward");
-    o.velocity = options.toward;
-    o.target_fraction = options.target_fraction * options.toward.cwiseAbs().maxCoeff() / kPi;
-  }
-  const Eigen::VectorXd desired = o.velocity.size() ? o.velocity : assignment_velocity(pattern);
-  if (desired.size() != n)
-    throw std::invalid_argument("fold_projected: the desired velocity has " + std::to_string(desired.size()) +
-                                " entries for " + std::to_string(n) + " creases");
-  if (!desired.allFinite()) throw std::invalid_argument("fold_projected: the desired velocity is not finite");
-  if (!(desired.cwiseAbs().maxCoeff() > 0.0))
-    throw std::invalid_argument(options.velocity.size()
-                                    ? "fold_projected: the desired velocity is zero"
-                                    : "fold_projected: no crease has a mountain/valley assignment; give a desired velocity");
-  if (!(options.target_fraction > 0.0 && options.target_fraction <= 1.0))
-    throw std::invalid_argument("fold_projected: the target fraction must lie in (0, 1]");
-  if (!(options.max_step > 0.0 && options.max_step <= 0.5))
-    throw std::invalid_argument("fold_projected: the step must lie in (0, 0.5] rad");
-  if (!(options.closure_tolerance > 0.0 && options.closure_tolerance < 1e-3))
-    throw std::invalid_argument("fold_projected: the closure tolerance must lie in (0, 1e-3)");
-  if (!(options.chord_tolerance == 0.0 || (options.chord_tolerance > options.closure_tolerance && options.chord_tolerance <= 0.1)))
-    throw std::invalid_argument("fold_projected: the chord tolerance must be 0 or lie in (closure tolerance, 0.1]");
-  if (options.max_steps < 1) throw std::invalid_argument("fold_projected: max_steps must be at least 1");
-  if (!(options.lead_in > 0.0 && options.lead_in <= 1.0))
-    throw std::invalid_argument("fold_projected: the lead-in amplitude must lie in (0, 1] rad");
-  if (!(options.rank_tolerance > 0.0) || !(options.singular_ratio >= 0.0) || !(options.speed > 0.0) ||
-      !std::isfinite(options.speed))
-    throw std::invalid_argument("fold_projected: the rank tolerance and the CMML speed must be positive");
-
+  Eigen::VectorXd desired;
+  ProjectedFoldingOptions o = detail::checked_options(pattern, options, desired);
   ProjectedFoldingResult result;
+  // The folding's progress (this thread) and the replay's (its own) reach the caller one call at
+  // a time.
+  if (options.progress)
+    o.progress = [mutex = std::make_shared<std::mutex>(), progress = options.progress](const geometry::Progress& p) {
+      const std::lock_guard<std::mutex> lock(*mutex);
+      progress(p);
+    };
+  simulation::SimulationOptions so;
+  so.collisions = options.collisions;
+  so.progress = o.progress;
+  // Each accepted state is replayed on another thread while the next ones are folded (a Miura
+  // 60×60: the replay was as long as the folding, after it); the report is simulate()'s.
+  std::optional<simulation::PipelinedReplay> pipeline;
+  if (options.replay) pipeline.emplace(pattern, so, options.speed);
   const auto t0 = std::chrono::steady_clock::now();
-  Folder(pattern, o, result).run(desired);
+  Folder(pattern, o, result, pipeline && pipeline->active() ? &*pipeline : nullptr).run(desired);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   result.fraction = fraction_of(result.states.back());
   if (options.toward.size()) {
@@ -448,23 +452,7 @@ ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, co
     result.status.message += out.str();
   }
   result.sequence = geometry::path_sequence(pattern, result.states, options.speed, pattern.title());
-  if (options.replay && result.states.size() > 1) {
-    // Whoever reads the sequence alongside the replay is done before the result moves on (on
-    // every way out, exceptions included).
-    struct Wait {
-      std::future<void> reading;
-      ~Wait() {
-        if (reading.valid()) reading.wait();
-      }
-    } wait;
-    if (options.sequence_ready) wait.reading = options.sequence_ready(result.sequence);
-    simulation::SimulationOptions so;
-    so.collisions = options.collisions;
-    so.progress = options.progress;
-    result.replay = simulation::simulate(pattern, result.sequence, so);
-    // The fold's own status stands (it says how far the folding got); the message adds the replay's verdict.
-    if (!result.replay->status) result.status.message += "; the simulator rejects the CMML: " + result.replay->status.message;
-  }
+  if (options.replay && result.states.size() > 1) replay(pattern, options, so, pipeline, result);
   return result;
 }
 
