@@ -404,12 +404,7 @@ class Folder {
 // (on every way out, exceptions included).
 void replay(const geometry::CreasePattern& pattern, const ProjectedFoldingOptions& options, const simulation::SimulationOptions& so,
             std::optional<simulation::PipelinedReplay>& pipeline, ProjectedFoldingResult& result) {
-  struct Wait {
-    std::future<void> reading;
-    ~Wait() {
-      if (reading.valid()) reading.wait();
-    }
-  } wait;
+  simulation::ReaderWait wait;
   if (options.sequence_ready) wait.reading = options.sequence_ready(result.sequence);
   std::optional<simulation::SimulationReport> piped = pipeline ? pipeline->finish(result.sequence) : std::nullopt;
   result.replay = piped ? std::move(*piped) : simulation::simulate(pattern, result.sequence, so);

@@ -162,15 +162,16 @@ std::optional<std::vector<FoldState>> path_waypoints(const PlanSetup& setup, og:
   };
   for (const FoldState& s : setup.prefix) add(s);
   bool first = true;  // the path's first state is the prefix's last
-  setup.plan_space->path_states(
+  const bool gave_up = setup.plan_space->path_states(
       setup, std::move(path), options.waypoint_step,
       [&](const FoldState& s) {
         if (!first) add(s);
         first = false;
       },
-      stop);
-  if (stop && stop()) {
-    if (why) *why = "the waypoints were stopped";
+      stop).empty();
+  const bool stopped = stop && stop();
+  if (stopped || (stop && gave_up)) {
+    if (why) *why = stopped ? "the waypoints were stopped" : "the path needs halving, which a stop rules out";
     return std::nullopt;
   }
   // Before a jump, dense.back() is the list's last state.
@@ -349,7 +350,9 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
         setup, options, result, options.planner + " found no direct plan in " + std::to_string(direct.time) + " s (" + result.status.message + ")");
   if (!path) return result;
   simplify(setup, options, *path);
-  if (straight && !straight->matches(*path)) straight.reset();
+  std::optional<std::vector<FoldState>> dense;
+  if (straight && straight->matches(*path)) dense = straight->waypoints();
+  if (!dense) straight.reset();
   // Otherwise the replay starts on the first waypoints while the later ones are computed
   // (2-core machines: the replay and the continuation were each about a planner time of a Miura
   // 40×40 plan).
@@ -357,8 +360,7 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
   if (!straight) own.emplace(setup, options);
   detail::ReplayPipeline& pipeline = straight ? straight->pipeline() : *own;
   std::string why;
-  const auto dense = straight ? straight->waypoints(why)
-                              : path_waypoints(setup, *path, options, true, &why, [&](const FoldState& s) { pipeline.push(s); });
+  if (!dense) dense = path_waypoints(setup, *path, options, true, &why, [&](const FoldState& s) { pipeline.push(s); });
   if (!dense) {
     result.status = {geometry::StatusCode::ClosureViolated, why};
     return result;
@@ -368,7 +370,7 @@ PlanResult plan(const geometry::CreasePattern& pattern, const FoldState& goal, c
                                             std::to_string(kSamplerShare * options.time) + " s)"
                                       : std::string("solved"),
                       &pipeline);
-  // A plan that checks out is experience: the space's own states, as the planner left them.
+  // A plan that checks out is experience: the space's own states (a straight path cut to its ends).
   if (db && result.status) {
     if (!result.fallback) db->add(*path);
     result.experience->paths = db->paths();

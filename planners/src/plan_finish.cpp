@@ -31,14 +31,7 @@ PlanResult& finish_plan(const PlanSetup& setup, const PlanOptions& options, std:
     return result;
   }
   result.sequence = plan_sequence(setup, options, result.waypoints);
-  // Whoever reads the sequence alongside the replay is done before the result moves on (on every
-  // way out, exceptions included).
-  struct Wait {
-    std::future<void> reading;
-    ~Wait() {
-      if (reading.valid()) reading.wait();
-    }
-  } wait;
+  simulation::ReaderWait wait;
   if (options.sequence_ready) wait.reading = options.sequence_ready(result.sequence);
   if (options.replay) {
     // The pipeline replayed events as the waypoints came; its report is the plan's only when those

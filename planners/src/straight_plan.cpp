@@ -1,8 +1,9 @@
 #include "straight_plan.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <functional>
-#include <stdexcept>
+#include <system_error>
 #include <utility>
 
 #if defined(__linux__)
@@ -72,25 +73,32 @@ bool StraightPlan::wanted(const PlanSetup& setup, const PlanOptions& options, bo
          !options.cost_threshold && setup.blocked.empty() && setup.other_branch.empty();
 }
 
-StraightPlan::StraightPlan(const PlanSetup& setup, const PlanOptions& options)
+StraightPlan::StraightPlan(const PlanSetup& setup, const PlanOptions& options, const simulation::ThreadStarter& start)
     : setup_(setup),
       options_(options),
       path_(ends_path(setup)),
       nice_(caller_nice()),
-      pipeline_(setup, options, [this](std::function<void()> body) {
-        return std::thread([this, body = std::move(body)] {
+      pipeline_(setup, options, [this, start](std::function<void()> body) {
+        std::function<void()> lowered = [this, body = std::move(body)] {
           lower_priority();
           body();
-        });
+          forget_priority();
+        };
+        return start ? start(std::move(lowered)) : std::thread(std::move(lowered));
       }) {
-  if (path_.getStateCount() != 2 || !setup.reader(path_.getState(0), first_) || !setup.reader(path_.getState(1), last_)) {
-    error_ = std::make_exception_ptr(std::logic_error("StraightPlan: the plan's ends are not states of its space"));
-    return;
-  }
-  thread_ = std::thread([this] {
+  if (path_.getStateCount() != 2 || !setup.reader(path_.getState(0), first_) || !setup.reader(path_.getState(1), last_))
+    return;  // plan() refuses such ends before planning; nothing to follow
+  std::function<void()> body = [this] {
     lower_priority();
     run();
-  });
+    forget_priority();
+  };
+  try {
+    thread_ = start ? start(std::move(body)) : std::thread(std::move(body));
+  } catch (const std::system_error&) {
+    return;  // no second thread: the plan makes its waypoints itself, after the planner
+  }
+  ends_ok_ = thread_.joinable();
 }
 
 StraightPlan::~StraightPlan() {
@@ -100,21 +108,26 @@ StraightPlan::~StraightPlan() {
 }
 
 void StraightPlan::run() {
-  // A dropped plan stops at the continuation's next step and pushes nothing more.
+  // A dropped plan stops at the continuation's next step and pushes nothing more. With a stop
+  // given, the driving space does not halve a segment its continuation falls short of (the
+  // halving borrows the space's solvers, which the planner is using): no waypoints then, and the
+  // plan makes them itself after the planner, halving as always. Whatever fails here fails there
+  // the same way (the same computation), so an exception only means "not made here".
+  std::string why;
   try {
     dense_ = path_waypoints(
-        setup_, path_, options_, true, &why_,
+        setup_, path_, options_, true, &why,
         [this](const geometry::FoldState& s) {
           if (!cancelled_) pipeline_.push(s);
         },
         [this] { return cancelled_.load(); });
   } catch (...) {
-    error_ = std::current_exception();
+    dense_.reset();
   }
 }
 
 bool StraightPlan::matches(const og::PathGeometric& path) const {
-  if (path.getStateCount() != 2 || error_) return false;
+  if (path.getStateCount() != 2 || !ends_ok_) return false;
   geometry::FoldState a, b;
   if (!setup_.reader(path.getState(0), a) || !setup_.reader(path.getState(1), b)) return false;
   return a.angles.size() == first_.angles.size() && b.angles.size() == last_.angles.size() &&
@@ -129,6 +142,14 @@ void StraightPlan::lower_priority() {
   lowered_.push_back(tid);
 }
 
+// A thread about to end: its id may be another thread's soon (Linux reuses them), so it is no
+// longer one to restore.
+void StraightPlan::forget_priority() {
+  const std::lock_guard<std::mutex> lock(nice_mutex_);
+  const int tid = this_thread_id();
+  lowered_.erase(std::remove(lowered_.begin(), lowered_.end(), tid), lowered_.end());
+}
+
 // The plan is this one: its threads are the plan's own from here on. Raising a thread's priority
 // back needs the privilege to (root, or RLIMIT_NICE); without it they stay lower, which matters
 // only where other processes compete for the core.
@@ -138,11 +159,9 @@ void StraightPlan::restore_priority() {
   for (int tid : lowered_) set_nice(tid, nice_);
 }
 
-std::optional<std::vector<geometry::FoldState>> StraightPlan::waypoints(std::string& why) {
+std::optional<std::vector<geometry::FoldState>> StraightPlan::waypoints() {
   restore_priority();
   if (thread_.joinable()) thread_.join();
-  if (error_) std::rethrow_exception(error_);
-  why = why_;
   return std::move(dense_);
 }
 

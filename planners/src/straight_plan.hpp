@@ -38,8 +38,10 @@ class StraightPlan {
   // them into the planner's start and goal) on a thread of its own, each pushed into a
   // ReplayPipeline as it comes. `setup` and `options` must outlive this. The threads run at a
   // lower priority than the caller's (where the system allows it), so that on a busy machine the
-  // planner keeps its core.
-  StraightPlan(const PlanSetup& setup, const PlanOptions& options);
+  // planner keeps its core. Both threads come from `start` (empty: std::thread); when it throws
+  // std::system_error, the straight plan does not run (matches() is false) and the plan makes its
+  // waypoints and replay itself.
+  StraightPlan(const PlanSetup& setup, const PlanOptions& options, const simulation::ThreadStarter& start = {});
   // Cancels what is still running and joins its threads (the waypoints' at the continuation's
   // next step).
   ~StraightPlan();
@@ -47,12 +49,15 @@ class StraightPlan {
   StraightPlan& operator=(const StraightPlan&) = delete;
 
   // Whether `path` is this plan's: two states whose fold angles are, bit for bit, the ones it
-  // started from and ends at (so its waypoints are those path_waypoints() gives `path`).
+  // started from and ends at (so its waypoints are those path_waypoints() gives `path`). False
+  // when it could not start (its ends not states of the space, or no second thread).
   bool matches(const ompl::geometric::PathGeometric& path) const;
-  // Waits for the waypoints and returns them (path_waypoints()'s, to the goal), or nothing with
-  // `why` set when the path jumps; rethrows what computing them threw. Back to the caller's
-  // priority from here on. Once only.
-  std::optional<std::vector<geometry::FoldState>> waypoints(std::string& why);
+  // Waits for the waypoints and returns them (path_waypoints()'s, to the goal), or nothing when
+  // they were not made here — the path jumps, its continuation falls short of the goal (the
+  // halving that follows is left to the caller, see run()), or computing them threw: the caller
+  // then computes them itself, which gives the same outcome. Back to the caller's priority from
+  // here on. Once only.
+  std::optional<std::vector<geometry::FoldState>> waypoints();
   // The replay of the waypoints, for finish_plan (which checks its events against the plan's).
   ReplayPipeline& pipeline() { return pipeline_; }
 
@@ -65,6 +70,7 @@ class StraightPlan {
   geometry::FoldState first_, last_;  // path_'s ends as setup.reader reads them
   // The threads' priority: lowered as each starts unless the plan was accepted before.
   void lower_priority();
+  void forget_priority();
   void restore_priority();
   int nice_ = 0;  // the caller's
   std::mutex nice_mutex_;
@@ -72,9 +78,8 @@ class StraightPlan {
   std::vector<int> lowered_;  // thread ids
   ReplayPipeline pipeline_;   // after what its thread's starter uses
   std::atomic<bool> cancelled_{false};
-  std::optional<std::vector<geometry::FoldState>> dense_;
-  std::string why_;
-  std::exception_ptr error_;
+  bool ends_ok_ = false;  // set before the thread starts, read by matches() (no race)
+  std::optional<std::vector<geometry::FoldState>> dense_;  // the thread's until joined
   std::thread thread_;  // last: started once everything it uses is
 };
 

@@ -3,6 +3,9 @@
 // here through the public pieces, path_waypoints on the two ends), with simulate()'s report of its
 // sequence, and that a plan it does not match is dropped without a trace.
 #include <cmath>
+#include <functional>
+#include <system_error>
+#include <thread>
 #include <string>
 #include <vector>
 
@@ -112,8 +115,8 @@ TEST(StraightPlan, MatchesOnlyItsOwnEnds) {
   std::swap(reversed.prefix.back(), reversed.goal);
   EXPECT_FALSE(straight.matches(ends(reversed))) << "other ends";
   std::string why;
-  const auto waypoints = straight.waypoints(why);
-  ASSERT_TRUE(waypoints.has_value()) << why;
+  const auto waypoints = straight.waypoints();
+  ASSERT_TRUE(waypoints.has_value());
   const auto oracle = foldkit::planners::path_waypoints(setup, ends(setup), o, true, &why);
   ASSERT_TRUE(oracle.has_value());
   ASSERT_EQ(waypoints->size(), oracle->size());
@@ -147,8 +150,25 @@ TEST(StraightPlan, DroppedAtAnyPointEndsItsThreads) {
   const PlanSetup setup = foldkit::planners::make_plan_setup(m.pattern, m.goal, o);
   for (int i = 0; i < 5; ++i) StraightPlan straight(setup, o);
   StraightPlan kept(setup, o);
-  std::string why;
-  EXPECT_TRUE(kept.waypoints(why).has_value()) << why;
+  EXPECT_TRUE(kept.waypoints().has_value());
+}
+
+// No second thread to be had: the straight plan does not run, and the plan is the same as with it.
+TEST(StraightPlan, NoThreadLeavesThePlanToItself) {
+  const Miura m;
+  PlanOptions o;
+  o.time = 20.0;
+  const PlanSetup setup = foldkit::planners::make_plan_setup(m.pattern, m.goal, o);
+  int asked = 0;
+  const foldkit::simulation::ThreadStarter refuse = [&](std::function<void()>) -> std::thread {
+    ++asked;
+    throw std::system_error(std::make_error_code(std::errc::resource_unavailable_try_again));
+  };
+  StraightPlan none(setup, o, refuse);
+  EXPECT_EQ(asked, 2) << "the replay's thread and the waypoints'";
+  EXPECT_FALSE(none.matches(ends(setup)));
+  EXPECT_FALSE(none.pipeline().active());
+  EXPECT_FALSE(none.waypoints().has_value());
 }
 
 }  // namespace

@@ -112,6 +112,7 @@ class DrivingPlanSpace : public PlanSpace {
     // Never coarser than the space's own solver (a large waypoint_step would widen its jump test).
     fine.max_step = std::min(0.9 * step, geometry::PassiveSolverOptions{}.max_step);
     fine.stop = stop;
+    bool gave_up = false;
     geometry::PassiveSolver solver(*setup.system, space_->chart(), fine);
     const Motion motion = [&](const ob::State* a, const ob::State* b, double s, ob::State* tmp, const Emit& out) {
       FoldState fa, fb, reached;
@@ -123,9 +124,17 @@ class DrivingPlanSpace : public PlanSpace {
         for (std::size_t i = 1; i + 1 < points.size(); ++i) out(std::move(points[i]));
         return;
       }
-      if (!stop || !stop()) bisect(setup, a, b, fa, fb, s, tmp, out);
+      // The halving borrows the space's shared solvers, whose memory a planner on another thread
+      // may be using: a caller with a stop (beside a planner) gets no states instead.
+      if (stop) {
+        gave_up = true;
+        return;
+      }
+      bisect(setup, a, b, fa, fb, s, tmp, out);
     };
-    return states_along(setup, path, step, motion, sink);
+    std::vector<FoldState> states = states_along(setup, path, step, motion, sink);
+    if (gave_up) states.clear();
+    return states;
   }
 
   Fallback fallback() const override { return Fallback::ViaFlat; }

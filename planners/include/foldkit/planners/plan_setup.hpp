@@ -78,9 +78,11 @@ PlanSetup make_plan_setup(const geometry::CreasePattern& pattern, const geometry
 /// options.waypoint_step between waypoints. Each pair of neighbours is densified as soon as both
 /// are known, so `sink` (when set) gets the waypoints in order while the later ones are still
 /// being computed (the plan's replay starts on them); it gets none after a jump. `stop`, when
-/// set, is asked between the expensive steps: once it returns true the waypoints are dropped.
-/// @return the waypoints, or nothing, with `*why` set when `why` is not null, when the path jumps
-///         or was stopped
+/// set, is asked between the expensive steps: once it returns true (it must stay true) the
+/// waypoints are dropped; with a `stop`, a path that needs the driving space's halving
+/// (PlanSpace::path_states) gives none either.
+/// @return the waypoints, or nothing, with `*why` set when `why` is not null, when the path jumps,
+///         was stopped or needs halving under a stop
 std::optional<std::vector<geometry::FoldState>> path_waypoints(const PlanSetup& setup, ompl::geometric::PathGeometric path,
                                                                const PlanOptions& options, bool to_goal, std::string* why,
                                                                const PlanSpace::StateSink& sink = {},

@@ -76,8 +76,11 @@ class PlanSpace {
   /// default OMPL's path.interpolate() (the constrained spaces follow their manifold's geodesic).
   /// `sink`, when set, gets each of the returned states in order, the driving and single-vertex
   /// spaces' as soon as it is computed (the plan's replay starts on them), the others' at the end.
-  /// Once `stop` (when set) returns true, the driving space returns what it has at its next
-  /// continuation step (the states then end short of the path's end; the caller drops them).
+  /// `stop`, when set, is asked between the continuation's steps; once it returns true (and it must
+  /// stay true), the driving space returns what it has at its next step (the states then end
+  /// short of the path's end; the caller drops them). With a `stop` the driving space also does
+  /// not halve a segment its continuation falls short of (the halving borrows the space's shared
+  /// solvers, which a planner on another thread may be using): it returns no states at all.
   virtual std::vector<geometry::FoldState> path_states(const PlanSetup& setup, ompl::geometric::PathGeometric path, double step,
                                                        const StateSink& sink, const Stop& stop = {}) const;
 

@@ -9,6 +9,7 @@
 #include <deque>
 #include <exception>
 #include <functional>
+#include <future>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -19,6 +20,16 @@
 #include "foldkit/simulation/simulate.hpp"
 
 namespace foldkit::simulation {
+
+/// Waits, as it goes, for whoever reads a sequence while its replay runs (`foldkit fold` and
+/// `foldkit plan` write their CMML meanwhile), so that the reader is done before the sequence
+/// moves on, on every way out, exceptions included.
+struct ReaderWait {
+  std::future<void> reading;  ///< the reader's; may be empty (invalid)
+  ~ReaderWait() {
+    if (reading.valid()) reading.wait();
+  }
+};
 
 /// Starts a replay's thread: a thread running `body`, or an exception (std::system_error when the
 /// system gives no thread) with `body` not run. Empty: a plain std::thread.
