@@ -78,7 +78,7 @@ class StraightPlan {
   std::vector<int> lowered_;  // thread ids
   ReplayPipeline pipeline_;   // after what its thread's starter uses
   std::atomic<bool> cancelled_{false};
-  bool ends_ok_ = false;  // set before the thread starts, read by matches() (no race)
+  bool ends_ok_ = false;  // set by the constructor, read by matches(); the thread never reads it
   std::optional<std::vector<geometry::FoldState>> dense_;  // the thread's until joined
   std::thread thread_;  // last: started once everything it uses is
 };

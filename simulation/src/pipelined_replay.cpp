@@ -61,7 +61,7 @@ void PipelinedReplay::push(const geometry::FoldState& state) {
   digest_ = digest(digest_, *event);
   {
     const std::lock_guard<std::mutex> lock(mutex_);
-    queue_.push_back(std::move(*event));
+    if (!dead_) queue_.push_back(std::move(*event));  // none would replay it
   }
   ready_.notify_one();
 }
@@ -120,6 +120,9 @@ void PipelinedReplay::run() {
     report_ = replay.finish();
   } catch (...) {
     error_ = std::current_exception();
+    const std::lock_guard<std::mutex> lock(mutex_);
+    dead_ = true;
+    queue_.clear();
   }
 }
 

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <mutex>
 #include <set>
+#include <stdexcept>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -80,6 +81,22 @@ TEST(ProjectedFoldingReplay, StoppedFoldAndNoReplay) {
   ProjectedFoldingOptions off = o;
   off.replay = false;
   EXPECT_FALSE(fold_projected(strip, off).replay.has_value());
+}
+
+// A progress callback that throws ends the fold with its exception, from either thread, and the
+// replay's thread with it (the test would hang on a join otherwise).
+TEST(ProjectedFoldingReplay, ProgressThatThrowsEndsTheFoldFromEitherThread) {
+  const CreasePattern miura = build_or_throw(gen::miura(10, 10));
+  const std::thread::id caller = std::this_thread::get_id();
+  for (bool on_the_folding_thread : {true, false}) {
+    ProjectedFoldingOptions o;
+    o.target_fraction = 0.9;
+    int calls = 0;
+    o.progress = [&](const foldkit::geometry::Progress&) {
+      if ((std::this_thread::get_id() == caller) == on_the_folding_thread && ++calls == 5) throw std::runtime_error("stop here");
+    };
+    EXPECT_THROW(fold_projected(miura, o), std::runtime_error) << (on_the_folding_thread ? "folding" : "replay");
+  }
 }
 
 }  // namespace

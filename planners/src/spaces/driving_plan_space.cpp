@@ -116,7 +116,7 @@ class DrivingPlanSpace : public PlanSpace {
     geometry::PassiveSolver solver(*setup.system, space_->chart(), fine);
     const Motion motion = [&](const ob::State* a, const ob::State* b, double s, ob::State* tmp, const Emit& out) {
       FoldState fa, fb, reached;
-      if (!setup.reader(a, fa) || !setup.reader(b, fb)) return;
+      if (gave_up || !setup.reader(a, fa) || !setup.reader(b, fb)) return;
       std::vector<FoldState> points;
       if (solver.follow(fa, solver.driving_of(fb), reached, &points).ok() &&
           (reached.angles - fb.angles).cwiseAbs().maxCoeff() <= 1e-6) {
@@ -132,7 +132,11 @@ class DrivingPlanSpace : public PlanSpace {
       }
       bisect(setup, a, b, fa, fb, s, tmp, out);
     };
-    std::vector<FoldState> states = states_along(setup, path, step, motion, sink);
+    // After giving up, nothing more reaches the sink (the caller would densify across the gap).
+    const StateSink guarded = [&](const FoldState& f) {
+      if (!gave_up && sink) sink(f);
+    };
+    std::vector<FoldState> states = states_along(setup, path, step, motion, guarded);
     if (gave_up) states.clear();
     return states;
   }

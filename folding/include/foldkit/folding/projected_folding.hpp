@@ -80,8 +80,12 @@ struct ProjectedFoldingOptions {
   /// path has more than the flat state.
   bool replay = true;
   double speed = 1.0;                ///< the fastest joint's speed in each CMML event, rad/s, positive and finite
-  /// Called at every accepted state (steps so far, unit "steps", its loop error), then by the
-  /// replay (simulation::SimulationOptions::progress).
+  /// Called at every accepted state (steps so far, unit "steps", its loop error) and by the replay
+  /// (simulation::SimulationOptions::progress: events replayed of those pushed so far, a whole
+  /// that grows while the folding goes on). The replay runs on a thread of its own beside the
+  /// folding, so the calls come from two threads, interleaved, one at a time (serialised): a
+  /// callback that takes a lock its caller holds around fold_projected would deadlock. One that
+  /// throws on the replay's thread is rethrown when the folding ends.
   geometry::ProgressFn progress;
   /// Called once with the CMML's sequence (what ProjectedFoldingResult::sequence will hold) before
   /// the replay judges it, so that the caller can use it meanwhile (`foldkit fold` writes its file

@@ -80,7 +80,8 @@ class PlanSpace {
   /// stay true), the driving space returns what it has at its next step (the states then end
   /// short of the path's end; the caller drops them). With a `stop` the driving space also does
   /// not halve a segment its continuation falls short of (the halving borrows the space's shared
-  /// solvers, which a planner on another thread may be using): it returns no states at all.
+  /// solvers, which a planner on another thread may be using): it returns no states at all, and
+  /// its sink gets none after those of the segments before (only then is the result empty).
   virtual std::vector<geometry::FoldState> path_states(const PlanSetup& setup, ompl::geometric::PathGeometric path, double step,
                                                        const StateSink& sink, const Stop& stop = {}) const;
 

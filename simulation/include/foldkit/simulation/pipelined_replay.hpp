@@ -49,8 +49,8 @@ class PipelinedReplay {
   /// A replay of `pattern` (which must outlive it) with `options`, the events at `speed` (rad/s,
   /// as path_sequence's `max_speed`). Its thread comes from `start`; when that throws
   /// std::system_error or gives no thread, the replay is inactive instead. Other exceptions of
-  /// `start` pass through.
-  /// @throws std::invalid_argument for options simulate() refuses
+  /// `start` pass through. Options simulate() refuses (std::invalid_argument) are thrown by
+  /// finish(), the replay being made on its thread.
   PipelinedReplay(const geometry::CreasePattern& pattern, const SimulationOptions& options, double speed,
                   const ThreadStarter& start = {});
   /// Stops the replay (cancel()) and waits for its thread.
@@ -92,6 +92,7 @@ class PipelinedReplay {
   std::condition_variable ready_;
   std::deque<geometry::FoldEvent> queue_;  // pushed, not yet replayed (under mutex_)
   bool closed_ = false, cancelled_ = false;
+  bool dead_ = false;  // the replay threw: push() queues nothing more (under mutex_)
   std::optional<SimulationReport> report_;
   std::exception_ptr error_;
   std::thread thread_;
