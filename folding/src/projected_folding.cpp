@@ -399,15 +399,13 @@ class Folder {
   geometry::RankDecision decision_;
 };
 
-// The replay of the result's sequence: the pipeline's, when it replayed exactly these events,
-// else simulate() now; `sequence_ready`'s reader runs meanwhile and is done before this returns
-// (on every way out, exceptions included).
-void replay(const geometry::CreasePattern& pattern, const ProjectedFoldingOptions& options, const simulation::SimulationOptions& so,
-            std::optional<simulation::PipelinedReplay>& pipeline, ProjectedFoldingResult& result) {
+// The replay of the result's sequence: the pipeline's, when it replayed these events, else
+// simulate() now (PipelinedReplay::report); `sequence_ready`'s reader runs meanwhile and is done
+// before this returns (on every way out, exceptions included).
+void replay(const ProjectedFoldingOptions& options, simulation::PipelinedReplay& pipeline, ProjectedFoldingResult& result) {
   simulation::ReaderWait wait;
   if (options.sequence_ready) wait.reading = options.sequence_ready(result.sequence);
-  std::optional<simulation::SimulationReport> piped = pipeline ? pipeline->finish(result.sequence) : std::nullopt;
-  result.replay = piped ? std::move(*piped) : simulation::simulate(pattern, result.sequence, so);
+  result.replay = pipeline.report(result.sequence);
   // The fold's own status stands (it says how far the folding got); the message adds the replay's verdict.
   if (!result.replay->status) result.status.message += "; the simulator rejects the CMML: " + result.replay->status.message;
 }
@@ -447,7 +445,7 @@ ProjectedFoldingResult fold_projected(const geometry::CreasePattern& pattern, co
     result.status.message += out.str();
   }
   result.sequence = geometry::path_sequence(pattern, result.states, options.speed, pattern.title());
-  if (options.replay && result.states.size() > 1) replay(pattern, options, so, pipeline, result);
+  if (pipeline && result.states.size() > 1) replay(options, *pipeline, result);
   return result;
 }
 

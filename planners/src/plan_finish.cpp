@@ -35,18 +35,9 @@ PlanResult& finish_plan(const PlanSetup& setup, const PlanOptions& options, std:
   if (options.sequence_ready) wait.reading = options.sequence_ready(result.sequence);
   if (options.replay) {
     // The pipeline replayed events as the waypoints came; its report is the plan's only when those
-    // events are exactly the sequence's (finish() compares them), else the sequence is replayed here.
-    std::optional<simulation::SimulationReport> replayed;
-    if (pipeline) replayed = pipeline->finish(result.sequence);
-    if (replayed) {
-      result.replay = std::move(replayed);
-    } else {
-      if (pipeline) pipeline->cancel();
-      simulation::SimulationOptions so;
-      so.collisions = options.collisions;
-      so.progress = options.progress;
-      result.replay = simulation::simulate(*setup.pattern, result.sequence, so);
-    }
+    // events are the sequence's (by their digest), else the sequence is replayed here.
+    result.replay = pipeline ? pipeline->report(result.sequence)
+                             : simulation::simulate(*setup.pattern, result.sequence, replay_options(options));
     result.max_closure_error = std::max(result.max_closure_error, result.replay->max_closure_error);
     if (!result.replay->status) {
       result.status = {result.replay->status.code, "the simulator rejects the plan: " + result.replay->status.message};

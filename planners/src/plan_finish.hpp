@@ -13,8 +13,8 @@ class ReplayPipeline;
 
 // Closure along `waypoints`, the CMML and the simulator's replay, into `result`; its status is
 // Success with the message `success` when all pass. With an active `pipeline` whose events are
-// exactly the sequence's (ReplayPipeline::finish), its replay is the plan's; else (none, inactive,
-// or other events) the sequence is replayed here, and the pipeline is cancelled.
+// the sequence's (ReplayPipeline::report, by their digest), its replay is the plan's; else (none,
+// inactive, or other events) the sequence is replayed here, and the pipeline is cancelled.
 PlanResult& finish_plan(const PlanSetup& setup, const PlanOptions& options, std::vector<geometry::FoldState> waypoints,
                         PlanResult& result, const std::string& success, ReplayPipeline* pipeline = nullptr);
 

@@ -15,6 +15,10 @@ namespace foldkit::planners::detail {
 
 using simulation::ThreadStarter;
 
+// The replay a plan's options ask for (collisions and progress as they say; simulate()'s
+// defaults otherwise), piped or not.
+simulation::SimulationOptions replay_options(const PlanOptions& options);
+
 // Replays the events of a plan's waypoints (geometry::path_event, as plan_sequence makes them) as
 // the waypoints come, on a thread of its own (simulation::PipelinedReplay), so the replay of the
 // early events overlaps the continuation of the later ones; its report is simulate()'s of the
@@ -47,8 +51,15 @@ class ReplayPipeline {
   std::optional<simulation::SimulationReport> finish(const geometry::FoldSequence& sequence) {
     return active() ? replay_->finish(sequence) : std::nullopt;
   }
+  // simulate()'s report of `sequence` with replay_options(): the pipeline's when it replayed
+  // exactly its events, else `sequence` replayed here (simulation::PipelinedReplay::report).
+  simulation::SimulationReport report(const geometry::FoldSequence& sequence) {
+    return replay_ ? replay_->report(sequence) : simulation::simulate(*pattern_, sequence, options_);
+  }
 
  private:
+  const geometry::CreasePattern* pattern_;
+  simulation::SimulationOptions options_;
   std::optional<simulation::PipelinedReplay> replay_;
 };
 

@@ -98,6 +98,12 @@ std::optional<SimulationReport> PipelinedReplay::finish(const geometry::FoldSequ
   return report;
 }
 
+SimulationReport PipelinedReplay::report(const geometry::FoldSequence& sequence) {
+  if (std::optional<SimulationReport> replayed = finish(sequence)) return std::move(*replayed);
+  cancel();
+  return simulate(pattern_, sequence, options_);
+}
+
 // The replay thread: events in the order pushed, until closed (the report) or cancelled (none).
 void PipelinedReplay::run() {
   try {

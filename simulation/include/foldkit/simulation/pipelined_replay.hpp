@@ -76,6 +76,10 @@ class PipelinedReplay {
   /// itself. Rethrows what the replay threw (SequenceError) for those events. Nothing when
   /// inactive, cancelled or finished before.
   std::optional<SimulationReport> finish(const geometry::FoldSequence& sequence);
+  /// simulate()'s report of `sequence` with this replay's options: finish()'s when it has one,
+  /// else (inactive, other events, cancelled) `sequence` replayed here, on the caller's thread,
+  /// once the replay's thread has ended (their progress calls never overlap).
+  SimulationReport report(const geometry::FoldSequence& sequence);
 
  private:
   void run();
