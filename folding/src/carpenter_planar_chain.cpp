@@ -2,12 +2,14 @@
 #include "carpenter_planar_chain.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "carpenter_planar_velocity.hpp"
+#include "pair_halves.hpp"
 
 namespace foldkit::folding::planar_detail {
 
@@ -66,26 +68,33 @@ bool expansive(const MergedChain& chain, const Frame2& before, const Frame2& aft
   const auto rounding = [&](int a, int b) { return (a + b + 2) * unit; };
   // Squared distances first, over coordinate arrays (vectorised): a pair whose squared distance
   // did not shrink passes without a square root, as sqrt is monotone.
-  std::vector<double> bx(m), by(m), ax(m), ay(m), shrunk(m);
+  std::vector<double> bx(m), by(m), ax(m), ay(m);
   for (int a = 0; a < m; ++a) {
     bx[a] = before[a].x();
     by[a] = before[a].y();
     ax[a] = after[a].x();
     ay[a] = after[a].y();
   }
-  for (int a = 0; a < m; ++a) {
-    const int last = chain.closed() && a == 0 ? m - 2 : m - 1;
-    bool any = false;
-    for (int b = a + 2; b <= last; ++b) {
-      const double ex = bx[b] - bx[a], ey = by[b] - by[a], fx = ax[b] - ax[a], fy = ay[b] - ay[a];
-      shrunk[b] = (fx * fx + fy * fy) - (ex * ex + ey * ey);
-      any = any || shrunk[b] < 0.0;
+  std::atomic<bool> shrank{false};  // set by either half (pair_halves.hpp: two threads); both stop
+  detail::for_two_halves(m, [&](int first, int last_a, int) {
+    std::vector<double> shrunk(static_cast<std::size_t>(m));
+    for (int a = first; a < last_a && !shrank.load(std::memory_order_relaxed); ++a) {
+      const int last = chain.closed() && a == 0 ? m - 2 : m - 1;
+      bool any = false;
+      for (int b = a + 2; b <= last; ++b) {
+        const double ex = bx[b] - bx[a], ey = by[b] - by[a], fx = ax[b] - ax[a], fy = ay[b] - ay[a];
+        shrunk[b] = (fx * fx + fy * fy) - (ex * ex + ey * ey);
+        any = any || shrunk[b] < 0.0;
+      }
+      if (!any) continue;
+      for (int b = a + 2; b <= last; ++b)
+        if (shrunk[b] < 0.0 && (after[b] - after[a]).norm() < (before[b] - before[a]).norm() - rounding(a, b)) {
+          shrank.store(true, std::memory_order_relaxed);
+          break;
+        }
     }
-    if (!any) continue;
-    for (int b = a + 2; b <= last; ++b)
-      if (shrunk[b] < 0.0 && (after[b] - after[a]).norm() < (before[b] - before[a]).norm() - rounding(a, b)) return false;
-  }
-  return true;
+  });
+  return !shrank.load();
 }
 
 // Bar directions of an open chain, unwrapped along it: each differs from the one before by the

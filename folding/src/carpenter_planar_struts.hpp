@@ -10,6 +10,8 @@
 
 #include <Eigen/Core>
 
+#include "pair_halves.hpp"
+
 namespace foldkit::folding::detail::struts {
 
 using Vec = Eigen::Vector2d;
@@ -98,7 +100,8 @@ class StrutModel {
 // mean_bar·(p_b − p_a)·(v_b − v_a)/|p_b − p_a|, screened without a square root (rate < cap ⇔
 // dot < 0 or (mean_bar·dot)² < cap²·|p_b − p_a|²) in plain loops over coordinate arrays that the
 // compiler vectorises. (Building a Row per pair made this check a tenth of the planner's time at
-// 1,000 links.)
+// 1,000 links.) The pairs are scanned in two halves on two threads (pair_halves.hpp); f is called
+// on the calling thread only, in the order of a single pass.
 constexpr double kRateCap = 2.0;
 
 template <typename F>
@@ -106,7 +109,7 @@ void for_each_low_rate(const StrutModel& model, const std::vector<Vec>& p, const
                        const std::vector<double>& joint_speed, F&& f) {
   const int m = model.vertices();
   const auto size = static_cast<std::size_t>(m);
-  std::vector<double> px(size), py(size), vx(size), vy(size), scaled_dot(size), squared(size);
+  std::vector<double> px(size), py(size), vx(size), vy(size);
   for (int a = 0; a < m; ++a) {
     px[a] = p[a].x();
     py[a] = p[a].y();
@@ -114,35 +117,52 @@ void for_each_low_rate(const StrutModel& model, const std::vector<Vec>& p, const
     vy[a] = v[a].y();
   }
   const double mean_bar = model.mean_bar();
-  auto short_pair = [&](int a, int b) {
-    if (model.is_bar(a, b)) return;
-    const double g = model.weighted_rate(model.row(a, b), v, joint_speed);
-    if (g < kRateCap) f(a, b, g);
+  struct Low {
+    int a, b;
+    double rate;
   };
-  for (int a = 0; a < m; ++a) {
-    // Far pairs: b in [far_lo, far_hi], where the chain arc both ways holds more than kShortArc
-    // vertices (the Cartesian form of StrutModel::row()).
-    const int far_lo = a + kShortArc + 2;
-    const int far_hi = model.closed() ? std::min(m - 1, a + m - kShortArc - 2) : m - 1;
-    for (int b = a + 2; b < std::min(far_lo, m); ++b) short_pair(a, b);
-    if (far_lo <= far_hi) {
-      const double ax = px[a], ay = py[a], avx = vx[a], avy = vy[a];
-      bool low = false;
-      for (int b = far_lo; b <= far_hi; ++b) {
-        const double dx = px[b] - ax, dy = py[b] - ay;
-        const double s = mean_bar * (dx * (vx[b] - avx) + dy * (vy[b] - avy)), d2 = dx * dx + dy * dy;
-        scaled_dot[b] = s;
-        squared[b] = d2;
-        low = low || s < 0.0 || s * s < kRateCap * kRateCap * d2;
-      }
-      if (low)
+  // The first half (pair_halves.hpp) runs on this thread and calls f as it goes; the second
+  // half's pairs wait in `later` and are handed to f after it, so f sees the order of one pass.
+  std::vector<Low> later;
+  for_two_halves(m, [&](int first, int last, int half) {
+    std::vector<double> scaled_dot(size), squared(size);
+    auto report = [&](int a, int b, double g) {
+      if (half == 0)
+        f(a, b, g);
+      else
+        later.push_back({a, b, g});
+    };
+    auto short_pair = [&](int a, int b) {
+      if (model.is_bar(a, b)) return;
+      const double g = model.weighted_rate(model.row(a, b), v, joint_speed);
+      if (g < kRateCap) report(a, b, g);
+    };
+    for (int a = first; a < last; ++a) {
+      // Far pairs: b in [far_lo, far_hi], where the chain arc both ways holds more than kShortArc
+      // vertices (the Cartesian form of StrutModel::row()).
+      const int far_lo = a + kShortArc + 2;
+      const int far_hi = model.closed() ? std::min(m - 1, a + m - kShortArc - 2) : m - 1;
+      for (int b = a + 2; b < std::min(far_lo, m); ++b) short_pair(a, b);
+      if (far_lo <= far_hi) {
+        const double ax = px[a], ay = py[a], avx = vx[a], avy = vy[a];
+        bool any = false;
         for (int b = far_lo; b <= far_hi; ++b) {
-          const double s = scaled_dot[b], d2 = squared[b];
-          if (s < 0.0 || s * s < kRateCap * kRateCap * d2) f(a, b, s / std::sqrt(d2));
+          const double dx = px[b] - ax, dy = py[b] - ay;
+          const double s = mean_bar * (dx * (vx[b] - avx) + dy * (vy[b] - avy)), d2 = dx * dx + dy * dy;
+          scaled_dot[b] = s;
+          squared[b] = d2;
+          any = any || s < 0.0 || s * s < kRateCap * kRateCap * d2;
         }
+        if (any)
+          for (int b = far_lo; b <= far_hi; ++b) {
+            const double s = scaled_dot[b], d2 = squared[b];
+            if (s < 0.0 || s * s < kRateCap * kRateCap * d2) report(a, b, s / std::sqrt(d2));
+          }
+      }
+      for (int b = std::max(far_hi + 1, far_lo); b < m; ++b) short_pair(a, b);
     }
-    for (int b = std::max(far_hi + 1, far_lo); b < m; ++b) short_pair(a, b);
-  }
+  });
+  for (const Low& l : later) f(l.a, l.b, l.rate);
 }
 
 }  // namespace foldkit::folding::detail::struts

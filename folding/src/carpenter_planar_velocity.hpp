@@ -3,6 +3,7 @@
 // planar chain, with struts added by constraint generation.
 #include <cstddef>
 #include <cstdint>
+#include <set>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -62,6 +63,12 @@ ExpansiveVelocity expansive_velocity(const std::vector<Eigen::Vector2d>& p, bool
 // at ω_a = Σ_{k ≤ a} speed_k, and v_{a+1} = v_a + ω_a·J(p_{a+1} − p_a).
 std::vector<Eigen::Vector2d> open_chain_velocities(const std::vector<Eigen::Vector2d>& p,
                                                    const std::vector<double>& speed);
+
+// The window LP of carried_velocity(), for its tests: the speeds of the joints k with in[k] that
+// minimise their Σ|θ̇ₖ| with every pair in `rows` (a < b, no bar) at weighted rate ≥ 1, the other
+// joints at `speed` (an open chain, bar 0 fixed). False, `speed` unchanged, when there are none.
+bool window_speeds(const std::vector<Eigen::Vector2d>& p, const std::set<std::pair<int, int>>& rows,
+                   const std::vector<char>& in, std::vector<double>& speed);
 
 // A field carried over from the last step (CarpenterPlanarMethod::CarriedField), mended.
 struct CarriedVelocity {
