@@ -69,9 +69,10 @@ std::vector<char> window_of(const std::set<std::pair<int, int>>& rows, const std
 // window at their carried speeds; solve() is false when the LP has no solution.
 //
 // A far pair's rate over the window joints between its ends, Σₖ θ̇ₖ·cross(p_b − pₖ, d), is
-// written as cross(p_b, d)·ΔΩ − cross(ΔS, d) with ΔΩ = Σₖ θ̇ₖ and ΔS = Σₖ θ̇ₖ·pₖ: differences of
-// running sums (Ω_j, S_j after the j-th window joint, three free columns tied by three rows per
-// joint), so the row has 6 entries instead of one per window joint. Written joint by joint, the
+// written as cross(p_b − o, d)·ΔΩ − cross(ΔS, d) with ΔΩ = Σₖ θ̇ₖ and ΔS = Σₖ θ̇ₖ·(pₖ − o), o the
+// window's mean: differences of running sums (Ω_j, S_j after the j-th window joint, three free
+// columns tied by three rows per joint), so the row has at most 6 entries instead of two (θ̇⁺,
+// θ̇⁻) per window joint. Written joint by joint, the
 // rows of a 400-joint window held ~200 entries each, and Clp's factorisations of those dense
 // rows were two thirds of the 2,000-link walk's time (48 of 75 s). Short-arc pairs keep their
 // joint form (at most kShortArc entries). Only the LP sees the running sums; the field it gives
