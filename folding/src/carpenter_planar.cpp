@@ -2,8 +2,6 @@
 // joints, solve the expansive-motion LP, step, restore bar lengths exactly, repeat.
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -301,36 +299,6 @@ class PlanarRun {
       if (chain_.is_joint(a)) carried_speed_[chain_.key(a)] = joint_rate(chain_, omega, a);
   }
 
-  // PROTOTYPE
-  Frame2 bend_path(const std::vector<double>& omega, double h) {
-    static const bool on = std::getenv("FOLDKIT_BEND") != nullptr;
-    static const double reach = std::getenv("FOLDKIT_BEND") ? std::atof(std::getenv("FOLDKIT_BEND")) : 2.0;
-    if (!on || closed_ || pseudo()) return {};
-    const auto t0 = std::chrono::steady_clock::now();
-    const int m = chain_.vertices();
-    std::vector<double> speed(static_cast<std::size_t>(m), 0.0);
-    for (int a = 0; a < m; ++a)
-      if (chain_.is_joint(a)) speed[a] = joint_rate(chain_, omega, a);
-    const int max_window = std::max(kMinWindow, static_cast<int>(options_.repair_window * m));
-    detail::BentPath path = detail::bend(chain_.q(), speed, reach * h, max_window);
-    result_.lp_solves += path.lp_solves;
-    bend_lps_ += path.lp_solves;
-    bend_steps_ += path.bent;
-    bend_left_ += path.rounds_left > 0;
-    bend_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return path.bent ? path.u : Frame2{};
-  }
-  std::size_t bend_lps_ = 0, bend_steps_ = 0, bend_left_ = 0;
-  std::chrono::steady_clock::time_point trace_start_ = std::chrono::steady_clock::now();
-  double bend_seconds_ = 0;
-
- public:
-  ~PlanarRun() {
-    if (std::getenv("FOLDKIT_BEND"))
-      std::fprintf(stderr, "bend: steps %zu lps %zu left %zu seconds %.2f\n", bend_steps_, bend_lps_, bend_left_, bend_seconds_);
-  }
-
- private:
   // The turn budget grows while steps pass at once and is halved per failed try.
   void adapt_budget(int halvings) {
     turn_budget_ = halvings == 0 ? std::min(turn_budget_ * 1.5, options_.max_turn) : turn_budget_ * std::pow(0.5, halvings);
@@ -362,16 +330,10 @@ class PlanarRun {
     const std::vector<double> omega = bar_rates(chain_, field.v);
     remember_speeds(omega);
     double h = turn_budget_ / fastest_joint(chain_, omega);
-    const Frame2 u = bend_path(omega, h);
     const std::vector<double> theta0 = joint_angles(chain_);
-    const int free_halvings = look_ahead(chain_, field.v, u, theta0, h);
-    const StepOutcome step = try_steps(chain_, field.v, u, omega, theta0, h);
+    const int free_halvings = look_ahead(chain_, field.v, theta0, h);
+    const StepOutcome step = try_steps(chain_, field.v, omega, theta0, h);
     const int halvings = std::max(0, step.attempts - 1 - free_halvings);
-    static const bool trace = std::getenv("FOLDKIT_TRACE") != nullptr;
-    if (trace)
-      std::fprintf(stderr, "step %zu m %d carried %d h %.3g budget %.3g attempts %d free %d bent %d event %d t %.2f bend %.2f\n", result_.steps,
-                   chain_.vertices(), int(carried), h, turn_budget_, step.attempts, free_halvings, int(!u.empty()), step.event_joint,
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - trace_start_).count(), bend_seconds_);
     adapt_budget(halvings);
     if (!step.accepted && carried) {
       // A carried field that no step can follow is no verdict: the global LP takes this step.

@@ -52,13 +52,6 @@ Frame2 advance(const MergedChain& chain, const Frame2& v, double h) {
   return out;
 }
 
-Frame2 along(const MergedChain& chain, const Frame2& v, const Frame2& u, double s) {
-  if (u.empty()) return advance(chain, v, s);
-  Frame2 w(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) w[i] = v[i] + 0.5 * s * u[i];
-  return advance(chain, w, s);
-}
-
 // Every pair of merged vertices that is not a bar keeps or grows its distance, to within the
 // rounding of the coordinates: a strut across an almost straight joint grows only to second
 // order in the joint angle, below what doubles resolve. A layout places vertex k by summing k
@@ -234,9 +227,9 @@ bool any_joint_flips(const MergedChain& chain, const Frame2& q, const std::vecto
 // Farther probes catch a joint that creeps towards straight ever more slowly (its speed shrinks
 // with its angle): stepping a little at a time would never reach it. Halvings back down to the
 // usual step do not shrink the budget, so their count is returned. Scales h in place.
-int look_ahead(const MergedChain& chain, const Frame2& v, const Frame2& u, const std::vector<double>& theta0, double& h) {
+int look_ahead(const MergedChain& chain, const Frame2& v, const std::vector<double>& theta0, double& h) {
   for (int reach = 0; reach < kFarProbes; ++reach) {
-    const Frame2 probe = along(chain, v, u, kLookahead * h);
+    const Frame2 probe = advance(chain, v, kLookahead * h);
     if (any_joint_flips(chain, probe, theta0)) {
       h *= kLookahead;
       return 2 * reach;
@@ -257,7 +250,7 @@ double turn_sign(const MergedChain& chain, const Frame2& q, int a) {
 }
 
 // The step length within (0, h] at which joint a passes straight, from below (by bisection).
-double straight_crossing(const MergedChain& chain, const Frame2& v, const Frame2& u, const std::vector<double>& omega,
+double straight_crossing(const MergedChain& chain, const Frame2& v, const std::vector<double>& omega,
                          const std::vector<double>& theta0, int a, double h) {
   double lo = 0.0, hi = h;
   // Which side joint a is on after a step of length s. An open chain's layout turns each bar at a
@@ -266,17 +259,15 @@ double straight_crossing(const MergedChain& chain, const Frame2& v, const Frame2
   // per halving. A closed chain's closing correction moves every bar: laid out whole.
   const Frame2& q = chain.q();
   auto direction = [&](int bar, double s) {
-    Vec dv = v[bar + 1] - v[bar];
-    if (!u.empty()) dv += 0.5 * s * (u[bar + 1] - u[bar]);
-    const Vec d = q[bar + 1] - q[bar];
+    const Vec d = q[bar + 1] - q[bar], dv = v[bar + 1] - v[bar];
     const double phi = std::atan2(d.y(), d.x()) + s * cross(d, dv) / d.squaredNorm();
     return Vec(std::cos(phi), std::sin(phi));
   };
   auto side = [&](double s) {
-    if (chain.closed()) return turn_sign(chain, along(chain, v, u, s), a);
-    const Vec e = direction(a - 1, s), w = direction(a, s);
-    const double c = cross(e, w);
-    return c != 0.0 ? sign(c) : sign(std::atan2(c, e.dot(w)));
+    if (chain.closed()) return turn_sign(chain, advance(chain, v, s), a);
+    const Vec u = direction(a - 1, s), w = direction(a, s);
+    const double c = cross(u, w);
+    return c != 0.0 ? sign(c) : sign(std::atan2(c, u.dot(w)));
   };
   const double before = sign(theta0[a]);
   // Open chains turn each joint at a constant rate in angle coordinates, so the crossing is near
@@ -284,7 +275,7 @@ double straight_crossing(const MergedChain& chain, const Frame2& v, const Frame2
   // of the ~50 halvings).
   const double rate = joint_rate(chain, omega, a);
   const double guess = rate != 0.0 ? -theta0[a] / rate : 0.0;
-  if (!chain.closed() && u.empty() && guess > 0.0 && guess < h) {
+  if (!chain.closed() && guess > 0.0 && guess < h) {
     const double below = guess * (1.0 - 1e-9), above = std::min(h, guess * (1.0 + 1e-9));
     if (side(below) == before && side(above) != before) {
       lo = below;
@@ -303,21 +294,21 @@ double straight_crossing(const MergedChain& chain, const Frame2& v, const Frame2
 }
 
 // Steps of length h, halved until one keeps every distance growing (at most 200 tries).
-StepOutcome try_steps(const MergedChain& chain, const Frame2& v, const Frame2& u, const std::vector<double>& omega,
+StepOutcome try_steps(const MergedChain& chain, const Frame2& v, const std::vector<double>& omega,
                       const std::vector<double>& theta0, double h) {
   StepOutcome step;
   for (int attempt = 0; attempt < 200 && !step.accepted; ++attempt) {
     ++step.attempts;
-    step.next = along(chain, v, u, h);
+    step.next = advance(chain, v, h);
     // A joint that would pass straight stops the step exactly there; it is then merged.
     step.event_joint = -1;
     for (int a = 0; a < chain.vertices(); ++a) {
       if (!chain.is_joint(a) || turn_sign(chain, step.next, a) == sign(theta0[a])) continue;
       // Joints are visited in order and `next` follows h, so a joint is bisected only when it
       // still passes straight within the step already shortened for earlier ones.
-      h = straight_crossing(chain, v, u, omega, theta0, a, h);
+      h = straight_crossing(chain, v, omega, theta0, a, h);
       step.event_joint = a;
-      step.next = along(chain, v, u, h);
+      step.next = advance(chain, v, h);
     }
     if (h > 0.0 && expansive(chain, chain.q(), step.next)) {
       step.accepted = true;

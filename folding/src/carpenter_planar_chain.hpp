@@ -111,10 +111,6 @@ class MergedChain {
 // then closed by Newton steps on the bar directions (bar 0 stays pinned).
 Frame2 advance(const MergedChain& chain, const Frame2& v, double h);
 
-// A curved step: bar a turned by s·ω_a + ½s²·α_a, ω from v and α from u as advance() takes them
-// (u: joint accelerations laid out as velocities, detail::bend()); empty u is advance(chain, v, s).
-Frame2 along(const MergedChain& chain, const Frame2& v, const Frame2& u, double s);
-
 // Every pair of merged vertices that is not a bar keeps or grows its distance, to within the
 // rounding of the coordinates: a strut across an almost straight joint grows only to second
 // order in the joint angle, below what doubles resolve. A layout places vertex k by summing k
@@ -179,10 +175,10 @@ bool any_joint_flips(const MergedChain& chain, const Frame2& q, const std::vecto
 // Farther probes catch a joint that creeps towards straight ever more slowly (its speed shrinks
 // with its angle): stepping a little at a time would never reach it. Halvings back down to the
 // usual step do not shrink the budget, so their count is returned. Scales h in place.
-int look_ahead(const MergedChain& chain, const Frame2& v, const Frame2& u, const std::vector<double>& theta0, double& h);
+int look_ahead(const MergedChain& chain, const Frame2& v, const std::vector<double>& theta0, double& h);
 
 // The step length within (0, h] at which joint a passes straight, from below (by bisection).
-double straight_crossing(const MergedChain& chain, const Frame2& v, const Frame2& u, const std::vector<double>& omega,
+double straight_crossing(const MergedChain& chain, const Frame2& v, const std::vector<double>& omega,
                          const std::vector<double>& theta0, int a, double h);
 
 // What try_steps() found.
@@ -194,7 +190,7 @@ struct StepOutcome {
 };
 
 // Steps of length h, halved until one keeps every distance growing (at most 200 tries).
-StepOutcome try_steps(const MergedChain& chain, const Frame2& v, const Frame2& u, const std::vector<double>& omega,
+StepOutcome try_steps(const MergedChain& chain, const Frame2& v, const std::vector<double>& omega,
                       const std::vector<double>& theta0, double h);
 
 }  // namespace foldkit::folding::planar_detail

@@ -23,7 +23,6 @@ constexpr double kSpeedBox = 1e12;  // as the global LP's columns
 // Constraint-generation rounds of one repair, and the first window's reach in joints (doubled
 // whenever the window LP is infeasible).
 constexpr int kRounds = 30;
-constexpr int kBendRounds = 8;  // bend(): a path left bent is still checked by the step
 constexpr int kFirstReach = 2;
 // Clp's status codes (ClpSimplex::Status) for a starting basis.
 constexpr unsigned char kBasic = 1, kAtLower = 3;
@@ -85,11 +84,10 @@ std::vector<char> window_of(const std::set<std::pair<int, int>>& rows, const std
 // instead of 22; the mapped basis is not dual feasible once the window has grown).
 class WindowLp {
  public:
-  // `lower`, when given, holds each row's bound (in the set's order) instead of 1.
   bool solve(const StrutModel& model, const std::vector<Vec>& p, const std::set<std::pair<int, int>>& rows,
-             const std::vector<char>& in, std::vector<double>& speed, const std::vector<double>* lower = nullptr) {
+             const std::vector<char>& in, std::vector<double>& speed) {
     const int m = model.vertices();
-    build(model, p, rows, in, speed, lower);
+    build(model, p, rows, in, speed);
     IncrementalLp clp(lp_);
     clp.set_basis(start_basis());
     const LpSolution s = clp.solve();
@@ -103,7 +101,7 @@ class WindowLp {
   // Window joint j (in chain order): columns θ̇⁺, θ̇⁻, Ω, Sx, Sy at 5j … 5j + 4, tie rows 3j … 3j + 2;
   // then one row per pair, in the set's order.
   void build(const StrutModel& model, const std::vector<Vec>& p, const std::set<std::pair<int, int>>& rows,
-             const std::vector<char>& in, const std::vector<double>& speed, const std::vector<double>* lower) {
+             const std::vector<char>& in, const std::vector<double>& speed) {
     const int m = model.vertices();
     lp_ = LinearProgram{};
     joints_ = 0;
@@ -135,12 +133,11 @@ class WindowLp {
       }
       before[k] = last;
     }
-    std::size_t i = 0;
-    for (const auto& [a, b] : rows) add_pair(model, p, speed, before, origin, a, b, lower ? (*lower)[i++] : 1.0);
+    for (const auto& [a, b] : rows) add_pair(model, p, speed, before, origin, a, b);
   }
 
   void add_pair(const StrutModel& model, const std::vector<Vec>& p, const std::vector<double>& speed,
-                const std::vector<int>& before, const Vec& origin, int a, int b, double lower) {
+                const std::vector<int>& before, const Vec& origin, int a, int b) {
     std::vector<std::pair<int, double>> row;
     double fixed = 0.0;
     const StrutModel::Row r = model.row(a, b);
@@ -164,7 +161,7 @@ class WindowLp {
         if (lo >= 0) row.insert(row.end(), {{lo + 2, -turn}, {lo + 3, r.d.y()}, {lo + 4, -r.d.x()}});
       }
     }
-    lp_.add_row(row, lower - fixed, kInf);
+    lp_.add_row(row, 1.0 - fixed, kInf);
   }
 
   // The running sums basic and their tie rows at bound (a triangular, nonsingular basis), every
@@ -247,95 +244,6 @@ CarriedVelocity carried_velocity(const std::vector<Vec>& p, std::vector<double> 
   out.struts = rows.size();
   out.solved = true;
   return out;
-}
-
-
-namespace {
-
-// The far pairs (a, b) of an open chain moving along θ(s) = θ₀ + s·θ̇ + ½s²·θ̈ whose squared
-// distance f would give back more than half its first-order growth by s = h: ḟ·h + ½f̈·h² <
-// ½ḟ·h, i.e. f̈·h < −ḟ. With the vertex velocities v (of θ̇), the bar accelerations at θ̈ = 0,
-// A_i = −Σ_{j<i} ω_j²·(p_{j+1} − p_j), and u (θ̈'s share, laid out as a velocity):
-// ḟ = d·(v_b − v_a), f̈ = |v_b − v_a|² + d·(A_b − A_a) + d·(u_b − u_a), d = p_b − p_a.
-struct Bent {
-  std::vector<std::pair<double, std::pair<int, int>>> pairs;  // (f̈·h/ḟ, pair), below −1
-};
-
-Bent bent_pairs(const std::vector<Vec>& p, const std::vector<Vec>& v, const std::vector<Vec>& A,
-                const std::vector<Vec>& u, double h) {
-  const int m = static_cast<int>(p.size());
-  Bent out;
-  for (int a = 0; a < m; ++a)
-    for (int b = a + struts::kShortArc + 2; b < m; ++b) {
-      const Vec d = p[b] - p[a], dv = v[b] - v[a];
-      const double rate = d.dot(dv);
-      if (!(rate > 0.0)) continue;  // not expansive: the step's check refuses it anyway
-      const double second = dv.squaredNorm() + d.dot(A[b] - A[a] + u[b] - u[a]);
-      if (second * h < -rate) out.pairs.push_back({second * h / rate, {a, b}});
-    }
-  return out;
-}
-
-}  // namespace
-
-BentPath bend(const std::vector<Vec>& p, const std::vector<double>& speed, double h, int max_window) {
-  const StrutModel model(p, false);
-  const int m = model.vertices();
-  BentPath out;
-  const std::vector<Vec> v = open_chain_velocities(p, speed);
-  std::vector<Vec> A(p.size(), Vec::Zero());
-  double omega = 0.0;
-  for (int a = 0; a + 1 < m; ++a) {
-    if (a > 0) omega += speed[a];
-    A[a + 1] = A[a] - omega * omega * (p[a + 1] - p[a]);
-  }
-  std::vector<double> accel(p.size(), 0.0);
-  std::vector<Vec> u(p.size(), Vec::Zero());
-  Bent bent = bent_pairs(p, v, A, u, h);
-  std::set<std::pair<int, int>> rows;
-  WindowLp window_lp;
-  int reach = kFirstReach;
-  // The last θ̈ an LP gave (all 0 when none solved), and how many pairs it leaves bent.
-  auto finish = [&] {
-    out.accel = accel;
-    out.u = u;
-    out.rounds_left = bent.pairs.size();
-    return out;
-  };
-  for (int round = 0; round < kBendRounds && !bent.pairs.empty(); ++round) {
-    const auto cap = static_cast<std::size_t>(std::max(kMinRows, static_cast<int>(kRowShare * m)));
-    if (bent.pairs.size() > cap) {
-      std::nth_element(bent.pairs.begin(), bent.pairs.begin() + static_cast<std::ptrdiff_t>(cap), bent.pairs.end());
-      bent.pairs.resize(cap);
-    }
-    bool grow = false;
-    for (const auto& entry : bent.pairs) grow = !rows.insert(entry.second).second || grow;
-    if (grow) reach = std::min(2 * reach, m);
-    // Each row: w·d·(u_b − u_a) ≥ w·(−|Δv|² − d·ΔA − ½ḟ/h), w = mean bar/|d| as the strut rows.
-    std::vector<double> lower;
-    lower.reserve(rows.size());
-    for (const auto& [a, b] : rows) {
-      const Vec d = p[b] - p[a], dv = v[b] - v[a];
-      const double w = model.mean_bar() / d.norm();
-      lower.push_back(w * (-dv.squaredNorm() - d.dot(A[b] - A[a]) - 0.5 * d.dot(dv) / h));
-    }
-    std::vector<char> in = window_of(rows, {}, m, reach);
-    std::vector<double> trial = accel;
-    for (;;) {
-      const auto joints = std::count(in.begin(), in.end(), 1);
-      if (joints > max_window) return finish();
-      ++out.lp_solves;
-      if (window_lp.solve(model, p, rows, in, trial, &lower)) break;
-      reach *= 2;
-      in = window_of(rows, {}, m, reach);
-      if (std::count(in.begin(), in.end(), 1) == joints) return finish();
-    }
-    accel = std::move(trial);
-    u = open_chain_velocities(p, accel);
-    bent = bent_pairs(p, v, A, u, h);
-    out.bent = true;
-  }
-  return finish();
 }
 
 }  // namespace foldkit::folding::detail

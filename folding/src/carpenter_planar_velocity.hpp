@@ -92,18 +92,4 @@ struct CarriedVelocity {
 CarriedVelocity carried_velocity(const std::vector<Eigen::Vector2d>& p, std::vector<double> speed,
                                  const std::vector<int>& dropped, double floor, int max_window);
 
-// A curved step for an open chain whose joints turn at `speed` (bar 0 fixed): joint accelerations
-// θ̈ for θ(s) = θ₀ + s·θ̇ + ½s²·θ̈ such that no far pair gives back more than half of its
-// first-order growth by s = h to the second order (a straight step, θ̈ = 0, loses R·ω²·h² on a
-// pair at distance R across sub-chains turning at ω). Found like carried_velocity()'s mend: the
-// pairs that would, in rounds, by the window LP minimising Σ|θ̈| over the joints near their ends.
-struct BentPath {
-  std::vector<Eigen::Vector2d> u;  // θ̈ laid out as velocities (open_chain_velocities(p, accel))
-  std::vector<double> accel;       // θ̈ per vertex
-  std::size_t lp_solves = 0;
-  std::size_t rounds_left = 0;     // pairs still losing more than half at the end
-  bool bent = false;               // some LP solved: accel is not all 0
-};
-BentPath bend(const std::vector<Eigen::Vector2d>& p, const std::vector<double>& speed, double h, int max_window);
-
 }  // namespace foldkit::folding::detail
