@@ -22,6 +22,8 @@ struct CarpenterArgs {
   bool closed = false, fold = false, json = false;
   std::string method = folding::to_string(folding::CarpenterPlanarOptions{}.method);  // folding::parse_carpenter_method
   std::size_t max_steps = folding::CarpenterPlanarOptions{}.max_steps;
+  std::size_t frame_stride = folding::CarpenterPlanarOptions{}.frame_stride;
+  bool frame_stride_given = false;  // --frame-stride on the command line (planar chains only)
 };
 
 // Whether `path` names an output of that extension, plain or gzip-compressed (X.cmml.gz:
@@ -35,6 +37,7 @@ bool is_output(const std::string& path, const std::string& extension) {
 int run_spherical(const CarpenterArgs& opt) {
   if (opt.closed) throw UsageError("--closed is for planar chains; a single vertex is always a closed spherical chain");
   if (!opt.frames_csv.empty()) throw UsageError("--frames-csv is for planar chains");
+  if (opt.frame_stride_given) throw UsageError("--frame-stride is for planar chains");
   LoadedPattern loaded = load_pattern(opt.chain);
   geometry::FoldState folded = loaded.state ? *loaded.state : geometry::FoldState::flat(loaded.pattern);
   if (!opt.state.empty()) folded = state_from(loaded.pattern, opt.state);
@@ -108,6 +111,7 @@ int run_planar(const CarpenterArgs& opt) {
   }
   folding::CarpenterPlanarOptions options;
   options.max_steps = opt.max_steps;
+  options.frame_stride = opt.frame_stride;
   options.method = folding::parse_carpenter_method(opt.method);
   ProgressLine progress("carpenter");
   options.progress = progress.callback();
@@ -156,8 +160,13 @@ Command add_carpenter(CLI::App& root) {
                   "pseudo-triangulation mechanism, flips at events); docs/CARPENTER.md")
       ->check(CLI::IsMember(folding::carpenter_method_names()));
   positive(app->add_option("--max-steps", opt->max_steps, "Stop after this many steps (exit 4)"));
+  CLI::Option* stride = positive(app->add_option(
+      "--frame-stride", opt->frame_stride,
+      "Planar chains: write one frame every N steps (the input and the end always): a chain of thousands of "
+      "links takes thousands of steps, each a frame of every vertex otherwise"));
   add_json(app, opt->json);
-  return {app, [opt] {
+  return {app, [opt, stride] {
+            opt->frame_stride_given = stride->count() > 0;
             const io::FileFormat* format = io::format_of(opt->chain);
             if (format && io::reads_patterns(*format)) return run_spherical(*opt);
             if (!opt->state.empty()) throw UsageError("--state is for a single-vertex crease pattern (.pmml, .fold)");

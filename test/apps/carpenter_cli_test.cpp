@@ -224,6 +224,31 @@ TEST(CarpenterCli, NinetyPointSpiralStraightensByBothMethods) {
   }
 }
 
+// --frame-stride N keeps every N-th step's frame of the same run (the input and the end always):
+// the frames of the unstrided run at steps 0, N, 2N, …, and its last, bit for bit, and the JSON
+// counts them. The run itself (its steps) does not change.
+TEST(CarpenterCli, FrameStrideKeepsEveryNthFrameOfTheSameRun) {
+  const std::string chain = foldkit::test::data_path("carpenter_spiral90.txt");
+  const std::string every = temp_dir() + "/stride-1.json", some = temp_dir() + "/stride-3.json";
+  const CliResult all = foldkit({"carpenter", chain, "-o", every, "--json"});
+  ASSERT_EQ(all.exit, 0) << all.err;
+  const CliResult strided = foldkit({"carpenter", chain, "-o", some, "--frame-stride", "3", "--json"});
+  ASSERT_EQ(strided.exit, 0) << strided.err;
+  const auto j1 = nlohmann::json::parse(all.out), j3 = nlohmann::json::parse(strided.out);
+  EXPECT_EQ(j1["steps"], j3["steps"]);
+  const auto f1 = nlohmann::json::parse(slurp(every))["frames"], f3 = nlohmann::json::parse(slurp(some))["frames"];
+  ASSERT_GT(f1.size(), 7u) << "too few steps to tell a stride from none";
+  std::vector<std::size_t> kept;
+  for (std::size_t k = 0; k < f1.size(); k += 3) kept.push_back(k);
+  if (kept.back() != f1.size() - 1) kept.push_back(f1.size() - 1);
+  ASSERT_EQ(f3.size(), kept.size());
+  for (std::size_t i = 0; i < kept.size(); ++i) EXPECT_EQ(f3[i], f1[kept[i]]) << "frame " << i << " = step " << kept[i];
+  EXPECT_EQ(j3["frames"].get<std::size_t>(), kept.size());
+  EXPECT_TRUE(j3["straight"].get<bool>());
+  EXPECT_EQ(foldkit({"carpenter", chain, "--frame-stride", "0"}).exit, 2);
+  EXPECT_EQ(foldkit({"carpenter", chain, "--frame-stride", "x"}).exit, 2);
+}
+
 TEST(CarpenterCli, SingleVertexPmmlIsFlattenedOnTheSphere) {
   // A degree-4 vertex folded to a closed state (projected by foldkit project), then flattened.
   const std::string pattern = write_temp("v4.pmml", "");
@@ -248,6 +273,7 @@ TEST(CarpenterCli, SingleVertexPmmlIsFlattenedOnTheSphere) {
   // --max-steps holds for the sphere too: one step does not reach flat (exit 4, no plan).
   const CliResult short_run = foldkit({"carpenter", pattern, "--state", closed, "--max-steps", "1", "--json"});
   EXPECT_EQ(short_run.exit, 4) << short_run.err;
+  EXPECT_EQ(foldkit({"carpenter", pattern, "--state", closed, "--frame-stride", "2"}).exit, 2);  // planar only
   EXPECT_FALSE(nlohmann::json::parse(short_run.out)["flat"].get<bool>());
 }
 
