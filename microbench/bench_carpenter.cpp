@@ -7,9 +7,14 @@
 // side on smaller chains, the same planner with all O(n²) struts in every LP
 // (BM_Carpenter_Ours vs BM_Carpenter_AllStruts on identical chains). The 1,000-link case used to
 // look like a planner that never finished: it was the chain generator, which restarted from
-// scratch at every dead end (see random_chain).
+// scratch at every dead end (see random_chain). Also, side by side, what recording one frame
+// costs: two generic check_motion() calls (before) against the planner's own figures
+// (BM_RecordFrame_Ours: bar lengths alone, vectorised pairs on two threads).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+
+#include "../folding/src/carpenter_planar_chain.hpp"
 #include "carpenter_inputs.hpp"
 #include "foldkit/folding/carpenter.hpp"
 
@@ -92,5 +97,33 @@ BENCHMARK(BM_Carpenter_Ours)->Arg(50)->Arg(100)->Iterations(1)->Unit(benchmark::
 BENCHMARK(BM_Carpenter_AllStruts)->Arg(50)->Arg(100)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+
+// A frame and the one after it: a lattice walk scaled by 1 + 1e-6 about its first vertex, so every
+// pair grows (then every pair needs its square roots: the worst case); with `shrink`, vertex 0
+// also moves 1e-3 of the way to vertex 2, so some of its pairs shrink, as rounding makes a few
+// pairs shrink between the planner's frames (then only those need square roots).
+std::pair<Frame2, Frame2> frame_pair(int links, bool shrink) {
+  const Frame2 p = foldkit::microbench::random_lattice_walk(links, 1);
+  Frame2 q = p;
+  for (auto& x : q) x = p[0] + (1.0 + 1e-6) * (x - p[0]);
+  if (shrink) q[0] += 1e-3 * (p[2] - p[0]);
+  return {p, q};
+}
+
+void BM_RecordFrame_CheckMotion(benchmark::State& state) {
+  const auto [p, q] = frame_pair(static_cast<int>(state.range(0)), state.range(1) != 0);
+  for (auto _ : state) {
+    const MotionCheck step = check_motion({p, q}, false), lengths = check_motion({p, q}, false);
+    benchmark::DoNotOptimize(step.min_distance_growth + lengths.max_length_error);
+  }
+}
+
+void BM_RecordFrame_Ours(benchmark::State& state) {
+  const auto [p, q] = frame_pair(static_cast<int>(state.range(0)), state.range(1) != 0);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(planar_detail::min_distance_growth(p, q) + planar_detail::bar_length_error(p, q, false));
+}
+BENCHMARK(BM_RecordFrame_CheckMotion)->ArgsProduct({{1000, 3000, 10000}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RecordFrame_Ours)->ArgsProduct({{1000, 3000, 10000}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -68,12 +68,8 @@ class PlanarRun {
 
  private:
   void record(const Frame2& p) {
-    if (!last_recorded_.empty()) {
-      const MotionCheck c = check_motion({last_recorded_, p}, closed_);
-      min_growth_ = std::min(min_growth_, c.min_distance_growth);
-    }
-    const MotionCheck lengths = check_motion({input_.points, p}, closed_);
-    result_.max_length_error = std::max(result_.max_length_error, lengths.max_length_error);
+    if (!last_recorded_.empty()) min_growth_ = std::min(min_growth_, min_distance_growth(last_recorded_, p));
+    result_.max_length_error = std::max(result_.max_length_error, bar_length_error(input_.points, p, closed_));
     result_.frames.push_back(p);
     last_recorded_ = p;
   }

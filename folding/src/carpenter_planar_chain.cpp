@@ -97,6 +97,58 @@ bool expansive(const MergedChain& chain, const Frame2& before, const Frame2& aft
   return !shrank.load();
 }
 
+double bar_length_error(const Frame2& input, const Frame2& p, bool closed) {
+  const std::size_t n = input.size(), bars = closed ? n : (n == 0 ? 0 : n - 1);
+  double error = 0.0;
+  for (std::size_t b = 0; b < bars; ++b) {
+    const std::size_t e = (b + 1) % n;
+    error = std::max(error, std::abs((p[e] - p[b]).norm() - (input[e] - input[b]).norm()));
+  }
+  return error;
+}
+
+// A pair whose squared distance did not shrink grew by ≥ 0 (sqrt is monotone), and one whose did
+// by ≤ 0: when any pair's squared distance shrank, the minimum is over those pairs alone, so only
+// they need square roots; otherwise every pair does (a second pass, rare at scale, where rounding
+// shrinks some pair almost every frame).
+double min_distance_growth(const Frame2& before, const Frame2& after) {
+  const int n = static_cast<int>(before.size());
+  std::vector<double> bx(n), by(n), ax(n), ay(n);
+  for (int a = 0; a < n; ++a) {
+    bx[a] = before[a].x();
+    by[a] = before[a].y();
+    ax[a] = after[a].x();
+    ay[a] = after[a].y();
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  double shrunk_min[2] = {inf, inf}, any_min[2] = {inf, inf};
+  bool shrank[2] = {false, false};
+  auto pass = [&](bool all) {
+    detail::for_two_halves(n, [&](int first, int last, int half) {
+      std::vector<double> change(static_cast<std::size_t>(n));
+      double& growth = all ? any_min[half] : shrunk_min[half];
+      for (int a = first; a < last; ++a) {
+        int shrinking = 0;  // counted, not or-ed: an integer sum lets the compiler vectorise the loop
+        for (int b = a + 1; b < n; ++b) {
+          const double ex = bx[b] - bx[a], ey = by[b] - by[a], fx = ax[b] - ax[a], fy = ay[b] - ay[a];
+          const double c = (fx * fx + fy * fy) - (ex * ex + ey * ey);
+          change[b] = c;
+          shrinking += c < 0.0;
+        }
+        const bool any = shrinking > 0;
+        if (!any && !all) continue;
+        shrank[half] = shrank[half] || any;
+        for (int b = a + 1; b < n; ++b)
+          if (all || change[b] < 0.0) growth = std::min(growth, (after[b] - after[a]).norm() - (before[b] - before[a]).norm());
+      }
+    });
+  };
+  pass(false);
+  if (shrank[0] || shrank[1]) return std::min(shrunk_min[0], shrunk_min[1]);
+  pass(true);
+  return std::min(any_min[0], any_min[1]);
+}
+
 // Bar directions of an open chain, unwrapped along it: each differs from the one before by the
 // turn at their joint, in (−π, π].
 std::vector<double> bar_directions(const MergedChain& chain) {

@@ -121,6 +121,16 @@ Frame2 advance(const MergedChain& chain, const Frame2& v, double h);
 // as "no step keeps every distance growing" once the first-order growth fell under it.
 bool expansive(const MergedChain& chain, const Frame2& before, const Frame2& after);
 
+// What record() reports of each frame, without check_motion()'s generic loops: the largest |bar
+// length − its length in `input`| of frame p (O(n)), and the smallest |after_j − after_i| −
+// |before_j − before_i| over all vertex pairs (+inf for fewer than two vertices), exactly as
+// check_motion() computes it, over coordinate arrays on two threads (pair_halves.hpp). At stride 1
+// a frame is recorded per step, and check_motion() run twice a frame (the second only for the
+// lengths, with an all-pairs loop whose result was dropped) was ~13·10⁹ pair evaluations for a
+// 3,000-link chain's ~1,500 steps.
+double bar_length_error(const Frame2& input, const Frame2& p, bool closed);
+double min_distance_growth(const Frame2& before, const Frame2& after);
+
 // Bar directions of an open chain, unwrapped along it: each differs from the one before by the
 // turn at their joint, in (−π, π].
 std::vector<double> bar_directions(const MergedChain& chain);

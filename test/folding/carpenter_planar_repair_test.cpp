@@ -235,4 +235,52 @@ TEST(CarpenterRepair, StepCheckOnTwoThreadsFindsAShrinkingPairInEitherHalf) {
   }
 }
 
+// record()'s figures of each frame (bar_length_error, min_distance_growth: vectorised, on two
+// threads from 400 vertices) are check_motion()'s, bit for bit. Frames: a 700-link walk moved
+// along its LP field (bars stretch, pairs shrink); the walk with its first (then last) vertex
+// moved towards the vertex two along, so that the most shrinking pair lies in the first (then
+// second) half of the pairs; and a row of points scaled by 1.5 with its closest pair at either
+// end, where no pair shrinks and the second pass, over every pair, decides.
+TEST(CarpenterRepair, RecordedFiguresAreThoseOfCheckMotion) {
+  const Frame2 p = foldkit::microbench::random_lattice_walk(700, 2);
+  const int n = static_cast<int>(p.size());
+  const detail::ExpansiveVelocity lp = detail::expansive_velocity(p, false, {}, 1.0, false);
+  ASSERT_TRUE(lp.solved);
+  std::vector<std::pair<Frame2, Frame2>> cases;
+  for (const double h : {1e-3, 1e-1, 1.0}) {
+    Frame2 q = p;
+    for (int i = 0; i < n; ++i) q[i] += h * lp.v[i];
+    cases.emplace_back(p, q);
+  }
+  for (const auto& [moved, towards] : {std::pair<int, int>{0, 2}, {n - 1, n - 3}}) {
+    Frame2 q = p;
+    q[moved] += 0.1 * (p[towards] - p[moved]);
+    cases.emplace_back(p, q);
+  }
+  for (const bool close_at_end : {false, true}) {
+    Frame2 row(static_cast<std::size_t>(n)), scaled(static_cast<std::size_t>(n));
+    double x = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const bool close = close_at_end ? i == n - 1 : i == 1;
+      x += i == 0 ? 0.0 : (close ? 0.5 : 1.0);
+      row[i] = Vec(x, 0.0);
+      scaled[i] = 1.5 * row[i];
+    }
+    cases.emplace_back(row, scaled);
+  }
+  int shrinking = 0, growing = 0;
+  for (std::size_t k = 0; k < cases.size(); ++k)
+    for (const bool closed : {false, true}) {
+      const auto& [before, after] = cases[k];
+      const MotionCheck c = check_motion({before, after}, closed);
+      EXPECT_EQ(planar_detail::min_distance_growth(before, after), c.min_distance_growth) << "case " << k;
+      EXPECT_EQ(planar_detail::bar_length_error(before, after, closed), c.max_length_error) << "case " << k;
+      shrinking += c.min_distance_growth < 0.0;
+      growing += c.min_distance_growth > 0.0;
+    }
+  EXPECT_GE(shrinking, 4);  // at least the moved vertices' frames: the first pass decides
+  EXPECT_GE(growing, 4);    // at least the rows: the second pass decides
+  EXPECT_TRUE(std::isinf(planar_detail::min_distance_growth(Frame2{Vec(1, 2)}, Frame2{Vec(1, 2)})));
+}
+
 }  // namespace
