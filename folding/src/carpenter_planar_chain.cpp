@@ -12,6 +12,20 @@
 #include "pair_halves.hpp"
 
 namespace foldkit::folding::planar_detail {
+namespace {
+
+// A frame's coordinates as two arrays, for the all-pairs loops the compiler vectorises.
+struct Coordinates {
+  explicit Coordinates(const Frame2& p) : x(p.size()), y(p.size()) {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      x[i] = p[i].x();
+      y[i] = p[i].y();
+    }
+  }
+  std::vector<double> x, y;
+};
+
+}  // namespace
 
 // Positions after turning each bar for a time h at the angular speed v gives it, laid out with
 // its own length from the pinned vertex 0: lengths stay exact, and a part of the chain that v
@@ -68,13 +82,8 @@ bool expansive(const MergedChain& chain, const Frame2& before, const Frame2& aft
   const auto rounding = [&](int a, int b) { return (a + b + 2) * unit; };
   // Squared distances first, over coordinate arrays (vectorised): a pair whose squared distance
   // did not shrink passes without a square root, as sqrt is monotone.
-  std::vector<double> bx(m), by(m), ax(m), ay(m);
-  for (int a = 0; a < m; ++a) {
-    bx[a] = before[a].x();
-    by[a] = before[a].y();
-    ax[a] = after[a].x();
-    ay[a] = after[a].y();
-  }
+  const Coordinates from(before), to(after);
+  const std::vector<double>&bx = from.x, &by = from.y, &ax = to.x, &ay = to.y;
   std::atomic<bool> shrank{false};  // set by either half (pair_halves.hpp: two threads); both stop
   detail::for_two_halves(m, [&](int first, int last_a, int) {
     std::vector<double> shrunk(static_cast<std::size_t>(m));
@@ -113,13 +122,8 @@ double bar_length_error(const Frame2& input, const Frame2& p, bool closed) {
 // shrinks some pair almost every frame).
 double min_distance_growth(const Frame2& before, const Frame2& after) {
   const int n = static_cast<int>(before.size());
-  std::vector<double> bx(n), by(n), ax(n), ay(n);
-  for (int a = 0; a < n; ++a) {
-    bx[a] = before[a].x();
-    by[a] = before[a].y();
-    ax[a] = after[a].x();
-    ay[a] = after[a].y();
-  }
+  const Coordinates from(before), to(after);
+  const std::vector<double>&bx = from.x, &by = from.y, &ax = to.x, &ay = to.y;
   const double inf = std::numeric_limits<double>::infinity();
   double shrunk_min[2] = {inf, inf}, any_min[2] = {inf, inf};
   bool shrank[2] = {false, false};
