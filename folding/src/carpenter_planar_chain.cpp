@@ -119,38 +119,48 @@ double bar_length_error(const Frame2& input, const Frame2& p, bool closed) {
 // A pair whose squared distance did not shrink grew by ≥ 0 (sqrt is monotone), and one whose did
 // by ≤ 0: when any pair's squared distance shrank, the minimum is over those pairs alone, so only
 // they need square roots; otherwise every pair does (a second pass, rare at scale, where rounding
-// shrinks some pair almost every frame).
+// shrinks some pair almost every frame). Which side a pair falls on agrees with Eigen's
+// squaredNorm() in check_motion() because both round x² + y² the same way: true without fused
+// multiply-adds (GCC in ISO mode on x86-64, as built here); with contraction a pair within rounding
+// of 0 could land on the other side, a rounding-level difference (expansive() assumes the same).
+// Each half keeps its minimum in a local and writes it once, so the threads share no cache line
+// per pair.
 double min_distance_growth(const Frame2& before, const Frame2& after) {
   const int n = static_cast<int>(before.size());
   const Coordinates from(before), to(after);
   const std::vector<double>&bx = from.x, &by = from.y, &ax = to.x, &ay = to.y;
+  auto growth = [&](int a, int b) { return (after[b] - after[a]).norm() - (before[b] - before[a]).norm(); };
   const double inf = std::numeric_limits<double>::infinity();
-  double shrunk_min[2] = {inf, inf}, any_min[2] = {inf, inf};
+  double minimum[2] = {inf, inf};
   bool shrank[2] = {false, false};
-  auto pass = [&](bool all) {
-    detail::for_two_halves(n, [&](int first, int last, int half) {
-      std::vector<double> change(static_cast<std::size_t>(n));
-      double& growth = all ? any_min[half] : shrunk_min[half];
-      for (int a = first; a < last; ++a) {
-        int shrinking = 0;  // counted, not or-ed: an integer sum lets the compiler vectorise the loop
-        for (int b = a + 1; b < n; ++b) {
-          const double ex = bx[b] - bx[a], ey = by[b] - by[a], fx = ax[b] - ax[a], fy = ay[b] - ay[a];
-          const double c = (fx * fx + fy * fy) - (ex * ex + ey * ey);
-          change[b] = c;
-          shrinking += c < 0.0;
-        }
-        const bool any = shrinking > 0;
-        if (!any && !all) continue;
-        shrank[half] = shrank[half] || any;
-        for (int b = a + 1; b < n; ++b)
-          if (all || change[b] < 0.0) growth = std::min(growth, (after[b] - after[a]).norm() - (before[b] - before[a]).norm());
+  detail::for_two_halves(n, [&](int first, int last, int half) {
+    std::vector<double> change(static_cast<std::size_t>(n));
+    double lowest = inf;
+    bool any = false;
+    for (int a = first; a < last; ++a) {
+      int shrinking = 0;  // counted, not or-ed: an integer sum lets the compiler vectorise the loop
+      for (int b = a + 1; b < n; ++b) {
+        const double ex = bx[b] - bx[a], ey = by[b] - by[a], fx = ax[b] - ax[a], fy = ay[b] - ay[a];
+        const double c = (fx * fx + fy * fy) - (ex * ex + ey * ey);
+        change[b] = c;
+        shrinking += c < 0.0;
       }
-    });
-  };
-  pass(false);
-  if (shrank[0] || shrank[1]) return std::min(shrunk_min[0], shrunk_min[1]);
-  pass(true);
-  return std::min(any_min[0], any_min[1]);
+      if (shrinking == 0) continue;
+      any = true;
+      for (int b = a + 1; b < n; ++b)
+        if (change[b] < 0.0) lowest = std::min(lowest, growth(a, b));
+    }
+    minimum[half] = lowest;
+    shrank[half] = any;
+  });
+  if (shrank[0] || shrank[1]) return std::min(minimum[0], minimum[1]);
+  detail::for_two_halves(n, [&](int first, int last, int half) {
+    double lowest = inf;
+    for (int a = first; a < last; ++a)
+      for (int b = a + 1; b < n; ++b) lowest = std::min(lowest, growth(a, b));
+    minimum[half] = lowest;
+  });
+  return std::min(minimum[0], minimum[1]);
 }
 
 // Bar directions of an open chain, unwrapped along it: each differs from the one before by the

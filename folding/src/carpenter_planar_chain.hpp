@@ -124,7 +124,8 @@ bool expansive(const MergedChain& chain, const Frame2& before, const Frame2& aft
 // What record() reports of each frame, without check_motion()'s generic loops: the largest |bar
 // length − its length in `input`| of frame p (O(n)), and the smallest |after_j − after_i| −
 // |before_j − before_i| over all vertex pairs (+inf for fewer than two vertices), exactly as
-// check_motion() computes it, over coordinate arrays on two threads (pair_halves.hpp). At stride 1
+// check_motion() computes it (but for frames whose every pair is NaN: +inf there, 0 from
+// check_motion), over coordinate arrays on two threads (pair_halves.hpp). At stride 1
 // a frame is recorded per step, and check_motion() run twice a frame (the second only for the
 // lengths, with an all-pairs loop whose result was dropped) was ~13·10⁹ pair evaluations for a
 // 3,000-link chain's ~1,500 steps.
