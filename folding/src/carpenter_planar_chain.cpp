@@ -12,21 +12,6 @@
 #include "pair_halves.hpp"
 
 namespace foldkit::folding::planar_detail {
-namespace {
-
-// A frame's coordinates as two arrays, for the all-pairs loops the compiler vectorises.
-struct Coordinates {
-  explicit Coordinates(const Frame2& p) : x(p.size()), y(p.size()) {
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      x[i] = p[i].x();
-      y[i] = p[i].y();
-    }
-  }
-  std::vector<double> x, y;
-};
-
-}  // namespace
-
 // Positions after turning each bar for a time h at the angular speed v gives it, laid out with
 // its own length from the pinned vertex 0: lengths stay exact, and a part of the chain that v
 // turns rigidly turns exactly (moving along h·v and projecting back would not). A closed chain is
@@ -82,20 +67,13 @@ bool expansive(const MergedChain& chain, const Frame2& before, const Frame2& aft
   const auto rounding = [&](int a, int b) { return (a + b + 2) * unit; };
   // Squared distances first, over coordinate arrays (vectorised): a pair whose squared distance
   // did not shrink passes without a square root, as sqrt is monotone.
-  const Coordinates from(before), to(after);
-  const std::vector<double>&bx = from.x, &by = from.y, &ax = to.x, &ay = to.y;
+  const detail::Coordinates from(before), to(after);
   std::atomic<bool> shrank{false};  // set by either half (pair_halves.hpp: two threads); both stop
   detail::for_two_halves(m, [&](int first, int last_a, int) {
     std::vector<double> shrunk(static_cast<std::size_t>(m));
     for (int a = first; a < last_a && !shrank.load(std::memory_order_relaxed); ++a) {
       const int last = chain.closed() && a == 0 ? m - 2 : m - 1;
-      bool any = false;
-      for (int b = a + 2; b <= last; ++b) {
-        const double ex = bx[b] - bx[a], ey = by[b] - by[a], fx = ax[b] - ax[a], fy = ay[b] - ay[a];
-        shrunk[b] = (fx * fx + fy * fy) - (ex * ex + ey * ey);
-        any = any || shrunk[b] < 0.0;
-      }
-      if (!any) continue;
+      if (detail::squared_changes(from, to, a, a + 2, last, shrunk) == 0) continue;
       for (int b = a + 2; b <= last; ++b)
         if (shrunk[b] < 0.0 && (after[b] - after[a]).norm() < (before[b] - before[a]).norm() - rounding(a, b)) {
           shrank.store(true, std::memory_order_relaxed);
@@ -127,8 +105,7 @@ double bar_length_error(const Frame2& input, const Frame2& p, bool closed) {
 // per pair.
 double min_distance_growth(const Frame2& before, const Frame2& after) {
   const int n = static_cast<int>(before.size());
-  const Coordinates from(before), to(after);
-  const std::vector<double>&bx = from.x, &by = from.y, &ax = to.x, &ay = to.y;
+  const detail::Coordinates from(before), to(after);
   auto growth = [&](int a, int b) { return (after[b] - after[a]).norm() - (before[b] - before[a]).norm(); };
   const double inf = std::numeric_limits<double>::infinity();
   double minimum[2] = {inf, inf};
@@ -138,14 +115,7 @@ double min_distance_growth(const Frame2& before, const Frame2& after) {
     double lowest = inf;
     bool any = false;
     for (int a = first; a < last; ++a) {
-      int shrinking = 0;  // counted, not or-ed: an integer sum lets the compiler vectorise the loop
-      for (int b = a + 1; b < n; ++b) {
-        const double ex = bx[b] - bx[a], ey = by[b] - by[a], fx = ax[b] - ax[a], fy = ay[b] - ay[a];
-        const double c = (fx * fx + fy * fy) - (ex * ex + ey * ey);
-        change[b] = c;
-        shrinking += c < 0.0;
-      }
-      if (shrinking == 0) continue;
+      if (detail::squared_changes(from, to, a, a + 1, n - 1, change) == 0) continue;
       any = true;
       for (int b = a + 1; b < n; ++b)
         if (change[b] < 0.0) lowest = std::min(lowest, growth(a, b));

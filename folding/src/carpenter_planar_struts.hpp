@@ -109,13 +109,8 @@ void for_each_low_rate(const StrutModel& model, const std::vector<Vec>& p, const
                        const std::vector<double>& joint_speed, F&& f) {
   const int m = model.vertices();
   const auto size = static_cast<std::size_t>(m);
-  std::vector<double> px(size), py(size), vx(size), vy(size);
-  for (int a = 0; a < m; ++a) {
-    px[a] = p[a].x();
-    py[a] = p[a].y();
-    vx[a] = v[a].x();
-    vy[a] = v[a].y();
-  }
+  const Coordinates position(p), velocity(v);
+  const std::vector<double>&px = position.x, &py = position.y, &vx = velocity.x, &vy = velocity.y;
   const double mean_bar = model.mean_bar();
   struct Low {
     int a, b;
