@@ -3,10 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -19,10 +16,6 @@
 
 namespace foldkit::folding {
 namespace {
-
-// Rounds of refused-pair demands per step before its length is halved: 3 took 2.3–3.3× fewer
-// steps than none on random star 200-gons (docs/CARPENTER.md).
-constexpr int kDemandRounds = 3;
 
 using namespace planar_detail;  // NOLINT: the chain's geometry, private to this folder
 using geometry::StatusCode;
@@ -66,7 +59,6 @@ class PlanarRun {
     if (finished(chain_)) result_.status = {StatusCode::Success, closed_ ? "convex" : "straight"};
     if (std::string why = length_drift(input_.points, closed_, result_.max_length_error); !why.empty())
       result_.status = {StatusCode::NoProgress, why};
-    if (std::getenv("FOLDKIT_TRACE")) std::fprintf(stderr, "demand rounds %zu\n", demand_rounds_);
     result_.min_distance_growth = std::isinf(min_growth_) ? 0.0 : min_growth_;
     result_.flips = mechanism_.counts.flips;
     result_.straightenings = mechanism_.counts.straightenings;
@@ -162,9 +154,8 @@ class PlanarRun {
       // checked by fresh solves, as it would be otherwise; a wrong one only keeps the hold.
       detail::RigidEnds none;
       none.probe = hold_.active;
-      field_lp_ = std::make_unique<detail::FieldLp>(chain_.q(), closed_, seed, radius * mean_merged,
-                                                    options_.all_struts, &keys, &basis_memo_, none);
-      field = field_lp_->solve();
+      field = detail::expansive_velocity(chain_.q(), closed_, seed, radius * mean_merged, options_.all_struts,
+                                         &keys, &basis_memo_, none);
       result_.lp_solves += field.lp_solves;
       result_.max_struts = std::max(result_.max_struts, field.struts);
       if (field.solved) hold_.active = false;
@@ -326,42 +317,18 @@ class PlanarRun {
   // False (with the status set) when the run cannot go on.
   bool lp_step() {
     detail::ExpansiveVelocity field;
-    field_lp_.reset();
     const bool carried = carry_field(field);
     if (!carried && !solve_velocity(field)) return false;
     const double budget = turn_budget_;
-    const std::vector<double> theta0 = joint_angles(chain_);
     // The step turns the fastest joint by about `turn_budget` radians: far vertices may sweep a
     // long way when a large part of the chain turns almost rigidly, which angle coordinates
     // integrate exactly. The budget grows while steps pass at once and shrinks when halved.
-    std::vector<double> omega;
-    double h = 0.0;
-    int free_halvings = 0;
-    auto aim = [&] {
-      omega = bar_rates(chain_, field.v);
-      remember_speeds(omega);
-      h = turn_budget_ / fastest_joint(chain_, omega);
-      free_halvings = look_ahead(chain_, field.v, theta0, h);
-    };
-    aim();
-    // A step the global LP's field cannot take whole: the pairs that refused it ask that LP for
-    // more growth (a raised row bound, solved on from its basis) before the step is halved.
-    static const int demand_rounds = std::getenv("FOLDKIT_DEMAND") ? std::atoi(std::getenv("FOLDKIT_DEMAND")) : kDemandRounds;
-    int rounds = field_lp_ && !held_ ? demand_rounds : 0;
-    StepOutcome step = try_steps(chain_, field.v, omega, theta0, h, rounds > 0 ? 1 : kMaxTries);
-    while (!step.accepted && rounds-- > 0) {
-      const std::vector<detail::Demand> more = refused_pair_demands(chain_, field.v, omega, step.next, step.h);
-      detail::ExpansiveVelocity asked = more.empty() ? detail::ExpansiveVelocity{} : field_lp_->demand(more);
-      result_.lp_solves += asked.lp_solves;
-      ++demand_rounds_;
-      if (asked.solved && asked.t > 0.0) {
-        field = std::move(asked);
-        aim();
-      } else {
-        rounds = 0;  // the field before stands, and is halved
-      }
-      step = try_steps(chain_, field.v, omega, theta0, h, rounds > 0 ? 1 : kMaxTries);
-    }
+    const std::vector<double> omega = bar_rates(chain_, field.v);
+    remember_speeds(omega);
+    double h = turn_budget_ / fastest_joint(chain_, omega);
+    const std::vector<double> theta0 = joint_angles(chain_);
+    const int free_halvings = look_ahead(chain_, field.v, theta0, h);
+    const StepOutcome step = try_steps(chain_, field.v, omega, theta0, h);
     const int halvings = std::max(0, step.attempts - 1 - free_halvings);
     adapt_budget(halvings);
     if (!step.accepted && carried) {
@@ -457,9 +424,7 @@ class PlanarRun {
   Frame2 pending_;                            // the last unrecorded frame (frame_stride > 1)
   pseudo_detail::PseudoMechanism mechanism_;  // method pseudo: the PPT between steps
   std::size_t unflips_seen_ = 0;              // mechanism_.counts.unflips at the last LP step
-  detail::BasisMemo basis_memo_;
-  std::unique_ptr<detail::FieldLp> field_lp_;  // this step's global LP, when it solved one
-  std::size_t demand_rounds_ = 0;              // printed under FOLDKIT_TRACE (experiment)              // the last LP's optimal basis: the next starts there
+  detail::BasisMemo basis_memo_;              // the last LP's optimal basis: the next starts there
   std::vector<std::pair<int, int>> carried_;  // binding struts of the last step, as input vertices
   std::vector<double> carried_speed_;         // last field's joint speeds by input vertex (CarriedField)
   bool monotone_failed_ = false;

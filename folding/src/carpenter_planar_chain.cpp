@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "carpenter_planar_struts.hpp"
 #include "carpenter_planar_velocity.hpp"
 #include "pair_halves.hpp"
 
@@ -60,15 +59,11 @@ Frame2 advance(const MergedChain& chain, const Frame2& v, double h) {
 // tolerance of pair (a, b) is 2·(a + b + 2)·u·(|p₀| + total length). A fixed 4u·extent, as before,
 // was below that error at about 100 vertices, and convexifying star-shaped 100–150-gons stopped
 // as "no step keeps every distance growing" once the first-order growth fell under it.
-double layout_rounding_unit(const MergedChain& chain, const Frame2& before) {
-  double reach = before[0].cwiseAbs().maxCoeff();
-  for (double l : chain.length()) reach += l;
-  return 2.0 * std::numeric_limits<double>::epsilon() * reach;
-}
-
 bool expansive(const MergedChain& chain, const Frame2& before, const Frame2& after) {
   const int m = chain.vertices();
-  const double unit = layout_rounding_unit(chain, before);
+  double reach = before[0].cwiseAbs().maxCoeff();
+  for (double l : chain.length()) reach += l;
+  const double unit = 2.0 * std::numeric_limits<double>::epsilon() * reach;
   const auto rounding = [&](int a, int b) { return (a + b + 2) * unit; };
   // Squared distances first, over coordinate arrays (vectorised): a pair whose squared distance
   // did not shrink passes without a square root, as sqrt is monotone.
@@ -334,11 +329,11 @@ double straight_crossing(const MergedChain& chain, const Frame2& v, const std::v
   return lo;
 }
 
-// Steps of length h, halved until one keeps every distance growing (at most max_attempts tries).
+// Steps of length h, halved until one keeps every distance growing (at most 200 tries).
 StepOutcome try_steps(const MergedChain& chain, const Frame2& v, const std::vector<double>& omega,
-                      const std::vector<double>& theta0, double h, int max_attempts) {
+                      const std::vector<double>& theta0, double h) {
   StepOutcome step;
-  for (int attempt = 0; attempt < max_attempts && !step.accepted; ++attempt) {
+  for (int attempt = 0; attempt < 200 && !step.accepted; ++attempt) {
     ++step.attempts;
     step.next = advance(chain, v, h);
     // A joint that would pass straight stops the step exactly there; it is then merged.
@@ -351,7 +346,6 @@ StepOutcome try_steps(const MergedChain& chain, const Frame2& v, const std::vect
       step.event_joint = a;
       step.next = advance(chain, v, h);
     }
-    step.h = h;
     if (h > 0.0 && expansive(chain, chain.q(), step.next)) {
       step.accepted = true;
     } else {
@@ -359,55 +353,6 @@ StepOutcome try_steps(const MergedChain& chain, const Frame2& v, const std::vect
     }
   }
   return step;
-}
-
-}  // namespace foldkit::folding::planar_detail
-
-namespace foldkit::folding::planar_detail {
-
-// The pairs that refused a step, asking for more growth. Pair (a, b) grew at first order by
-// ḋ·h along the field and lost `loss` to the step's curvature (a short bar turning fast at a
-// nearly straight joint shortens its span along every far pair across it: ℓ(1 − cos α)); asking
-// ḋ for (first + 2·loss)/first times its rate lets the same step's first-order growth cover
-// twice that loss, if the loss stays put. Only pairs that shrank past the layouts' rounding (as
-// expansive() judges) and the 64 worst by loss/first: the LP then gives the kinks' neighbourhood
-// more of the expansion instead of every pair.
-std::vector<detail::Demand> refused_pair_demands(const MergedChain& chain, const Frame2& v,
-                                                 const std::vector<double>& omega, const Frame2& next, double h) {
-  const int m = chain.vertices();
-  const Frame2& q = chain.q();
-  const detail::struts::StrutModel model(q, chain.closed());
-  std::vector<double> speed(static_cast<std::size_t>(m), 0.0);
-  for (int a = 0; a < m; ++a)
-    if (chain.is_joint(a)) speed[a] = joint_rate(chain, omega, a);
-  const double unit = layout_rounding_unit(chain, q);
-  const detail::Coordinates from(q), to(next);
-  std::vector<double> shrunk(static_cast<std::size_t>(m));
-  struct Need {
-    double ratio;
-    detail::Demand demand;
-  };
-  std::vector<Need> need;
-  for (int a = 0; a < m; ++a) {
-    const int last = chain.closed() && a == 0 ? m - 2 : m - 1;
-    if (a + 2 > last || detail::squared_changes(from, to, a, a + 2, last, shrunk) == 0) continue;
-    for (int b = a + 2; b <= last; ++b) {
-      if (!(shrunk[b] < 0.0)) continue;
-      const Vec d = q[b] - q[a];
-      const double change = (next[b] - next[a]).norm() - d.norm();
-      const double first = h * d.dot(v[b] - v[a]) / d.norm();
-      if (change >= -(a + b + 2) * unit || !(first > 0.0)) continue;
-      const double loss = first - change;
-      const double rate = model.weighted_rate(model.row(a, b), v, speed);
-      need.push_back({loss / first, {a, b, rate * (first + 2.0 * loss) / first}});
-    }
-  }
-  const std::size_t keep = std::min<std::size_t>(need.size(), 64);
-  std::partial_sort(need.begin(), need.begin() + static_cast<std::ptrdiff_t>(keep), need.end(),
-                    [](const Need& x, const Need& y) { return x.ratio > y.ratio; });
-  std::vector<detail::Demand> out;
-  for (std::size_t i = 0; i < keep; ++i) out.push_back(need[i].demand);
-  return out;
 }
 
 }  // namespace foldkit::folding::planar_detail

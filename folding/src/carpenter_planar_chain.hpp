@@ -9,7 +9,6 @@
 
 #include <Eigen/Core>
 
-#include "carpenter_planar_velocity.hpp"
 #include "foldkit/folding/carpenter.hpp"
 
 namespace foldkit::folding::planar_detail {
@@ -122,9 +121,6 @@ Frame2 advance(const MergedChain& chain, const Frame2& v, double h);
 // as "no step keeps every distance growing" once the first-order growth fell under it.
 bool expansive(const MergedChain& chain, const Frame2& before, const Frame2& after);
 
-// 2u·(|p₀| + total length): pair (a, b) of two layouts compares to within (a + b + 2) of it.
-double layout_rounding_unit(const MergedChain& chain, const Frame2& before);
-
 // What record() reports of each frame, without check_motion()'s generic loops: the largest |bar
 // length − its length in `input`| of frame p (O(n)), and the smallest |after_j − after_i| −
 // |before_j − before_i| over all vertex pairs (+inf for fewer than two vertices), exactly as
@@ -202,18 +198,10 @@ struct StepOutcome {
   int event_joint = -1;  // the joint the step ends at, straight; -1: none
   bool accepted = false;
   int attempts = 0;
-  double h = 0.0;  // the step length of the last try (the accepted one, when accepted)
 };
 
-constexpr int kMaxTries = 200;  // tries of one step: halvings of its length
-
-// Steps of length h, halved until one keeps every distance growing (at most max_attempts tries).
+// Steps of length h, halved until one keeps every distance growing (at most 200 tries).
 StepOutcome try_steps(const MergedChain& chain, const Frame2& v, const std::vector<double>& omega,
-                      const std::vector<double>& theta0, double h, int max_attempts = kMaxTries);
-
-// What the pairs that made the step to `next` (length h along v; omega the bars' rates) fail
-// should ask of the LP (carpenter_planar_chain.cpp explains the factor); at most 64.
-std::vector<detail::Demand> refused_pair_demands(const MergedChain& chain, const Frame2& v,
-                                                 const std::vector<double>& omega, const Frame2& next, double h);
+                      const std::vector<double>& theta0, double h);
 
 }  // namespace foldkit::folding::planar_detail

@@ -6,6 +6,7 @@
 #include <limits>
 #include <memory>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "carpenter_planar_struts.hpp"
 #include "linear_program.hpp"
@@ -74,17 +75,14 @@ struct Solved {
 // Struts found violated are added to the same Clp model, which re-solves from its last basis.
 class StepLp {
  public:
-  // `lower[i]`: the bound of rows[i] (1, or more where a pair asks for more growth).
   StepLp(const StrutModel& model, const std::vector<Vec>& p, const std::vector<StrutModel::Row>& rows,
-         const std::vector<double>& lower, const RigidEnds& rigid)
+         const RigidEnds& rigid)
       : m_(model.vertices()),
         joint_column_(static_cast<std::size_t>(model.vertices()), -1),
         rigid_(rigid),
-        lp_(build(model, p, rows, lower)) {}
+        lp_(build(model, p, rows)) {}
 
-  void add_strut(const StrutModel::Row& r, double lower) { lp_.add_row(strut_row(r), lower, kInf); }
-  // Strut i (in the order given and added) asks for weighted rate ≥ lower.
-  void raise_strut(std::size_t i, double lower) { lp_.set_row_lower(first_strut_row_ + static_cast<int>(i), lower); }
+  void add_strut(const StrutModel::Row& r) { lp_.add_row(strut_row(r), 1.0, kInf); }
   int size() const { return lp_.rows() + lp_.columns(); }  // rows + columns
 
   // Rows: bars, then joints in vertex order, then struts in the order given.
@@ -163,8 +161,7 @@ class StepLp {
     return row;
   }
 
-  LinearProgram build(const StrutModel& model, const std::vector<Vec>& p, const std::vector<StrutModel::Row>& rows,
-                      const std::vector<double>& lower) {
+  LinearProgram build(const StrutModel& model, const std::vector<Vec>& p, const std::vector<StrutModel::Row>& rows) {
   const int m = model.vertices();
   LinearProgram lp;
   for (int a = 0; a < m; ++a) {
@@ -205,13 +202,11 @@ class StepLp {
     add_omega(row, (k + m - 1) % m, 1.0);
     lp.add_row(row, 0.0, 0.0);
   }
-  first_strut_row_ = static_cast<int>(lp.row_lower.size());
-  for (std::size_t i = 0; i < rows.size(); ++i) lp.add_row(strut_row(rows[i]), lower[i], kInf);
+  for (const StrutModel::Row& r : rows) lp.add_row(strut_row(r), 1.0, kInf);
   return lp;
   }
 
   int m_;
-  int first_strut_row_ = 0;
   std::vector<int> joint_column_;
   RigidEnds rigid_;
   IncrementalLp lp_;
@@ -231,56 +226,28 @@ std::vector<Vec> open_chain_velocities(const std::vector<Vec>& p, const std::vec
   return v;
 }
 
-struct FieldLp::State {
-  State(const std::vector<Vec>& points, bool closed, const RigidEnds& held)
-      : p(points), model(p, closed), m(model.vertices()), rigid(held) {}
-  const std::vector<Vec> p;  // a copy: the caller's positions move on after the step
-  const StrutModel model;
-  const int m;
-  const RigidEnds rigid;
+ExpansiveVelocity expansive_velocity(const std::vector<Vec>& p, bool closed, const std::vector<std::pair<int, int>>& seed,
+                                     double near_radius, bool all_struts, const std::vector<int>* key,
+                                     BasisMemo* memo, const RigidEnds& rigid) {
+  const StrutModel model(p, closed);
+  const int m = model.vertices();
   std::vector<StrutModel::Row> rows;
-  std::vector<double> lower;                        // per row: the weighted rate it asks for
-  std::unordered_map<std::int64_t, std::size_t> row_of;  // pair key → index in rows
-  std::unique_ptr<StepLp> lp;
-  std::vector<int> key;       // a copy (empty: none); the memo outlives this LP (the caller's run)
-  BasisMemo* memo = nullptr;
-
-  // Adds pair (a, b) as a strut row asking for `bound`; false when it is no strut or already in.
-  bool add(int a, int b, double bound = 1.0) {
+  std::unordered_set<std::int64_t> present;
+  auto add = [&](int a, int b) {
     if (a > b) std::swap(a, b);
-    if (a < 0 || b >= m || a == b || model.is_bar(a, b) || rigid.holds_pair(a, b, m)) return false;
-    if (!row_of.emplace(pair_key(a, b, m), rows.size()).second) return false;
-    rows.push_back(model.row(a, b));
-    lower.push_back(bound);
-    return true;
-  }
-
-  ExpansiveVelocity run(IncrementalLp::Method round_method, int round_cap);
-};
-
-FieldLp::FieldLp(const std::vector<Vec>& p, bool closed, const std::vector<std::pair<int, int>>& seed,
-                 double near_radius, bool all_struts, const std::vector<int>* key, BasisMemo* memo,
-                 const RigidEnds& rigid)
-    : s_(std::make_unique<State>(p, closed, rigid)) {
-  State& s = *s_;
-  if (key != nullptr && memo != nullptr) {
-    s.key = *key;
-    s.memo = memo;
-  }
+    if (a < 0 || b >= m || a == b || model.is_bar(a, b) || rigid.holds_pair(a, b, m)) return;
+    if (present.insert(pair_key(a, b, m)).second) rows.push_back(model.row(a, b));
+  };
   if (all_struts) {
-    for (int a = 0; a < s.m; ++a)
-      for (int b = a + 2; b < s.m; ++b) s.add(a, b);
+    for (int a = 0; a < m; ++a)
+      for (int b = a + 2; b < m; ++b) add(a, b);
   } else {
-    for (const auto& [a, b] : seed) s.add(a, b);
-    for (const auto& [a, b] : near_pairs(s.model, s.p, near_radius)) s.add(a, b);
+    for (const auto& [a, b] : seed) add(a, b);
+    for (const auto& [a, b] : near_pairs(model, p, near_radius)) add(a, b);
   }
-  s.lp = std::make_unique<StepLp>(s.model, s.p, s.rows, s.lower, rigid);
-}
 
-FieldLp::~FieldLp() = default;
-
-ExpansiveVelocity FieldLp::solve() {
-  State& s = *s_;
+  ExpansiveVelocity out;
+  auto lp = std::make_unique<StepLp>(model, p, rows, rigid);
   // Last step's optimal basis, on points moved a little, is nearly primal feasible and nearly
   // dual feasible; the primal simplex repairs it in fewer iterations than the dual (29 against
   // 37 per LP, 3.3 → 2.3 ms, on a 400-link chain). Rows added by constraint generation leave a
@@ -288,46 +255,13 @@ ExpansiveVelocity FieldLp::solve() {
   // The warm primal simplex can stall: on a star-shaped 400-gon one ran for minutes (Clp's primal
   // cycling on a degenerate basis) where a fresh dual took 2,135 iterations. Past twice the LP's
   // size in iterations it gives up, and the fresh solves below decide.
-  if (s.memo != nullptr && s.memo->valid) {
-    s.lp->warm(*s.memo, s.key, s.rows, s.model.closed());
-    return s.run(IncrementalLp::Method::Primal, 2 * s.lp->size());
+  IncrementalLp::Method round_method = IncrementalLp::Method::Dual;
+  int round_cap = 0;
+  if (key != nullptr && memo != nullptr && memo->valid) {
+    lp->warm(*memo, *key, rows, closed);
+    round_method = IncrementalLp::Method::Primal;
+    round_cap = 2 * lp->size();
   }
-  return s.run(IncrementalLp::Method::Dual, 0);
-}
-
-ExpansiveVelocity FieldLp::demand(const std::vector<Demand>& more) {
-  State& s = *s_;
-  for (const Demand& d : more) {
-    if (!(d.factor > 1.0) || !std::isfinite(d.factor)) continue;
-    const auto it = s.row_of.find(pair_key(std::min(d.a, d.b), std::max(d.a, d.b), s.m));
-    if (it != s.row_of.end()) {
-      s.lower[it->second] = std::max(s.lower[it->second], d.factor);
-      s.lp->raise_strut(it->second, s.lower[it->second]);
-    } else if (s.add(d.a, d.b, d.factor)) {
-      s.lp->add_strut(s.rows.back(), d.factor);
-    }
-  }
-  // A raised bound leaves the last optimal basis dual feasible: the dual simplex goes on from it.
-  return s.run(IncrementalLp::Method::Dual, 0);
-}
-
-double FieldLp::asked(int a, int b) const {
-  const auto it = s_->row_of.find(pair_key(std::min(a, b), std::max(a, b), s_->m));
-  return it == s_->row_of.end() ? 1.0 : s_->lower[it->second];
-}
-
-ExpansiveVelocity expansive_velocity(const std::vector<Vec>& p, bool closed, const std::vector<std::pair<int, int>>& seed,
-                                     double near_radius, bool all_struts, const std::vector<int>* key,
-                                     BasisMemo* memo, const RigidEnds& rigid) {
-  return FieldLp(p, closed, seed, near_radius, all_struts, key, memo, rigid).solve();
-}
-
-// Rounds of constraint generation from the model's current basis: solve, check every pair, add
-// the most violated, until none is.
-ExpansiveVelocity FieldLp::State::run(IncrementalLp::Method round_method, int round_cap) {
-  ExpansiveVelocity out;
-  const bool closed = model.closed();
-  std::size_t solves = 0;
   for (;;) {
     // A probe's every round is capped too: its failure only means another hold is tried.
     Solved s = lp->solve(round_method, rigid.probe ? 2 * lp->size() : round_cap);
@@ -341,7 +275,7 @@ ExpansiveVelocity FieldLp::State::run(IncrementalLp::Method round_method, int ro
       // spiral of 2 × 90 points (issue 36) it cycled for over ten minutes after the dual had
       // called the LP infeasible in 999 iterations.
       for (const auto method : {IncrementalLp::Method::Dual, IncrementalLp::Method::Primal}) {
-        auto fresh = std::make_unique<StepLp>(model, p, rows, lower, rigid);
+        auto fresh = std::make_unique<StepLp>(model, p, rows, rigid);
         s = fresh->solve(method, method == IncrementalLp::Method::Primal ? 2 * fresh->size() : 0);
         if (s.status == LpSolution::Status::Optimal) {
           lp = std::move(fresh);
@@ -349,7 +283,7 @@ ExpansiveVelocity FieldLp::State::run(IncrementalLp::Method round_method, int ro
         }
       }
     }
-    out.lp_solves = ++solves;
+    ++out.lp_solves;
     out.struts = rows.size();
     if (s.status != LpSolution::Status::Optimal) {
       out.status = to_string(s.status);
@@ -369,7 +303,7 @@ ExpansiveVelocity FieldLp::State::run(IncrementalLp::Method round_method, int ro
     auto check = [&](int a, int b, double g) {
       if (rigid.holds_pair(a, b, m)) return;  // distance fixed by construction
       rate_min = std::min(rate_min, g);
-      if (g < 1.0 - 1e-6 && !row_of.count(pair_key(a, b, m))) violated.push_back({g, {a, b}});
+      if (g < 1.0 - 1e-6 && !present.count(pair_key(a, b, m))) violated.push_back({g, {a, b}});
     };
     for_each_low_rate(model, p, s.v, s.joint_speed, check);
     if (violated.empty()) {
@@ -378,7 +312,7 @@ ExpansiveVelocity FieldLp::State::run(IncrementalLp::Method round_method, int ro
       out.solved = true;
       for (const StrutModel::Row& r : rows)
         if (model.weighted_rate(r, s.v, s.joint_speed) <= 2.0) out.binding.emplace_back(r.a, r.b);
-      if (memo != nullptr) lp->remember(*memo, key, rows, closed);
+      if (key != nullptr && memo != nullptr) lp->remember(*memo, *key, rows, closed);
       return out;
     }
     const std::size_t cap = std::max<std::size_t>(64, static_cast<std::size_t>(m));
@@ -386,8 +320,11 @@ ExpansiveVelocity FieldLp::State::run(IncrementalLp::Method round_method, int ro
       std::nth_element(violated.begin(), violated.begin() + static_cast<std::ptrdiff_t>(cap), violated.end());
       violated.resize(cap);
     }
-    for (const auto& entry : violated)
-      if (add(entry.second.first, entry.second.second)) lp->add_strut(rows.back(), 1.0);
+    for (const auto& entry : violated) {
+      const std::size_t before = rows.size();
+      add(entry.second.first, entry.second.second);
+      if (rows.size() > before) lp->add_strut(rows.back());
+    }
   }
 }
 

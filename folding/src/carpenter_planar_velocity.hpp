@@ -3,7 +3,6 @@
 // planar chain, with struts added by constraint generation.
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <set>
 #include <unordered_map>
 #include <utility>
@@ -55,35 +54,6 @@ struct RigidEnds {
 // then replaced by this step's. With `rigid`, held joints keep their angles, pairs inside a
 // held body get no strut and v is rebuilt from the joint speeds. Not solved when no strictly expansive
 // motion exists (straight / convex) or the LP fails.
-// A pair that must grow faster than the unit weighted rate (a step refused because it shrank).
-struct Demand {
-  int a = 0, b = 0;     // vertices, not a bar
-  double factor = 1.0;  // its weighted rate must reach this instead of 1
-};
-
-// The same LP kept alive through one step (the arguments as expansive_velocity()), so that the
-// pairs a refused step showed shrinking can ask for more growth and the LP goes on from its last
-// optimal basis instead of being built again. Keeps a copy of p.
-class FieldLp {
- public:
-  FieldLp(const std::vector<Eigen::Vector2d>& p, bool closed, const std::vector<std::pair<int, int>>& seed,
-          double near_radius, bool all_struts, const std::vector<int>* key = nullptr, BasisMemo* memo = nullptr,
-          const RigidEnds& rigid = {});
-  ~FieldLp();
-  FieldLp(const FieldLp&) = delete;
-  FieldLp& operator=(const FieldLp&) = delete;
-  ExpansiveVelocity solve();  // the first solve, as expansive_velocity()
-  // Each pair asks for weighted rate ≥ its factor (the larger of that and what it asked before;
-  // a pair not in the LP yet is added), then constraint generation goes on (lp_solves: this
-  // call's).
-  ExpansiveVelocity demand(const std::vector<Demand>& more);
-  double asked(int a, int b) const;  // the weighted rate pair (a, b) asks for now (1 if none)
-
- private:
-  struct State;
-  std::unique_ptr<State> s_;
-};
-
 ExpansiveVelocity expansive_velocity(const std::vector<Eigen::Vector2d>& p, bool closed,
                                      const std::vector<std::pair<int, int>>& seed, double near_radius,
                                      bool all_struts, const std::vector<int>* key = nullptr,

@@ -115,15 +115,6 @@ int IncrementalLp::add_row(const std::vector<std::pair<int, double>>& coefficien
   return rows() - 1;
 }
 
-void IncrementalLp::set_row_lower(int row, double lower) {
-  const int loaded = model_->numberRows();
-  if (row < 0 || row >= rows()) throw std::invalid_argument("IncrementalLp: row " + std::to_string(row) + " out of range");
-  if (row < loaded)
-    model_->setRowLower(row, clp_bound(lower));
-  else
-    lower_[static_cast<std::size_t>(row - loaded)] = clp_bound(lower);
-}
-
 LpSolution IncrementalLp::solve(Method method, int max_iterations) {
   if (!lower_.empty()) {
     model_->addRows(static_cast<int>(lower_.size()), lower_.data(), upper_.data(), starts_.data(),

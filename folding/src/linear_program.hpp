@@ -44,9 +44,6 @@ class IncrementalLp {
 
   int rows() const;
   int add_row(const std::vector<std::pair<int, double>>& coefficients, double lower, double upper);
-  // Moves row `row`'s lower bound; the basis stays dual feasible, so the next dual simplex
-  // starts from it.
-  void set_row_lower(int row, double lower);
   enum class Method { Dual, Primal };
   // `max_iterations` > 0 stops Clp after that many simplex iterations, with status Failed: a
   // caller that can solve afresh bounds a warm start that stalls.
