@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "carpenter_planar_chain.hpp"
+#include "carpenter_planar_hold.hpp"
 #include "carpenter_planar_velocity.hpp"
 #include "carpenter_pseudo.hpp"
 #include "foldkit/folding/carpenter.hpp"
@@ -147,20 +148,22 @@ class PlanarRun {
     // the 2,000-link walk. (The Lp method, the baseline, and closed chains are left as measured.)
     const bool first_carried = options_.method == CarpenterPlanarMethod::CarriedField && !closed_ && seed.empty();
     const double radius = options_.near_radius * (first_carried ? 2.0 : 1.0);
-    const Reuse reuse = closed_ ? Reuse::Expired : reuse_hold(field, keys, seed, radius * mean_merged);
-    held_ = reuse == Reuse::Used;
-    if (reuse == Reuse::Expired) {
+    const double near = radius * mean_merged;
+    const HeldEnds::Reuse reuse = closed_ ? HeldEnds::Reuse::Expired
+                                          : hold_.reuse(chain_, field, keys, seed, near, result_, options_.all_struts);
+    held_ = reuse == HeldEnds::Reuse::Used;
+    if (reuse == HeldEnds::Reuse::Expired) {
       // While a hold is active the whole chain is a probe: Clp's verdict "infeasible" is not
       // checked by fresh solves, as it would be otherwise; a wrong one only keeps the hold.
       detail::RigidEnds none;
-      none.probe = hold_.active;
-      field = detail::expansive_velocity(chain_.q(), closed_, seed, radius * mean_merged, options_.all_struts,
-                                         &keys, &basis_memo_, none);
+      none.probe = hold_.active();
+      field = detail::expansive_velocity(chain_.q(), closed_, seed, near, options_.all_struts, &keys, &basis_memo_, none);
       result_.lp_solves += field.lp_solves;
       result_.max_struts = std::max(result_.max_struts, field.struts);
-      if (field.solved) hold_.active = false;
+      if (field.solved) hold_.release();
     }
-    if (!held_ && !field.solved && !closed_) held_ = solve_held(field, keys, seed, radius * mean_merged, reuse == Reuse::Expired);
+    if (!held_ && !field.solved && !closed_)
+      held_ = hold_.find(chain_, field, keys, seed, near, reuse == HeldEnds::Reuse::Expired, result_, options_.all_struts);
     if (!field.solved) {
       result_.status = {StatusCode::NoProgress,
                         "the expansive-motion LP failed at step " + std::to_string(result_.steps) + " (" + field.status + ")"};
@@ -173,83 +176,6 @@ class PlanarRun {
     }
     carried_.clear();
     for (const auto& [a, b] : field.binding) carried_.emplace_back(chain_.key(a), chain_.key(b));
-    return true;
-  }
-
-  // Issue 36: on a spiral the expansive motions turn each joint faster than the one inside it by
-  // a fixed factor (≈ 1.5 per joint on an 18-gon-per-turn Archimedean spiral), so the speeds
-  // span more than the LP's 1e12 box and Clp's tolerances after about five turns, and the LP
-  // is called infeasible. The slow part then moves by less than a step resolves anyway: it is
-  // held rigid (its joints at speed 0, its inner pairs at their distance, the field rebuilt from
-  // the joint speeds), and the LP solves the rest, every pair with a moving joint between its
-  // ends still strictly expansive. Tried: m/2, m/4, … merged vertices moving, the rest held at
-  // the start, at the end, or half at each (a double spiral's two centres); the first that
-  // solves is used. The hold is kept (by the input vertices at its boundaries) for the next
-  // steps, and the whole chain is tried again after 2, 4, … 64 held steps; once half the part
-  // that moved has gone straight, a new hold is sought (failed LPs over the whole chain took
-  // most of the time: 150 s → 2–3 s on a 200-vertex spiral of ten turns).
-  static detail::RigidEnds placement(int m, int moving, int where) {
-    detail::RigidEnds r;
-    const int held = m - moving;
-    if (where == 0) r.prefix = held;
-    if (where == 1) r.suffix = held;
-    if (where == 2) r.prefix = held / 2, r.suffix = held - held / 2;
-    return r;
-  }
-
-  bool solve_held(detail::ExpansiveVelocity& field, const std::vector<int>& keys,
-                  const std::vector<std::pair<int, int>>& seed, double radius, bool whole_failed) {
-    const int m = chain_.vertices();
-    // After a hold, from twice the part it let move, its placement first.
-    const int first = hold_.active ? std::min(m / 2, 2 * hold_.moving) : m / 2;
-    const int order[3] = {hold_.where, (hold_.where + 1) % 3, (hold_.where + 2) % 3};
-    for (int moving = first; moving >= 3; moving /= 2)
-      for (const int where : order) {
-        detail::RigidEnds rigid = placement(m, moving, where);
-        rigid.probe = true;
-        if (!solve_with(rigid, field, keys, seed, radius)) continue;
-        if (whole_failed) {  // the whole chain is tried again after twice as many held steps
-          hold_.backoff = hold_.active ? std::min(2 * hold_.backoff, 64) : 2;
-          hold_.wait = hold_.backoff;
-        }
-        hold_.active = true;
-        hold_.where = where;
-        hold_.prefix_key = rigid.prefix >= 3 ? chain_.key(rigid.prefix - 1) : -1;
-        hold_.suffix_key = rigid.suffix >= 3 ? chain_.key(m - rigid.suffix) : -1;
-        hold_.moving = moving;
-        return true;
-      }
-    return false;
-  }
-
-  // The last hold again, while it waits for the next try of the whole chain (Expired: no hold,
-  // or its wait is over; Shrunk: half the part it let move has gone straight, or it failed: a
-  // new hold is sought without trying the whole chain).
-  enum class Reuse { Used, Shrunk, Expired };
-  Reuse reuse_hold(detail::ExpansiveVelocity& field, const std::vector<int>& keys,
-                   const std::vector<std::pair<int, int>>& seed, double radius) {
-    if (!hold_.active || hold_.wait <= 0) return Reuse::Expired;
-    --hold_.wait;
-    const int m = chain_.vertices();
-    detail::RigidEnds rigid;
-    for (int a = 0; a < m; ++a) {
-      rigid.prefix += hold_.prefix_key >= 0 && chain_.key(a) <= hold_.prefix_key;
-      rigid.suffix += hold_.suffix_key >= 0 && chain_.key(a) >= hold_.suffix_key;
-    }
-    const int moving = m - rigid.prefix - rigid.suffix;
-    if (2 * moving <= hold_.moving || moving < 3) return Reuse::Shrunk;
-    rigid.probe = true;
-    return solve_with(rigid, field, keys, seed, radius) ? Reuse::Used : Reuse::Shrunk;
-  }
-
-  bool solve_with(const detail::RigidEnds& rigid, detail::ExpansiveVelocity& field, const std::vector<int>& keys,
-                  const std::vector<std::pair<int, int>>& seed, double radius) {
-    detail::ExpansiveVelocity held =
-        detail::expansive_velocity(chain_.q(), false, seed, radius, options_.all_struts, &keys, nullptr, rigid);
-    result_.lp_solves += held.lp_solves;
-    result_.max_struts = std::max(result_.max_struts, held.struts);
-    if (!held.solved || !(held.t > 0.0)) return false;
-    field = std::move(held);
     return true;
   }
 
@@ -427,17 +353,9 @@ class PlanarRun {
   detail::BasisMemo basis_memo_;              // the last LP's optimal basis: the next starts there
   std::vector<std::pair<int, int>> carried_;  // binding struts of the last step, as input vertices
   std::vector<double> carried_speed_;         // last field's joint speeds by input vertex (CarriedField)
-  bool monotone_failed_ = false;
+  bool monotone_failed_ = false;              // the closed-form straightening was tried and a check failed
   bool held_ = false;                         // this step's field holds an end rigid (solve_held)
-  struct Hold {
-    bool active = false;  // the last solve_held() found one, and no LP over the whole chain solved since
-    int where = 0;        // placement(): held at the start, the end, both
-    int prefix_key = -1;  // last input vertex of the body held at the start (-1: none)
-    int suffix_key = -1;  // first input vertex of the body held at the end (-1: none)
-    int moving = 0;         // merged vertices outside the body when it was found
-    int wait = 0;           // held steps before the whole chain is tried again
-    int backoff = 2;
-  } hold_;              // the closed-form straightening was tried and a check failed
+  HeldEnds hold_;  // an end of an open chain held rigid (spirals)
 };
 
 // The options' ranges (carpenter_planar's @throws); a NaN fails every test, so each is written so.
