@@ -354,7 +354,7 @@ class PlanarRun {
   std::vector<std::pair<int, int>> carried_;  // binding struts of the last step, as input vertices
   std::vector<double> carried_speed_;         // last field's joint speeds by input vertex (CarriedField)
   bool monotone_failed_ = false;              // the closed-form straightening was tried and a check failed
-  bool held_ = false;                         // this step's field holds an end rigid (solve_held)
+  bool held_ = false;                         // this step's field holds an end rigid (HeldEnds)
   HeldEnds hold_;  // an end of an open chain held rigid (spirals)
 };
 

@@ -24,6 +24,7 @@
 
 namespace foldkit::folding::planar_detail {
 
+// Keeps no reference to the chain or the result beyond a call.
 class HeldEnds {
  public:
   // The arguments of every call below: the chain (open), the field to fill, the input vertex of
