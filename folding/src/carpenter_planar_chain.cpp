@@ -12,6 +12,7 @@
 #include "pair_halves.hpp"
 
 namespace foldkit::folding::planar_detail {
+
 // Positions after turning each bar for a time h at the angular speed v gives it, laid out with
 // its own length from the pinned vertex 0: lengths stay exact, and a part of the chain that v
 // turns rigidly turns exactly (moving along h·v and projecting back would not). A closed chain is

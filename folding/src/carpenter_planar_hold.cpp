@@ -1,6 +1,7 @@
 #include "carpenter_planar_hold.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace foldkit::folding::planar_detail {
 namespace {
@@ -15,7 +16,8 @@ detail::RigidEnds placement(int m, int moving, int where) {
   return r;
 }
 
-// The LP with `rigid` held, as a probe (Clp's "infeasible" not checked by fresh solves).
+// The LP with `rigid` held (both callers make it a probe: Clp's "infeasible" is not checked by
+// fresh solves, as another hold is tried instead); its solves and rows counted in `result`.
 bool solve_with(const MergedChain& chain, const detail::RigidEnds& rigid, detail::ExpansiveVelocity& field,
                 const std::vector<int>& keys, const std::vector<std::pair<int, int>>& seed, double radius,
                 CarpenterPlanarResult& result, bool all_struts) {
