@@ -25,12 +25,13 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // reported feasible LPs of this shape infeasible when the columns were free.
 constexpr double kSpeedBox = 1e12;
 // near_pairs() keeps the pairs closer than this many median nearest-vertex distances where that
-// is less than the caller's radius. On random_star(n, 1), method lp, against the radius alone
-// (this 2-core machine, wall): 1,000-gon, first 100 steps 100 s instead of 1,048 s (1.5: 106 s);
-// 400-gons of seeds 1–3 138 s instead of 154 s (1.5: 106 s); 200-gons 15.1 s instead of 13.5 s,
-// step counts moving as ties among optimal fields do. 2 rather than 1.5 keeps lattice walks clear
-// of it: their nearest distance is ≈ 1.36 mean bars, 2.7 mean bars scaled, beyond both radii the
-// planner passes (1 and 2 mean bars), so their runs are unchanged.
+// is less than the caller's radius. On random_star(n, seed), method lp, against the radius alone
+// (this 2-core machine, wall): the 1,000-gon of seed 1, first 100 steps, 100 s instead of
+// 1,048 s; the 400-gons of seeds 1–3, 138 s instead of 154 s; the 200-gons, 15.1 s instead of
+// 13.5 s (step counts move as ties among optimal fields do). A factor 1.5 took 106 s on both the
+// 1,000-gon and the 400-gons, but 2 keeps lattice walks clear of the rule: their nearest
+// distance is ≈ 1.36 mean bars (2.7 scaled), beyond both radii the planner passes (1 and 2 mean
+// bars; 1.5 would clear 2 by 2 %), so their runs are unchanged.
 constexpr double kNearScale = 2.0;
 
 std::int64_t pair_key(int a, int b, int m) { return static_cast<std::int64_t>(a) * m + b; }
@@ -213,7 +214,7 @@ std::vector<std::pair<int, int>> near_pairs(const StrutModel& model, const std::
         for (int b : it->second) {
           if (b <= a || model.is_bar(a, b)) continue;
           const double d2 = (p[b] - p[a]).squaredNorm();
-          if (d2 >= r2) continue;
+          if (!(d2 < r2)) continue;  // NaN too
           out.emplace_back(a, b);
           nearest[a] = std::min(nearest[a], d2);
           nearest[b] = std::min(nearest[b], d2);
@@ -223,9 +224,11 @@ std::vector<std::pair<int, int>> near_pairs(const StrutModel& model, const std::
   if (out.empty()) return out;
   auto mid = nearest.begin() + m / 2;
   std::nth_element(nearest.begin(), mid, nearest.end());
-  const double scaled2 = kNearScale * kNearScale * *mid;  // ∞ when most vertices have none nearer than radius
-  if (scaled2 < r2) {
-    auto far = [&](const std::pair<int, int>& ab) { return (p[ab.second] - p[ab.first]).squaredNorm() >= scaled2; };
+  // ∞ when at least half the vertices have none nearer than radius; 0 (kept out) when half of
+  // them sit on another vertex.
+  const double scaled2 = kNearScale * kNearScale * *mid;
+  if (scaled2 > 0.0 && scaled2 < r2) {
+    auto far = [&](const std::pair<int, int>& ab) { return !((p[ab.second] - p[ab.first]).squaredNorm() < scaled2); };
     out.erase(std::remove_if(out.begin(), out.end(), far), out.end());
   }
   std::sort(out.begin(), out.end());

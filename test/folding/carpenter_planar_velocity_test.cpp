@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -83,6 +84,7 @@ TEST(CarpenterNearPairs, OnAStarPolygonFollowTheVerticesSpacing) {
     const double spacing = 2.0 * median_nearest(p, true);
     ASSERT_LT(spacing, bar);
     const Pairs expected = pairs_within(p, true, spacing);
+    EXPECT_FALSE(expected.empty());
     const Pairs got = near(p, true, bar);
     EXPECT_EQ(got, expected) << n << "-gon";
     const std::size_t by_bar = pairs_within(p, true, bar).size();
