@@ -224,8 +224,8 @@ std::vector<std::pair<int, int>> near_pairs(const StrutModel& model, const std::
   if (out.empty()) return out;
   auto mid = nearest.begin() + m / 2;
   std::nth_element(nearest.begin(), mid, nearest.end());
-  // ∞ when at least half the vertices have none nearer than radius; 0 (kept out) when half of
-  // them sit on another vertex.
+  // ∞ when at least half the vertices have none nearer than radius; 0 when half of them sit on
+  // another vertex (the radius is kept in both cases).
   const double scaled2 = kNearScale * kNearScale * *mid;
   if (scaled2 > 0.0 && scaled2 < r2) {
     auto far = [&](const std::pair<int, int>& ab) { return !((p[ab.second] - p[ab.first]).squaredNorm() < scaled2); };
